@@ -1,0 +1,69 @@
+// A Euclidean 3-vector: the only Euclidean type the kernel's users see.
+#pragma once
+
+#include <cmath>
+
+namespace cga
+{
+struct Vec3
+{
+  double x = 0.0, y = 0.0, z = 0.0;
+
+  constexpr Vec3() = default;
+  constexpr Vec3(double ax, double ay, double az)
+    : x(ax)
+    , y(ay)
+    , z(az)
+  {
+  }
+
+  constexpr double operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
+
+  friend constexpr Vec3 operator+(Vec3 a, Vec3 b) { return { a.x + b.x, a.y + b.y, a.z + b.z }; }
+  friend constexpr Vec3 operator-(Vec3 a, Vec3 b) { return { a.x - b.x, a.y - b.y, a.z - b.z }; }
+  friend constexpr Vec3 operator-(Vec3 a) { return { -a.x, -a.y, -a.z }; }
+  friend constexpr Vec3 operator*(double s, Vec3 a) { return { s * a.x, s * a.y, s * a.z }; }
+  friend constexpr Vec3 operator*(Vec3 a, double s) { return s * a; }
+  friend constexpr Vec3 operator/(Vec3 a, double s) { return { a.x / s, a.y / s, a.z / s }; }
+};
+
+constexpr double dot(Vec3 a, Vec3 b)
+{
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+constexpr Vec3 cross(Vec3 a, Vec3 b)
+{
+  return { a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x };
+}
+
+inline double norm(Vec3 a)
+{
+  return std::sqrt(dot(a, a));
+}
+
+constexpr double norm2(Vec3 a)
+{
+  return dot(a, a);
+}
+
+inline bool isFinite(Vec3 a)
+{
+  return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
+}
+
+/// a / |a|, or the zero vector when |a| is zero or not finite.
+inline Vec3 normalized(Vec3 a)
+{
+  const double n = norm(a);
+  return (n > 0.0 && std::isfinite(n)) ? a / n : Vec3{};
+}
+
+/// A unit vector orthogonal to the unit vector n. For n not parallel to x it lies in the plane of
+/// n and x (so for n = z it is x, as the paper's figures use); otherwise it is y's projection.
+inline Vec3 orthogonalUnit(Vec3 n)
+{
+  const Vec3 reference = std::fabs(n.x) < 0.9 ? Vec3{ 1, 0, 0 } : Vec3{ 0, 1, 0 };
+  return normalized(reference - dot(reference, n) * n);
+}
+} // namespace cga

@@ -1,0 +1,39 @@
+// A circle carried by the one-parameter family of boosts K(lambda) = exp(lambda tau) = 1 + lambda tau,
+// tau = tau(location, direction) a null point pair (SPEC.md section 3 items 1-3, Fig 1-3).
+//
+// Because tau is null, exp(lambda tau) = 1 + lambda tau exactly, so no exponential rule is involved.
+// The family maps a fixed circle point to a curve; sweeping lambda over a range gives a surface.
+#pragma once
+
+#include "cga/Multivector.h"
+#include "cga/Vec3.h"
+
+#include <string>
+
+namespace cga
+{
+struct BoostedCircle
+{
+  Vec3 center{ 0, 0, 0 };
+  Vec3 normal{ 1, 0, 0 }; // need not be unit; only its direction is used
+  double radius = 1.0;
+  Vec3 boostLocation{ 0, 0, 0 };
+  Vec3 boostDirection{ 1, 0, 0 }; // its length is the generator's weight
+
+  /// Empty when the parameters describe a valid family, otherwise what is wrong with them.
+  std::string validate() const;
+
+  /// Unit vectors (a, b) spanning the circle's plane with a x b along the normal; theta = 0 is a.
+  void planeFrame(Vec3& a, Vec3& b) const;
+
+  /// The point of the undeformed circle at angle theta.
+  Vec3 circlePoint(double theta) const;
+
+  /// K(lambda) = 1 + lambda tau(boostLocation, boostDirection).
+  Multivector boost(double lambda) const;
+
+  /// The circle blade (up(a) ^ up(b) ^ up(c)) sandwiched by K(lambda): a circle, or a line where the
+  /// circle passes through the boost's pole.
+  Multivector imageBlade(double lambda) const;
+};
+} // namespace cga

@@ -1,0 +1,62 @@
+#include "cga/surfaces/BoostedCircle.h"
+
+#include "cga/Conformal.h"
+
+#include <cmath>
+
+namespace cga
+{
+namespace
+{
+bool finite(Vec3 v)
+{
+  return isFinite(v);
+}
+}
+
+std::string BoostedCircle::validate() const
+{
+  if (!finite(center) || !finite(normal) || !std::isfinite(radius) || !finite(boostLocation) ||
+    !finite(boostDirection))
+  {
+    return "parameters must be finite numbers (a NaN or an infinity was given)";
+  }
+  if (!(norm(normal) > 0.0))
+  {
+    return "the circle normal must not be the zero vector";
+  }
+  if (!(radius > 0.0))
+  {
+    return "the circle radius must be positive";
+  }
+  if (!(norm(boostDirection) > 0.0))
+  {
+    return "the boost direction must not be the zero vector";
+  }
+  return {};
+}
+
+void BoostedCircle::planeFrame(Vec3& a, Vec3& b) const
+{
+  const Vec3 n = normalized(normal);
+  a = orthogonalUnit(n);
+  b = cross(n, a);
+}
+
+Vec3 BoostedCircle::circlePoint(double theta) const
+{
+  Vec3 a, b;
+  this->planeFrame(a, b);
+  return center + radius * (std::cos(theta) * a + std::sin(theta) * b);
+}
+
+Multivector BoostedCircle::boost(double lambda) const
+{
+  return Multivector::scalar(1.0) + lambda * nullPointPair(boostLocation, boostDirection);
+}
+
+Multivector BoostedCircle::imageBlade(double lambda) const
+{
+  return sandwich(this->boost(lambda), circle(center, normal, radius));
+}
+} // namespace cga

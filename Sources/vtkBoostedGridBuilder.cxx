@@ -1,0 +1,282 @@
+#include "vtkBoostedGridBuilder.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <cmath>
+#include <limits>
+
+vtkBoostedGridBuilder::vtkBoostedGridBuilder(int rows, int columns, bool periodicColumns)
+  : Rows(rows)
+  , Columns(columns)
+  , PeriodicColumns(periodicColumns)
+  , Points(3 * static_cast<size_t>(rows) * columns, std::numeric_limits<double>::quiet_NaN())
+  , FallbackNormals(3 * static_cast<size_t>(rows), 0.0)
+{
+}
+
+void vtkBoostedGridBuilder::SetClipSphere(const double center[3], double radius)
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    this->ClipCenter[i] = center[i];
+  }
+  this->ClipRadius = radius;
+}
+
+void vtkBoostedGridBuilder::SetPoint(int row, int column, const double point[3])
+{
+  double* p = &this->Points[3 * this->Index(row, column)];
+  p[0] = point[0];
+  p[1] = point[1];
+  p[2] = point[2];
+}
+
+void vtkBoostedGridBuilder::SetRowFallbackNormal(int row, const double normal[3])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    this->FallbackNormals[3 * row + i] = normal[i];
+  }
+}
+
+void vtkBoostedGridBuilder::AddRowParameter(
+  const std::string& name, const std::vector<double>& valuePerRow)
+{
+  this->Parameters.push_back({ name, true, valuePerRow });
+}
+
+void vtkBoostedGridBuilder::AddColumnParameter(
+  const std::string& name, const std::vector<double>& valuePerColumn)
+{
+  this->Parameters.push_back({ name, false, valuePerColumn });
+}
+
+bool vtkBoostedGridBuilder::Usable(int row, int column) const
+{
+  const double* p = &this->Points[3 * this->Index(row, column)];
+  if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+  {
+    return false;
+  }
+  return this->ClipRadius < 0.0 ||
+    vtkMath::Distance2BetweenPoints(p, this->ClipCenter) <= this->ClipRadius * this->ClipRadius;
+}
+
+int vtkBoostedGridBuilder::CountUnusable() const
+{
+  int count = 0;
+  for (int r = 0; r < this->Rows; ++r)
+  {
+    for (int c = 0; c < this->Columns; ++c)
+    {
+      count += this->Usable(r, c) ? 0 : 1;
+    }
+  }
+  return count;
+}
+
+void vtkBoostedGridBuilder::ComputeNormal(int row, int column, double normal[3]) const
+{
+  // Central differences where both neighbours are usable, one-sided otherwise. Periodic columns
+  // skip the repeated seam column so that both copies of a seam point get the same normal.
+  auto difference = [this](int r0, int c0, int r1, int c1, double d[3]) {
+    const double* a = &this->Points[3 * this->Index(r0, c0)];
+    const double* b = &this->Points[3 * this->Index(r1, c1)];
+    vtkMath::Subtract(b, a, d);
+  };
+  auto neighbours = [](int i, int count, bool periodic, auto usable, int& lo, int& hi) {
+    lo = i - 1;
+    hi = i + 1;
+    if (periodic)
+    {
+      // columns 0 and count-1 are the same point
+      if (lo < 0)
+      {
+        lo = count - 2;
+      }
+      if (hi > count - 1)
+      {
+        hi = 1;
+      }
+    }
+    if (lo < 0 || !usable(lo))
+    {
+      lo = i;
+    }
+    if (hi > count - 1 || !usable(hi))
+    {
+      hi = i;
+    }
+  };
+
+  int c0, c1, r0, r1;
+  neighbours(
+    column, this->Columns, this->PeriodicColumns, [&](int c) { return this->Usable(row, c); }, c0, c1);
+  neighbours(row, this->Rows, false, [&](int r) { return this->Usable(r, column); }, r0, r1);
+
+  double alongColumns[3] = { 0, 0, 0 };
+  double alongRows[3] = { 0, 0, 0 };
+  if (c0 != c1)
+  {
+    difference(row, c0, row, c1, alongColumns);
+  }
+  if (r0 != r1)
+  {
+    difference(r0, column, r1, column, alongRows);
+  }
+  vtkMath::Cross(alongColumns, alongRows, normal);
+  const double length = vtkMath::Norm(normal);
+  const double scale = vtkMath::Norm(alongColumns) * vtkMath::Norm(alongRows);
+  if (length > 1e-12 * scale && length > 0.0)
+  {
+    vtkMath::MultiplyScalar(normal, 1.0 / length);
+    return;
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    normal[i] = this->FallbackNormals[3 * row + i];
+  }
+}
+
+std::vector<long long> vtkBoostedGridBuilder::WritePoints(
+  vtkPolyData* output, int firstRow, int lastRow, int precision, bool withSurfaceAttributes) const
+{
+  std::vector<long long> ids(static_cast<size_t>(this->Rows) * this->Columns, -1);
+  vtkNew<vtkPoints> points;
+  points->SetDataType(precision == vtkAlgorithm::SINGLE_PRECISION ? VTK_FLOAT : VTK_DOUBLE);
+
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetName("TextureCoordinates");
+  tcoords->SetNumberOfComponents(2);
+  std::vector<vtkSmartPointer<vtkDoubleArray>> parameters;
+  for (const Parameter& parameter : this->Parameters)
+  {
+    auto array = vtkSmartPointer<vtkDoubleArray>::New();
+    array->SetName(parameter.Name.c_str());
+    parameters.push_back(array);
+  }
+
+  const double uScale = this->Columns > 1 ? 1.0 / (this->Columns - 1) : 0.0;
+  const double vScale = this->Rows > 1 ? 1.0 / (this->Rows - 1) : 0.0;
+  // Curves need no texture seam: the repeated last column of periodic grids is left out.
+  const int columns =
+    (this->PeriodicColumns && !withSurfaceAttributes) ? this->Columns - 1 : this->Columns;
+  for (int r = firstRow; r <= lastRow; ++r)
+  {
+    for (int c = 0; c < columns; ++c)
+    {
+      if (!this->Usable(r, c))
+      {
+        continue;
+      }
+      ids[this->Index(r, c)] = points->InsertNextPoint(&this->Points[3 * this->Index(r, c)]);
+      if (withSurfaceAttributes)
+      {
+        double n[3];
+        this->ComputeNormal(r, c, n);
+        normals->InsertNextTuple(n);
+        const double uv[2] = { c * uScale, r * vScale };
+        tcoords->InsertNextTuple(uv);
+      }
+      for (size_t k = 0; k < parameters.size(); ++k)
+      {
+        const Parameter& parameter = this->Parameters[k];
+        parameters[k]->InsertNextValue(parameter.Values[parameter.PerRow ? r : c]);
+      }
+    }
+  }
+  output->SetPoints(points);
+  if (withSurfaceAttributes)
+  {
+    output->GetPointData()->SetNormals(normals);
+    output->GetPointData()->SetTCoords(tcoords);
+  }
+  for (auto& array : parameters)
+  {
+    output->GetPointData()->AddArray(array);
+  }
+  return ids;
+}
+
+void vtkBoostedGridBuilder::BuildSurface(
+  vtkPolyData* output, int firstRow, int lastRow, int outputPointsPrecision) const
+{
+  const std::vector<long long> ids =
+    this->WritePoints(output, firstRow, lastRow, outputPointsPrecision, true);
+  vtkNew<vtkCellArray> quads;
+  for (int r = firstRow; r < lastRow; ++r)
+  {
+    for (int c = 0; c + 1 < this->Columns; ++c)
+    {
+      const vtkIdType quad[4] = { ids[this->Index(r, c)], ids[this->Index(r, c + 1)],
+        ids[this->Index(r + 1, c + 1)], ids[this->Index(r + 1, c)] };
+      if (quad[0] >= 0 && quad[1] >= 0 && quad[2] >= 0 && quad[3] >= 0)
+      {
+        quads->InsertNextCell(4, quad);
+      }
+    }
+  }
+  output->SetPolys(quads);
+}
+
+void vtkBoostedGridBuilder::BuildCurves(
+  vtkPolyData* output, int firstRow, int lastRow, int outputPointsPrecision) const
+{
+  const std::vector<long long> ids =
+    this->WritePoints(output, firstRow, lastRow, outputPointsPrecision, false);
+  // With periodic columns the last column repeats the first: walk the distinct columns and close
+  // the loop when every sample of the row is usable.
+  const int distinct = this->PeriodicColumns ? this->Columns - 1 : this->Columns;
+  vtkNew<vtkCellArray> lines;
+  std::vector<vtkIdType> run;
+  for (int r = firstRow; r <= lastRow; ++r)
+  {
+    int start = 0;
+    bool allUsable = true;
+    for (int c = 0; c < distinct; ++c)
+    {
+      if (ids[this->Index(r, c)] < 0)
+      {
+        allUsable = false;
+        start = c; // start a walk at a gap so that runs are not cut at the seam
+      }
+    }
+    run.clear();
+    auto flush = [&]() {
+      if (run.size() >= 2)
+      {
+        lines->InsertNextCell(static_cast<vtkIdType>(run.size()), run.data());
+      }
+      run.clear();
+    };
+    for (int k = 0; k < distinct; ++k)
+    {
+      const int c = this->PeriodicColumns ? (start + k) % distinct : k;
+      const long long id = ids[this->Index(r, c)];
+      if (id < 0)
+      {
+        flush();
+        continue;
+      }
+      run.push_back(static_cast<vtkIdType>(id));
+    }
+    if (allUsable && this->PeriodicColumns && !run.empty())
+    {
+      run.push_back(run.front());
+    }
+    flush();
+  }
+  output->SetLines(lines);
+}

@@ -1,0 +1,72 @@
+/**
+ * @class   vtkBoostedGridBuilder
+ * @brief   turns a rows x columns grid of sampled surface points into a vtkPolyData
+ *
+ * Shared by the sources of this project: they sample a parametric surface on a grid (rows are the
+ * sweep parameter, columns the curve parameter), mark which samples are usable, and let this class
+ * emit either quads with point normals and texture coordinates, or one polyline per row.
+ *
+ * A sample is unusable when it is not finite or lies farther than the clip radius from the clip
+ * center; cells touching an unusable sample are left out, so the surface is cut there rather than
+ * stretched to infinity. Only the points that are used are written.
+ */
+#ifndef vtkBoostedGridBuilder_h
+#define vtkBoostedGridBuilder_h
+
+#include <string>
+#include <vector>
+
+class vtkPolyData;
+
+class vtkBoostedGridBuilder
+{
+public:
+  /// `periodicColumns`: the last column repeats the first (a closed curve with a texture seam).
+  vtkBoostedGridBuilder(int rows, int columns, bool periodicColumns);
+
+  void SetClipSphere(const double center[3], double radius);
+
+  int GetRows() const { return this->Rows; }
+  int GetColumns() const { return this->Columns; }
+
+  void SetPoint(int row, int column, const double point[3]);
+  /// Used where the grid gives no normal (a degenerate neighbourhood): e.g. the plane of the row's curve.
+  void SetRowFallbackNormal(int row, const double normal[3]);
+  /// A named per-point parameter, given per row and per column (value = row value or column value).
+  void AddRowParameter(const std::string& name, const std::vector<double>& valuePerRow);
+  void AddColumnParameter(const std::string& name, const std::vector<double>& valuePerColumn);
+
+  /// Quads between point rows [firstRow, lastRow] (inclusive), with normals and texture coordinates.
+  void BuildSurface(vtkPolyData* output, int firstRow, int lastRow, int outputPointsPrecision) const;
+  /// One polyline per row in [firstRow, lastRow], split where samples are unusable.
+  void BuildCurves(vtkPolyData* output, int firstRow, int lastRow, int outputPointsPrecision) const;
+
+  /// Number of samples that were unusable (for a warning).
+  int CountUnusable() const;
+
+private:
+  struct Parameter
+  {
+    std::string Name;
+    bool PerRow;
+    std::vector<double> Values;
+  };
+
+  int Index(int row, int column) const { return row * this->Columns + column; }
+  bool Usable(int row, int column) const;
+  void ComputeNormal(int row, int column, double normal[3]) const;
+  /// Writes the usable points of rows [firstRow, lastRow] and returns the map grid index -> point id.
+  std::vector<long long> WritePoints(
+    vtkPolyData* output, int firstRow, int lastRow, int precision, bool withSurfaceAttributes) const;
+
+  int Rows;
+  int Columns;
+  bool PeriodicColumns;
+  double ClipCenter[3] = { 0, 0, 0 };
+  double ClipRadius = -1.0; // negative: no clipping
+  std::vector<double> Points;
+  std::vector<double> FallbackNormals;
+  std::vector<Parameter> Parameters;
+};
+
+#endif

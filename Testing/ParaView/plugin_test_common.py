@@ -1,0 +1,53 @@
+"""Shared by the ParaView tests: argument parsing, plugin loading and image comparison.
+
+The tests run in pvpython or pvbatch and receive, from CMake, the plugin's path, the baseline
+image and a directory for the images they write.
+"""
+import argparse
+import os
+
+
+def parse_arguments():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--plugin", required=True, help="path of BoostedSurfaces.so")
+    parser.add_argument("--baseline", help="baseline PNG to compare with")
+    parser.add_argument("--output-dir", default=".", help="where rendered images are written")
+    parser.add_argument("--threshold", type=float, default=0.05,
+                        help="largest accepted vtkImageDifference thresholded error")
+    return parser.parse_args()
+
+
+def load_plugin(path, namespace):
+    from paraview import simple
+    simple.LoadPlugin(path, remote=False, ns=namespace)
+
+
+def compare_png(image_path, baseline_path, threshold):
+    """True when image_path matches baseline_path; with no baseline, say where the image is."""
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    from vtkmodules.vtkImagingCore import vtkImageDifference
+    if not os.path.exists(baseline_path):
+        print("no baseline %s; the rendered image is %s" % (baseline_path, image_path))
+        return False
+    readers = []
+    for path in (image_path, baseline_path):
+        reader = vtkPNGReader()
+        reader.SetFileName(path)
+        reader.Update()
+        readers.append(reader)
+    difference = vtkImageDifference()
+    difference.SetInputConnection(readers[0].GetOutputPort())
+    difference.SetImageConnection(readers[1].GetOutputPort())
+    difference.Update()
+    error = difference.GetThresholdedError()
+    print("image %s vs baseline %s: thresholded error %g (threshold %g)"
+          % (image_path, baseline_path, error, threshold))
+    return error <= threshold
+
+
+def finish(ok, message):
+    """Ends a test. Success returns normally so that pvbatch can finalize MPI on every rank
+    (sys.exit would abort the other ranks); failure raises, which makes the process exit non-zero."""
+    if not ok:
+        raise RuntimeError("FAILED: " + message)
+    print("PASSED: " + message)

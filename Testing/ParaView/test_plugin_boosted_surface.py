@@ -1,0 +1,70 @@
+"""The plugin in pvpython or pvbatch: the Boosted Surface source exists with its documented
+defaults, produces the Fig 2 surface, and renders like the baseline."""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plugin_test_common as common  # noqa: E402
+
+arguments = common.parse_arguments()
+common.load_plugin(arguments.plugin, globals())  # defines BoostedSurface()
+from paraview import simple  # noqa: E402
+
+failures = []
+
+source = BoostedSurface()  # noqa: F821
+defaults = {
+    "CircleCenter": [0.0, 0.0, 0.0],
+    "CircleNormal": [1.0, 0.0, 0.0],
+    "CircleRadius": 1.0,
+    "BoostDirection": [1.0, 0.0, 0.0],
+    "LambdaRange": [0.0, 2.0],
+    "LambdaResolution": 64,
+    "ThetaResolution": 64,
+}
+for name, expected in defaults.items():
+    value = source.GetPropertyValue(name)
+    value = list(value) if isinstance(expected, list) else value
+    if value != expected:
+        failures.append("default %s is %r, expected %r" % (name, value, expected))
+
+source.LambdaResolution = 16
+source.ThetaResolution = 32
+source.UpdatePipeline()
+info = source.GetDataInformation()
+if info.GetNumberOfPoints() != 17 * 33 or info.GetNumberOfCells() != 16 * 32:
+    failures.append("Fig 2 surface has %d points and %d cells, expected %d and %d"
+                    % (info.GetNumberOfPoints(), info.GetNumberOfCells(), 17 * 33, 16 * 32))
+bounds = info.GetBounds()
+# x runs from 0 (lambda = 0) to the largest plane x = lambda/(1+lambda^2) = 1/2 (lambda = 1).
+if abs(bounds[0]) > 1e-12 or abs(bounds[1] - 0.5) > 1e-12 or abs(bounds[3] - 1.0) > 1e-12:
+    failures.append("unexpected bounds %r" % (bounds,))
+for array in ("lambda", "theta", "Normals", "TextureCoordinates"):
+    if info.GetPointDataInformation().GetArrayInformation(array) is None:
+        failures.append("point array %s is missing" % array)
+
+view = simple.CreateRenderView()
+view.ViewSize = [400, 400]
+view.OrientationAxesVisibility = 0
+view.Background = [1, 1, 1]
+try:
+    view.UseColorPaletteForBackground = 0
+except AttributeError:
+    pass
+display = simple.Show(source, view)
+simple.ColorBy(display, ("POINTS", "lambda"))
+view.CameraPosition = [3.0, 2.0, 2.5]
+view.CameraFocalPoint = [0.25, 0.0, 0.0]
+view.CameraViewUp = [0.0, 0.0, 1.0]
+view.ResetCamera()
+simple.Render(view)
+
+if arguments.baseline:
+    image = os.path.join(arguments.output_dir, os.path.basename(arguments.baseline))
+    simple.SaveScreenshot(image, view, ImageResolution=[400, 400])
+    if not common.compare_png(image, arguments.baseline, arguments.threshold):
+        failures.append("image differs from the baseline")
+
+for failure in failures:
+    print("FAILED:", failure)
+common.finish(not failures, "Boosted Surface through the plugin")
