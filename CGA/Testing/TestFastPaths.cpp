@@ -1,0 +1,174 @@
+// The hot-loop paths (PointPairs.h, PointSandwich.h) against the full Multivector products.
+#include "TestSupport.h"
+
+#include "cga/CompactAlgebra.h"
+#include "cga/Conformal.h"
+#include "cga/PointPairs.h"
+#include "cga/PointSandwich.h"
+
+#include <limits>
+#include <vector>
+
+namespace
+{
+using namespace cga;
+using cgatest::pointsNear;
+using cgatest::Random;
+using cgatest::relativeDifference;
+
+TEST(FastPaths, NullPointPairClosedFormMatchesTheWedge)
+{
+  Random random(31);
+  for (int n = 0; n < 5000; ++n)
+  {
+    const Vec3 x = random.vec3(3.0);
+    const Vec3 v = random.uniform(0.01, 3.0) * random.unit();
+    const Multivector expected = nullPointPair(x, v);
+    EXPECT_LE(relativeDifference(toMultivector(nullPointPairCompact(x, v)), expected), 1e-14);
+  }
+  // Degenerate inputs: zero direction gives zero, a pair at the origin is the tangent no ^ v.
+  EXPECT_EQ(nullPointPairCompact({ 1, 2, 3 }, {}).maxAbs(), 0.0);
+  EXPECT_EQ(toMultivector(nullPointPairCompact({}, { 0.5, -1, 2 })).c, tangent({ 0.5, -1, 2 }).c);
+}
+
+TEST(FastPaths, NullPointPairSquaresToZero)
+{
+  Random random(32);
+  for (int n = 0; n < 1000; ++n)
+  {
+    const Bivector tau = nullPointPairCompact(random.vec3(3.0), random.vec3(2.0));
+    const Even square = tau * tau;
+    EXPECT_LE(square.maxAbs(), 1e-14 * tau.maxAbs() * tau.maxAbs());
+  }
+}
+
+TEST(FastPaths, WeightedSumsMatchTheMultivectorSum)
+{
+  Random random(33);
+  for (int n = 0; n < 200; ++n)
+  {
+    const int count = 1 + n % 16;
+    std::vector<Vec3> locations, directions;
+    std::vector<double> weights;
+    std::vector<Bivector> pairs;
+    Multivector expected;
+    for (int i = 0; i < count; ++i)
+    {
+      locations.push_back(random.vec3(2.0));
+      directions.push_back(random.unit());
+      weights.push_back(random.uniform(-1.0, 1.0));
+      pairs.push_back(nullPointPairCompact(locations.back(), directions.back()));
+      expected += weights.back() * nullPointPair(locations.back(), directions.back());
+    }
+    const Bivector sum = weightedSum(pairs.data(), weights.data(), pairs.size());
+    const Bivector direct =
+      weightedNullPointPairSum(locations.data(), directions.data(), weights.data(), pairs.size());
+    EXPECT_LE(relativeDifference(toMultivector(sum), expected), 1e-14);
+    EXPECT_LE(relativeDifference(toMultivector(direct), expected), 1e-14);
+  }
+  EXPECT_EQ(weightedSum(nullptr, nullptr, 0).maxAbs(), 0.0);
+}
+
+// The reference: the full 32-coefficient products, K up(p) ~K, grade 1.
+Multivector referenceImage(const Even& k, Vec3 p)
+{
+  return sandwich(toMultivector(k), up(p)).grade(1);
+}
+
+TEST(FastPaths, SandwichOfRandomEvenElementsMatchesTheFullProduct)
+{
+  // Random scalar + bivector + 4-vector: not versors, so the grade-1 projection matters.
+  Random random(34);
+  int comparedPoints = 0;
+  const int cases = 5000;
+  for (int n = 0; n < cases; ++n)
+  {
+    const Even k = random.even(1.0);
+    const Vec3 p = random.vec3(2.0);
+    const Multivector expected = referenceImage(k, p);
+    const ConformalVector image = sandwichGrade1(k, ConformalVector::point(p));
+    EXPECT_LE(relativeDifference(toMultivector(image), expected), 1e-13);
+    // Points: compare where the weight is not a cancellation remnant.
+    const double alpha = image.weight();
+    if (std::fabs(alpha) > 1e-2 * expected.coefficientNorm())
+    {
+      ++comparedPoints;
+      Vec3 fast;
+      ASSERT_TRUE(sandwichPoint(k, p, fast));
+      const Vec3 reference = down(expected);
+      const double scale = expected.coefficientNorm() / std::fabs(alpha);
+      EXPECT_LE(cgatest::distance(fast, reference),
+                1e-13 * scale * std::max(1.0, cgatest::maxNorm(reference)));
+    }
+  }
+  EXPECT_GT(comparedPoints, cases * 9 / 10);
+}
+
+TEST(FastPaths, PointMapMatchesTheSandwich)
+{
+  Random random(35);
+  for (int n = 0; n < 300; ++n)
+  {
+    const Even k = random.even(1.0);
+    const PointMap map(k);
+    for (int i = 0; i < 10; ++i)
+    {
+      const Vec3 p = random.vec3(2.0);
+      const ConformalVector viaMap = map.apply(ConformalVector::point(p));
+      EXPECT_LE(relativeDifference(toMultivector(viaMap), referenceImage(k, p)), 1e-13);
+      Vec3 a{ -7, -7, -7 }, b{ -7, -7, -7 };
+      const bool okMap = map.apply(p, a);
+      const bool okSandwich = sandwichPoint(k, p, b);
+      EXPECT_EQ(okMap, okSandwich);
+      if (okMap && std::fabs(viaMap.weight()) > 1e-2 * toMultivector(viaMap).coefficientNorm())
+      {
+        EXPECT_TRUE(pointsNear(a, b, 1e-12));
+      }
+    }
+    // The matrix holds the images of the basis vectors (column j = image of basis vector j).
+    ConformalVector ni;
+    ni[ConformalVector::NI] = 1.0;
+    const ConformalVector image = sandwichGrade1(k, ni);
+    for (int i = 0; i < ConformalVector::Count; ++i)
+    {
+      EXPECT_EQ(map.matrix()[i * ConformalVector::Count + ConformalVector::NI], image[i]);
+    }
+  }
+}
+
+TEST(FastPaths, SandwichFailsCleanlyAtInfinityAndOnNaN)
+{
+  // K = 1 + no e1 sends -e1 to infinity (SPEC.md section 2: -v/|v|^2).
+  Even k = Even::identity();
+  k.bivector = toBivector(no() * e1());
+  Vec3 out{ 42, 42, 42 };
+  EXPECT_FALSE(sandwichPoint(k, { -1, 0, 0 }, out));
+  EXPECT_EQ(out.x, 42.0);
+  EXPECT_FALSE(PointMap(k).apply({ -1, 0, 0 }, out));
+  EXPECT_EQ(out.x, 42.0);
+  // Elsewhere it works.
+  EXPECT_TRUE(sandwichPoint(k, { 1, 0, 0 }, out));
+  EXPECT_TRUE(pointsNear(out, { 0.5, 0, 0 }, 1e-15)); // (x + v|x|^2)/(1 + 2 v.x + |v|^2|x|^2)
+
+  Even bad = k;
+  bad.bivector[Bivector::E12] = std::numeric_limits<double>::quiet_NaN();
+  out = { 42, 42, 42 };
+  EXPECT_FALSE(sandwichPoint(bad, { 1, 2, 3 }, out));
+  EXPECT_FALSE(PointMap(bad).apply({ 1, 2, 3 }, out));
+  EXPECT_FALSE(sandwichPoint(k, { std::nan(""), 0, 0 }, out));
+  EXPECT_EQ(out.x, 42.0);
+}
+
+TEST(FastPaths, NullBasisKeepsPrecisionFarFromTheOrigin)
+{
+  // A translation of a point at distance 1e5: the weight -ni.P stays exactly 1 in the null basis,
+  // where the orthonormal path cancels e- and e+ coefficients of size 5e9.
+  const Vec3 p{ 1e5, -2e4, 3e4 };
+  const Vec3 d{ 0.125, 0.25, -0.5 };
+  const Even t = toEven(translator(d));
+  Vec3 out;
+  ASSERT_TRUE(sandwichPoint(t, p, out));
+  EXPECT_LE(cgatest::distance(out, p + d), 1e-10);
+  EXPECT_EQ(sandwichGrade1(t, ConformalVector::point(p)).weight(), 1.0);
+}
+} // namespace

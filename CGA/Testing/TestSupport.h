@@ -1,0 +1,141 @@
+// Shared helpers of the kernel tests: seeded random inputs, relative comparisons, data files.
+#pragma once
+
+#include "cga/Compact.h"
+#include "cga/CompactConversion.h"
+#include "cga/Multivector.h"
+#include "cga/Vec3.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <string>
+
+namespace cgatest
+{
+using namespace cga;
+
+/// Seeded generator so that every run sees the same inputs.
+class Random
+{
+public:
+  explicit Random(std::uint64_t seed)
+    : Engine(seed)
+  {
+  }
+
+  double uniform(double lo, double hi)
+  {
+    return std::uniform_real_distribution<double>(lo, hi)(Engine);
+  }
+
+  Vec3 vec3(double half)
+  {
+    return { uniform(-half, half), uniform(-half, half), uniform(-half, half) };
+  }
+
+  Vec3 unit()
+  {
+    for (;;)
+    {
+      const Vec3 v = vec3(1.0);
+      const double n = norm(v);
+      if (n > 0.1 && n <= 1.0)
+      {
+        return v / n;
+      }
+    }
+  }
+
+  Bivector bivector(double half)
+  {
+    Bivector b;
+    for (double& x : b.c)
+    {
+      x = uniform(-half, half);
+    }
+    return b;
+  }
+
+  Quadvector quadvector(double half)
+  {
+    Quadvector q;
+    for (double& x : q.c)
+    {
+      x = uniform(-half, half);
+    }
+    return q;
+  }
+
+  /// Scalar + bivector + 4-vector with independent coefficients: generally not a versor.
+  Even even(double half)
+  {
+    Even k;
+    k.scalar = uniform(-half, half);
+    k.bivector = bivector(half);
+    k.quadvector = quadvector(half);
+    return k;
+  }
+
+  Multivector multivector(double half)
+  {
+    Multivector m;
+    for (double& x : m.c)
+    {
+      x = uniform(-half, half);
+    }
+    return m;
+  }
+
+private:
+  std::mt19937_64 Engine;
+};
+
+/// |a - b| / max(|b|, floor) in coefficient norm.
+inline double relativeDifference(const Multivector& a, const Multivector& b, double floor = 1e-300)
+{
+  return (a - b).coefficientNorm() / std::max(b.coefficientNorm(), floor);
+}
+
+inline double relativeDifference(const Even& a, const Even& b, double floor = 1e-300)
+{
+  return relativeDifference(toMultivector(a), toMultivector(b), floor);
+}
+
+inline double relativeDifference(const Bivector& a, const Bivector& b, double floor = 1e-300)
+{
+  return relativeDifference(toMultivector(a), toMultivector(b), floor);
+}
+
+/// Maximum-norm distance of Euclidean vectors.
+inline double distance(Vec3 a, Vec3 b)
+{
+  return std::max({ std::fabs(a.x - b.x), std::fabs(a.y - b.y), std::fabs(a.z - b.z) });
+}
+
+inline double maxNorm(Vec3 a)
+{
+  return std::max({ std::fabs(a.x), std::fabs(a.y), std::fabs(a.z) });
+}
+
+/// Relative closeness of Euclidean points: |a - b|_max <= tolerance * max(1, |b|_max).
+inline ::testing::AssertionResult pointsNear(Vec3 a, Vec3 b, double tolerance)
+{
+  const double d = distance(a, b);
+  if (d <= tolerance * std::max(1.0, maxNorm(b)))
+  {
+    return ::testing::AssertionSuccess();
+  }
+  return ::testing::AssertionFailure()
+    << "(" << a.x << ", " << a.y << ", " << a.z << ") vs (" << b.x << ", " << b.y << ", " << b.z
+    << "), difference " << d;
+}
+
+inline std::string dataPath(const std::string& name)
+{
+  return std::string(BOOSTED_CGA_TEST_DATA_DIR) + "/" + name;
+}
+} // namespace cgatest

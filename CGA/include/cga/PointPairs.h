@@ -1,0 +1,24 @@
+// Null point pairs (tangents, eq 7) in compact form, and the weighted sums the field deformations
+// of the paper (eq 21-23, 27-28) exponentiate.
+#pragma once
+
+#include "cga/Compact.h"
+#include "cga/Vec3.h"
+
+#include <cstddef>
+
+namespace cga
+{
+/// tau(x, v) = up(x) ^ (v + (v.x) ni) = T(x) (no ^ v) ~T(x) in closed form:
+/// x ^ v + (v.x) no^ni - v ^ no + ((v.x) x - |x|^2/2 v) ^ ni. The length of v is the weight.
+Bivector nullPointPairCompact(Vec3 location, Vec3 direction);
+
+/// sum_i weights[i] * bivectors[i].
+Bivector weightedSum(const Bivector* bivectors, const double* weights, std::size_t count);
+
+/// sum_i weights[i] * tau(locations[i], directions[i]), without storing the individual pairs.
+Bivector weightedNullPointPairSum(const Vec3* locations,
+                                  const Vec3* directions,
+                                  const double* weights,
+                                  std::size_t count);
+} // namespace cga

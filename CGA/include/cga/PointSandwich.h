@@ -1,0 +1,44 @@
+// Fast paths for fn(<K up(p) ~K>_1): the image of a point under an even element K.
+//
+// K need not be a versor: the paper's exponential of a sum of point pairs is scalar + bivector +
+// 4-vector with K ~K != 1. SPEC.md then takes the grade-1 part of K up(p) ~K before normalizing,
+// and so do these functions. Everything is computed in the null basis without heap allocation.
+#pragma once
+
+#include "cga/Compact.h"
+#include "cga/Vec3.h"
+
+#include <array>
+
+namespace cga
+{
+/// <K X ~K>_1, as two sparse products: the odd element K X, then only the grade-1 part of (K X) ~K.
+ConformalVector sandwichGrade1(const Even& k, const ConformalVector& x);
+
+/// Euclidean point of fn(P) = P / (-ni.P). Returns false, leaving `out` unchanged, when the weight
+/// -ni.P is zero or the result is not finite (the point went to infinity, or P holds NaN).
+bool normalizePoint(const ConformalVector& p, Vec3& out);
+
+/// out = Euclidean point of fn(<K up(p) ~K>_1); false (out unchanged) as normalizePoint.
+bool sandwichPoint(const Even& k, Vec3 p, Vec3& out);
+
+/// The linear map X -> <K X ~K>_1 of a fixed K as a 5x5 real matrix in the null basis
+/// (ConformalVector order), so that many points through one K cost a matrix-vector product.
+class PointMap
+{
+public:
+  explicit PointMap(const Even& k);
+
+  /// <K x ~K>_1.
+  ConformalVector apply(const ConformalVector& x) const;
+
+  /// out = Euclidean point of fn(<K up(p) ~K>_1); false (out unchanged) as normalizePoint.
+  bool apply(Vec3 p, Vec3& out) const;
+
+  /// Row-major: entry (i, j) is component i of the image of basis vector j.
+  const std::array<double, 25>& matrix() const { return Matrix; }
+
+private:
+  std::array<double, 25> Matrix{};
+};
+} // namespace cga

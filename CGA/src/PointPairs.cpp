@@ -1,0 +1,58 @@
+#include "cga/PointPairs.h"
+
+namespace cga
+{
+namespace
+{
+// b += w tau(x, v), the closed form of nullPointPairCompact written into an accumulator.
+void addNullPointPair(Bivector& b, double w, Vec3 x, Vec3 v)
+{
+  using B = Bivector;
+  const double vx = dot(v, x);
+  const double half = 0.5 * norm2(x);
+  b[B::E12] += w * (x.x * v.y - x.y * v.x);
+  b[B::E13] += w * (x.x * v.z - x.z * v.x);
+  b[B::E23] += w * (x.y * v.z - x.z * v.y);
+  b[B::E1NO] -= w * v.x;
+  b[B::E2NO] -= w * v.y;
+  b[B::E3NO] -= w * v.z;
+  b[B::E1NI] += w * (vx * x.x - half * v.x);
+  b[B::E2NI] += w * (vx * x.y - half * v.y);
+  b[B::E3NI] += w * (vx * x.z - half * v.z);
+  b[B::NONI] += w * vx;
+}
+} // namespace
+
+Bivector nullPointPairCompact(Vec3 location, Vec3 direction)
+{
+  Bivector b;
+  addNullPointPair(b, 1.0, location, direction);
+  return b;
+}
+
+Bivector weightedSum(const Bivector* bivectors, const double* weights, std::size_t count)
+{
+  Bivector sum;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    for (int j = 0; j < Bivector::Count; ++j)
+    {
+      sum[j] += weights[i] * bivectors[i][j];
+    }
+  }
+  return sum;
+}
+
+Bivector weightedNullPointPairSum(const Vec3* locations,
+                                  const Vec3* directions,
+                                  const double* weights,
+                                  std::size_t count)
+{
+  Bivector sum;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    addNullPointPair(sum, weights[i], locations[i], directions[i]);
+  }
+  return sum;
+}
+} // namespace cga

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# The VTK modules and the Python package build against VTK alone, with ParaView hidden from CMake
+# (so no ParaView header or target can sneak into them), and the result imports and runs.
+# Usage: test_standalone_vtk_build.sh <source dir> <VTK_DIR> <python>
+set -euo pipefail
+source_dir="$1"
+vtk_dir="$2"
+python="$3"
+build="$(mktemp -d)"
+trap 'rm -rf "$build"' EXIT
+
+cmake -S "$source_dir" -B "$build" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF \
+  -DCMAKE_DISABLE_FIND_PACKAGE_ParaView=ON -DVTK_DIR="$vtk_dir" \
+  -DPython3_EXECUTABLE="$python" >"$build/configure.log" 2>&1 || { cat "$build/configure.log"; exit 1; }
+grep -q "ParaView not found" "$build/configure.log"
+cmake --build "$build" -j 2 >"$build/build.log" 2>&1 || { tail -50 "$build/build.log"; exit 1; }
+if find "$build" -name 'BoostedSurfaces.so' -path '*plugins*' | grep -q .; then
+  echo "the plugin was built although ParaView was hidden" >&2
+  exit 1
+fi
+site_packages="$(find "$build" -type d -name site-packages | head -n 1)"
+PYTHONPATH="$site_packages" "$python" -c "
+from boostedsurfaces import vtkBoostedSurfaceSource
+s = vtkBoostedSurfaceSource(); s.Update()
+assert s.GetOutput().GetNumberOfCells() == 64 * 64
+print('standalone VTK build OK')"
