@@ -10,6 +10,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include "cga/Conformal.h"
+#include "cga/PointSandwich.h"
 #include "cga/surfaces/BoostedCircle.h"
 
 #include <algorithm>
@@ -122,12 +123,16 @@ int vtkBoostedSurfaceSource::RequestData(
     {
       break;
     }
-    const cga::Multivector boost = family.boost(lambdas[r]);
+    // One 5x5 matrix per lambda row: the sandwich K up(p) ~K is linear in up(p).
+    const cga::PointMap boost(family.boostCompact(lambdas[r]));
     for (int c = 0; c < columns; ++c)
     {
-      const cga::Vec3 p = cga::transformPoint(boost, circlePoints[c]);
-      const double point[3] = { p.x, p.y, p.z };
-      grid.SetPoint(r, c, point);
+      cga::Vec3 p;
+      if (boost.apply(circlePoints[c], p)) // false: the point went to infinity; left NaN and dropped
+      {
+        const double point[3] = { p.x, p.y, p.z };
+        grid.SetPoint(r, c, point);
+      }
     }
     const cga::RoundInfo image = cga::readCircle(family.imageBlade(lambdas[r]), 1e-12);
     const double fallback[3] = { image.normal.x, image.normal.y, image.normal.z };

@@ -1,6 +1,7 @@
 #include "cga/surfaces/BoostedCircle.h"
 
 #include "cga/Conformal.h"
+#include "cga/PointPairs.h"
 
 #include <cmath>
 
@@ -53,6 +54,13 @@ Vec3 BoostedCircle::circlePoint(double theta) const
 Multivector BoostedCircle::boost(double lambda) const
 {
   return Multivector::scalar(1.0) + lambda * nullPointPair(boostLocation, boostDirection);
+}
+
+Even BoostedCircle::boostCompact(double lambda) const
+{
+  Even k = Even::fromBivector(lambda * nullPointPairCompact(boostLocation, boostDirection));
+  k.scalar = 1.0;
+  return k;
 }
 
 Multivector BoostedCircle::imageBlade(double lambda) const

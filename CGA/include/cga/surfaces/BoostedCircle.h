@@ -5,6 +5,7 @@
 // The family maps a fixed circle point to a curve; sweeping lambda over a range gives a surface.
 #pragma once
 
+#include "cga/Compact.h"
 #include "cga/Multivector.h"
 #include "cga/Vec3.h"
 
@@ -29,8 +30,11 @@ struct BoostedCircle
   /// The point of the undeformed circle at angle theta.
   Vec3 circlePoint(double theta) const;
 
-  /// K(lambda) = 1 + lambda tau(boostLocation, boostDirection).
+  /// K(lambda) = 1 + lambda tau(boostLocation, boostDirection), full multivector (reference).
   Multivector boost(double lambda) const;
+
+  /// The same K(lambda) as a compact even element, for the fast point map (PointSandwich.h).
+  Even boostCompact(double lambda) const;
 
   /// The circle blade (up(a) ^ up(b) ^ up(c)) sandwiched by K(lambda): a circle, or a line where the
   /// circle passes through the boost's pole.

@@ -1,0 +1,163 @@
+// The field of point-pair generators (PointPairField.h) against the full multivector product and
+// against the closed form of one generator (SPEC.md section 2: p -> x + SCT(p - x)).
+#include "TestSupport.h"
+
+#include "cga/Conformal.h"
+#include "cga/Exponential.h"
+#include "cga/PointPairField.h"
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace
+{
+using namespace cga;
+using cgatest::Random;
+
+// B(p) and fn(K up(p) ~K) through the full Multivector: the independent reference.
+Multivector referenceGenerator(const std::vector<PointPairGenerator>& generators,
+                               Vec3 p,
+                               double k,
+                               double eps)
+{
+  Multivector b;
+  for (const PointPairGenerator& g : generators)
+  {
+    b += nullPointPair(g.location, g.direction) * (g.weight / (k * norm2(p - g.location) + eps));
+  }
+  return b;
+}
+
+// The paper's rule written out on the full multivector (eq 9-10), s = <B B>_0.
+Multivector referencePaperExp(const Multivector& b)
+{
+  const double s = (b * b).c[0];
+  if (s > 0.0)
+  {
+    const double r = std::sqrt(s);
+    return Multivector::scalar(std::cosh(r)) + b * (std::sinh(r) / r);
+  }
+  if (s < 0.0)
+  {
+    const double r = std::sqrt(-s);
+    return Multivector::scalar(std::cos(r)) + b * (std::sin(r) / r);
+  }
+  return Multivector::scalar(1.0) + b;
+}
+
+Vec3 referenceImage(const Multivector& k, Vec3 p)
+{
+  Vec3 out;
+  EXPECT_TRUE(normalizePoint(sandwich(k, up(p)).grade(1), out));
+  return out;
+}
+
+std::vector<PointPairGenerator> randomGenerators(Random& random, int count, double maxWeight)
+{
+  std::vector<PointPairGenerator> generators;
+  for (int i = 0; i < count; ++i)
+  {
+    generators.push_back({ random.vec3(1.5), random.unit(), random.uniform(-maxWeight, maxWeight) });
+  }
+  return generators;
+}
+
+double distance(Vec3 a, Vec3 b)
+{
+  return norm(a - b);
+}
+
+TEST(PointPairField, ExactRuleMatchesTheSeriesExponentialOfTheFullProduct)
+{
+  Random random(71);
+  for (int n = 0; n < 300; ++n)
+  {
+    const auto generators = randomGenerators(random, 1 + n % 8, 0.3);
+    const PointPairField field(generators, 1.5, 0.05);
+    const Vec3 p = random.vec3(2.0);
+    Vec3 image;
+    ASSERT_TRUE(field.map(p, 1.0, ExponentialRule::Exact, image));
+    const Multivector k = expSeries(referenceGenerator(generators, p, 1.5, 0.05) * -1.0);
+    EXPECT_LE(distance(image, referenceImage(k, p)), 1e-10 * (1.0 + norm(image)));
+  }
+}
+
+TEST(PointPairField, PaperRuleMatchesEquation9Evaluated)
+{
+  Random random(72);
+  double largestRuleDifference = 0.0;
+  for (int n = 0; n < 300; ++n)
+  {
+    const auto generators = randomGenerators(random, 2 + n % 8, 0.3);
+    const PointPairField field(generators, 1.0, 0.05);
+    const Vec3 p = random.vec3(2.0);
+    Vec3 paper, exact;
+    ASSERT_TRUE(field.map(p, 1.0, ExponentialRule::Paper, paper));
+    ASSERT_TRUE(field.map(p, 1.0, ExponentialRule::Exact, exact));
+    const Multivector k = referencePaperExp(referenceGenerator(generators, p, 1.0, 0.05) * -1.0);
+    EXPECT_LE(distance(paper, referenceImage(k, p)), 1e-10 * (1.0 + norm(paper)));
+    largestRuleDifference = std::max(largestRuleDifference, distance(paper, exact));
+  }
+  // Sums of pairs at different places are not blades: the two rules must differ somewhere.
+  EXPECT_GT(largestRuleDifference, 1e-4);
+}
+
+TEST(PointPairField, OneGeneratorIsATranslatedSpecialConformalTransformation)
+{
+  Random random(73);
+  for (int n = 0; n < 500; ++n)
+  {
+    const Vec3 x = random.vec3(2.0);
+    const Vec3 v = random.uniform(0.1, 2.0) * random.unit();
+    const double w = random.uniform(-1.0, 1.0);
+    const double k = random.uniform(0.0, 2.0), eps = random.uniform(0.01, 1.0);
+    const PointPairField field({ { x, v, w } }, k, eps);
+    const Vec3 p = random.vec3(3.0);
+    // K = exp(-c tau(x, v)) = 1 + tau(x, -c v): an SCT of weight u = -c v about x.
+    const Vec3 u = (-w / (k * norm2(p - x) + eps)) * v;
+    const Vec3 y = p - x;
+    const Vec3 expected =
+      x + (y + norm2(y) * u) / (1.0 + 2.0 * dot(u, y) + norm2(u) * norm2(y));
+    for (ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
+    {
+      Vec3 image;
+      ASSERT_TRUE(field.map(p, 1.0, rule, image));
+      EXPECT_LE(distance(image, expected), 1e-12 * (1.0 + norm(expected)));
+    }
+  }
+}
+
+TEST(PointPairField, ZeroStrengthAndNoGeneratorsAreTheIdentity)
+{
+  Random random(74);
+  const PointPairField empty(std::vector<PointPairGenerator>{}, 1.0, 0.1);
+  const PointPairField field(randomGenerators(random, 4, 1.0), 1.0, 0.1);
+  const Vec3 p{ 0.3, -0.2, 1.7 };
+  Vec3 out;
+  ASSERT_TRUE(empty.map(p, 1.0, ExponentialRule::Exact, out));
+  EXPECT_EQ(distance(out, p), 0.0);
+  ASSERT_TRUE(field.map(p, 0.0, ExponentialRule::Paper, out));
+  EXPECT_EQ(distance(out, p), 0.0);
+}
+
+TEST(PointPairField, BadGeneratorsAreSkippedAndBadPointsRejected)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<PointPairGenerator> generators = {
+    { { 0, 0, 0 }, { 0, 0, 0 }, 1.0 },   // zero direction
+    { { nan, 0, 0 }, { 1, 0, 0 }, 1.0 }, // NaN location
+    { { 0, 0, 0 }, { 1, 0, 0 }, nan },   // NaN weight
+    { { 1, 0, 0 }, { 0, 1, 0 }, 0.5 },
+  };
+  const PointPairField field(generators, 1.0, 0.1);
+  EXPECT_EQ(field.size(), 1u);
+  EXPECT_EQ(field.skippedGenerators(), 3u);
+  Vec3 out{ 7, 7, 7 };
+  EXPECT_FALSE(field.map({ nan, 0, 0 }, 1.0, ExponentialRule::Exact, out));
+  EXPECT_EQ(out.x, 7.0);
+  // A point exactly on a generator stays finite (epsilon) and is the fixed point x.
+  ASSERT_TRUE(field.map({ 1, 0, 0 }, 1.0, ExponentialRule::Exact, out));
+  EXPECT_LE(distance(out, { 1, 0, 0 }), 1e-15);
+}
+} // namespace

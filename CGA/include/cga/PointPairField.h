@@ -1,0 +1,76 @@
+// A field of point-pair generators (SPEC.md section 3 item 9, eq 23; also items 8 and 12):
+// at a point p the generators sum, each weighted by its inverse squared distance, into
+//   B(p) = sum_i w_i tau(x_i, v_i) / (k |p - x_i|^2 + eps),
+// and p moves to fn(K up(p) ~K) with K = exp(-strength B(p)).
+//
+// This is the one implementation the deformation filter, the dipole field and the curvature
+// patches share; its results are tested against the full multivector product.
+#pragma once
+
+#include "cga/Compact.h"
+#include "cga/Vec3.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace cga
+{
+/// Which exponential turns B(p) into K (SPEC.md section 2).
+enum class ExponentialRule
+{
+  Exact, ///< the true exponential: a conformal map, every image point null
+  Paper  ///< eq 9-10 with s = <B B>_0, as the paper and its author's library compute it
+};
+
+/// exp(b) by the chosen rule (expExact or expPaper, overflow-safe scaling).
+Even exponential(const Bivector& b, ExponentialRule rule);
+
+/// One generator: the null point pair tau(location, direction) with a weight. The direction's
+/// length multiplies the weight.
+struct PointPairGenerator
+{
+  Vec3 location;
+  Vec3 direction;
+  double weight = 1.0;
+};
+
+class PointPairField
+{
+public:
+  /// falloff k >= 0 and epsilon > 0 (enforced by the callers; epsilon keeps B finite on a
+  /// generator's location). Generators with a zero or non-finite direction, location or weight
+  /// are skipped; skippedGenerators() counts them.
+  PointPairField(const PointPairGenerator* generators,
+                 std::size_t count,
+                 double falloff,
+                 double epsilon);
+  explicit PointPairField(const std::vector<PointPairGenerator>& generators,
+                          double falloff = 1.0,
+                          double epsilon = 1e-2)
+    : PointPairField(generators.data(), generators.size(), falloff, epsilon)
+  {
+  }
+
+  std::size_t size() const { return this->Locations.size(); }
+  std::size_t skippedGenerators() const { return this->Skipped; }
+  double falloff() const { return this->Falloff; }
+  double epsilon() const { return this->Epsilon; }
+
+  /// B(p).
+  Bivector generatorAt(Vec3 p) const;
+
+  /// K = exp(-strength B(p)).
+  Even boostAt(Vec3 p, double strength, ExponentialRule rule) const;
+
+  /// out = fn(K up(p) ~K). Returns false (out unchanged) when the image is at infinity or not
+  /// finite, or p is not finite. With no generators, or strength 0, out = p.
+  bool map(Vec3 p, double strength, ExponentialRule rule, Vec3& out) const;
+
+private:
+  std::vector<Vec3> Locations;
+  std::vector<Bivector> WeightedPairs; // w_i tau(x_i, v_i)
+  double Falloff = 1.0;
+  double Epsilon = 1e-2;
+  std::size_t Skipped = 0;
+};
+} // namespace cga

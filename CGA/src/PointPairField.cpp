@@ -1,0 +1,66 @@
+#include "cga/PointPairField.h"
+
+#include "cga/Exponential.h"
+#include "cga/PointPairs.h"
+#include "cga/PointSandwich.h"
+
+namespace cga
+{
+Even exponential(const Bivector& b, ExponentialRule rule)
+{
+  return rule == ExponentialRule::Exact ? expExact(b) : expPaper(b);
+}
+
+PointPairField::PointPairField(const PointPairGenerator* generators,
+                               std::size_t count,
+                               double falloff,
+                               double epsilon)
+  : Falloff(falloff)
+  , Epsilon(epsilon)
+{
+  this->Locations.reserve(count);
+  this->WeightedPairs.reserve(count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const PointPairGenerator& g = generators[i];
+    if (!isFinite(g.location) || !isFinite(g.direction) || !std::isfinite(g.weight) ||
+      norm2(g.direction) == 0.0)
+    {
+      ++this->Skipped;
+      continue;
+    }
+    this->Locations.push_back(g.location);
+    this->WeightedPairs.push_back(g.weight * nullPointPairCompact(g.location, g.direction));
+  }
+}
+
+Bivector PointPairField::generatorAt(Vec3 p) const
+{
+  Bivector b;
+  for (std::size_t i = 0; i < this->Locations.size(); ++i)
+  {
+    const double d2 = norm2(p - this->Locations[i]);
+    b += this->WeightedPairs[i] * (1.0 / (this->Falloff * d2 + this->Epsilon));
+  }
+  return b;
+}
+
+Even PointPairField::boostAt(Vec3 p, double strength, ExponentialRule rule) const
+{
+  return exponential(this->generatorAt(p) * (-strength), rule);
+}
+
+bool PointPairField::map(Vec3 p, double strength, ExponentialRule rule, Vec3& out) const
+{
+  if (!isFinite(p))
+  {
+    return false;
+  }
+  if (this->Locations.empty() || strength == 0.0)
+  {
+    out = p;
+    return true;
+  }
+  return sandwichPoint(this->boostAt(p, strength, rule), p, out);
+}
+} // namespace cga
