@@ -16,6 +16,7 @@
 namespace
 {
 using namespace cga;
+using cgatest::signedArea;
 using cgatest::pointsNear;
 using cgatest::relativeDifference;
 using nlohmann::json;
@@ -123,18 +124,6 @@ TEST(ReferenceVectors, OriginBoostRandomCases)
     }
   }
   EXPECT_EQ(points, 96);
-}
-
-// Shoelace area in the xy plane.
-double signedArea(const std::vector<Vec3>& points)
-{
-  double area = 0.0;
-  for (std::size_t i = 0; i < points.size(); ++i)
-  {
-    const Vec3 a = points[i], b = points[(i + 1) % points.size()];
-    area += a.x * b.y - b.x * a.y;
-  }
-  return 0.5 * area;
 }
 
 TEST(ReferenceVectors, Fig1CircleBoostedAlongItsPlane)

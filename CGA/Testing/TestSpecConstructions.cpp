@@ -12,6 +12,7 @@
 namespace
 {
 using namespace cga;
+using cgatest::signedArea;
 using cgatest::pointsNear;
 using cgatest::Random;
 using cgatest::relativeDifference;
@@ -136,18 +137,6 @@ TEST(SpecSection2, HomogeneousBoostIsATransversionAboutItsLocation)
 }
 
 // ---- section 3 ----
-
-// Signed area of a polygon in the xy plane (shoelace).
-double signedArea(const std::vector<Vec3>& points)
-{
-  double area = 0.0;
-  for (std::size_t i = 0; i < points.size(); ++i)
-  {
-    const Vec3 a = points[i], b = points[(i + 1) % points.size()];
-    area += a.x * b.y - b.x * a.y;
-  }
-  return 0.5 * area;
-}
 
 TEST(SpecSection3, Fig1UnitCircleBoostedAlongItsPlane)
 {

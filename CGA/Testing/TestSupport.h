@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <random>
 #include <string>
+#include <vector>
 
 namespace cgatest
 {
@@ -137,5 +138,17 @@ inline ::testing::AssertionResult pointsNear(Vec3 a, Vec3 b, double tolerance)
 inline std::string dataPath(const std::string& name)
 {
   return std::string(BOOSTED_CGA_TEST_DATA_DIR) + "/" + name;
+}
+
+/// Signed area of a polygon in the xy plane (shoelace): positive when counter-clockwise.
+inline double signedArea(const std::vector<Vec3>& points)
+{
+  double area = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    const Vec3 a = points[i], b = points[(i + 1) % points.size()];
+    area += a.x * b.y - b.x * a.y;
+  }
+  return 0.5 * area;
 }
 } // namespace cgatest
