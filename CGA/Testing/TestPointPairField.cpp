@@ -161,3 +161,50 @@ TEST(PointPairField, BadGeneratorsAreSkippedAndBadPointsRejected)
   EXPECT_LE(distance(out, { 1, 0, 0 }), 1e-15);
 }
 } // namespace
+
+TEST(PointPairField, BatchMapEqualsThePointwiseMapInEveryPrecision)
+{
+  Random random(75);
+  const PointPairField field(randomGenerators(random, 5, 1.0), 1.0, 0.05);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> points;
+  for (int i = 0; i < 40; ++i)
+  {
+    points.push_back(random.uniform(-2.0, 2.0));
+  }
+  points[4] = nan; // point 1 is not finite and must come through unchanged
+  const std::size_t count = points.size() / 3;
+  const std::vector<float> pointsFloat(points.begin(), points.end());
+  for (ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
+  {
+    std::vector<double> outDouble(points.size());
+    std::vector<float> outFloat(points.size());
+    std::vector<double> outFromFloat(points.size());
+    std::vector<float> outToFloat(points.size());
+    EXPECT_EQ(field.mapPoints(points.data(), outDouble.data(), count, 0.7, rule), 1u);
+    EXPECT_EQ(field.mapPoints(pointsFloat.data(), outFloat.data(), count, 0.7, rule), 1u);
+    EXPECT_EQ(field.mapPoints(pointsFloat.data(), outFromFloat.data(), count, 0.7, rule), 1u);
+    EXPECT_EQ(field.mapPoints(points.data(), outToFloat.data(), count, 0.7, rule), 1u);
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      const Vec3 p{ points[3 * i], points[3 * i + 1], points[3 * i + 2] };
+      Vec3 expected = p;
+      const bool mapped = field.map(p, 0.7, rule, expected);
+      EXPECT_EQ(mapped, i != 1);
+      for (int c = 0; c < 3; ++c)
+      {
+        const double e = (&expected.x)[c];
+        if (i == 1)
+        {
+          EXPECT_EQ(std::isnan(outDouble[3 * i + c]), std::isnan(points[3 * i + c]));
+          continue;
+        }
+        EXPECT_EQ(outDouble[3 * i + c], e);
+        EXPECT_NEAR(outToFloat[3 * i + c], e, 1e-6 * (1.0 + std::abs(e)));
+        // float input: the point itself differs by a rounding, so compare loosely
+        EXPECT_NEAR(outFloat[3 * i + c], e, 1e-4 * (1.0 + std::abs(e)));
+        EXPECT_NEAR(outFromFloat[3 * i + c], e, 1e-4 * (1.0 + std::abs(e)));
+      }
+    }
+  }
+}

@@ -63,4 +63,57 @@ bool PointPairField::map(Vec3 p, double strength, ExponentialRule rule, Vec3& ou
   }
   return sandwichPoint(this->boostAt(p, strength, rule), p, out);
 }
+
+namespace
+{
+template <typename In, typename Out>
+std::size_t mapPointsScalar(const PointPairField& field,
+                            const In* in,
+                            Out* out,
+                            std::size_t count,
+                            double strength,
+                            ExponentialRule rule)
+{
+  std::size_t unchanged = 0;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const Vec3 p{ static_cast<double>(in[3 * i]), static_cast<double>(in[3 * i + 1]),
+      static_cast<double>(in[3 * i + 2]) };
+    Vec3 image = p;
+    if (!field.map(p, strength, rule, image) || !isFinite(image))
+    {
+      image = p;
+      ++unchanged;
+    }
+    out[3 * i] = static_cast<Out>(image.x);
+    out[3 * i + 1] = static_cast<Out>(image.y);
+    out[3 * i + 2] = static_cast<Out>(image.z);
+  }
+  return unchanged;
+}
+} // namespace
+
+std::size_t PointPairField::mapPoints(
+  const double* in, double* out, std::size_t count, double strength, ExponentialRule rule) const
+{
+  return mapPointsScalar(*this, in, out, count, strength, rule);
+}
+
+std::size_t PointPairField::mapPoints(
+  const float* in, float* out, std::size_t count, double strength, ExponentialRule rule) const
+{
+  return mapPointsScalar(*this, in, out, count, strength, rule);
+}
+
+std::size_t PointPairField::mapPoints(
+  const float* in, double* out, std::size_t count, double strength, ExponentialRule rule) const
+{
+  return mapPointsScalar(*this, in, out, count, strength, rule);
+}
+
+std::size_t PointPairField::mapPoints(
+  const double* in, float* out, std::size_t count, double strength, ExponentialRule rule) const
+{
+  return mapPointsScalar(*this, in, out, count, strength, rule);
+}
 } // namespace cga

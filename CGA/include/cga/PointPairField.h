@@ -66,6 +66,19 @@ public:
   /// finite, or p is not finite. With no generators, or strength 0, out = p.
   bool map(Vec3 p, double strength, ExponentialRule rule, Vec3& out) const;
 
+  /// The batch form of map() that the VTK filters call on each chunk of points: `count` points,
+  /// xyz interleaved, from `in` to `out` (which may be the same array when the types match).
+  /// A point that is not finite, or whose image is not finite, is copied unchanged; the return
+  /// value counts them. `out` is written for every point. No heap allocation.
+  std::size_t mapPoints(
+    const double* in, double* out, std::size_t count, double strength, ExponentialRule rule) const;
+  std::size_t mapPoints(
+    const float* in, float* out, std::size_t count, double strength, ExponentialRule rule) const;
+  std::size_t mapPoints(
+    const float* in, double* out, std::size_t count, double strength, ExponentialRule rule) const;
+  std::size_t mapPoints(
+    const double* in, float* out, std::size_t count, double strength, ExponentialRule rule) const;
+
 private:
   std::vector<Vec3> Locations;
   std::vector<Bivector> WeightedPairs; // w_i tau(x_i, v_i)
