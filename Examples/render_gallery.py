@@ -13,6 +13,8 @@ FIGURES = [
     "fig1_boosted_circle",
     "fig2_boosted_surfaces",
     "fig3_horn",
+    "fig13_dipole",
+    "fig14_dipole_methods",
 ]
 
 
