@@ -271,7 +271,8 @@ int vtkDipoleFieldSource::RequestData(
   {
     if (vtkBoostedSurfacesCheckAbort(this))
     {
-      break;
+      output->Initialize(); // never hand on half-filled arrays
+      return 1;
     }
     vtkSMPTools::For(block * n / blocks, (block + 1) * n / blocks, functor);
     this->UpdateProgress(static_cast<double>(block + 1) / blocks);

@@ -360,3 +360,56 @@ TEST(DipoleFieldSource, PointSentToInfinityGivesAWarningAndZero)
   EXPECT_EQ(a->GetComponent(2, 0), 0.0);
   EXPECT_NE(a->GetComponent(1, 0), 0.0); // its neighbour moves
 }
+
+namespace
+{
+struct ProgressLog
+{
+  std::vector<double> values;
+  bool abortOnFirst = false;
+  static void Callback(vtkObject* caller, unsigned long, void* clientData, void* callData)
+  {
+    auto* log = static_cast<ProgressLog*>(clientData);
+    log->values.push_back(*static_cast<double*>(callData));
+    if (log->abortOnFirst)
+    {
+      static_cast<vtkAlgorithm*>(caller)->AbortExecuteOn();
+    }
+  }
+};
+}
+
+TEST(DipoleFieldSource, ReportsProgressAndStopsWithAnEmptyOutputWhenAborted)
+{
+  for (bool abort : { false, true })
+  {
+    vtkNew<vtkDipoleFieldSource> source;
+    source->SetDimensions(64, 64, 8); // 32768 points: 20 blocks
+    vtkNew<vtkCallbackCommand> onProgress;
+    ProgressLog log;
+    log.abortOnFirst = abort;
+    onProgress->SetCallback(ProgressLog::Callback);
+    onProgress->SetClientData(&log);
+    source->AddObserver(vtkCommand::ProgressEvent, onProgress);
+    source->Update();
+    std::vector<double> blockProgress;
+    for (double value : log.values)
+    {
+      if (value > 0.0 && value < 1.0 + 1e-12)
+      {
+        blockProgress.push_back(value);
+      }
+    }
+    if (!abort)
+    {
+      EXPECT_GE(blockProgress.size(), 20u);
+      EXPECT_DOUBLE_EQ(log.values.back(), 1.0);
+      EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 64 * 64 * 8);
+    }
+    else
+    {
+      EXPECT_LT(blockProgress.size(), 20u);
+      EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
+    }
+  }
+}
