@@ -86,14 +86,7 @@ if at_zero[1] != 0.0:
 source.NumberOfTimeSteps = 0
 source.UpdatePipeline()
 
-view = simple.CreateRenderView()
-view.ViewSize = [400, 400]
-view.OrientationAxesVisibility = 0
-view.Background = [1, 1, 1]
-try:
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
+view = common.white_render_view([400, 400])
 display = simple.Show(source, view)
 display.Representation = "Surface"
 simple.ColorBy(display, ("POINTS", "DisplacementDifferenceMagnitude"))
@@ -110,11 +103,8 @@ view.CameraViewUp = [0, 1, 0]
 view.ResetCamera()
 simple.Render(view)
 
-if arguments.baseline:
-    image_path = os.path.join(arguments.output_dir, os.path.basename(arguments.baseline))
-    simple.SaveScreenshot(image_path, view, ImageResolution=[400, 400])
-    if not common.compare_png(image_path, arguments.baseline, arguments.threshold):
-        failures.append("image differs from the baseline")
+if arguments.baseline and not common.screenshot_matches(view, arguments, [400, 400]):
+    failures.append("image differs from the baseline")
 
 for failure in failures:
     print("FAILED:", failure)
