@@ -152,6 +152,13 @@ std::string vtkDipoleFieldSource::Validate() const
   {
     return "Falloff and Epsilon must be finite";
   }
+  for (double t : this->GeneratorsTranslation)
+  {
+    if (!std::isfinite(t))
+    {
+      return "GeneratorsTranslation must be finite";
+    }
+  }
   for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
   {
     for (int c = 0; c < ValuesPerGenerator; ++c)
@@ -245,7 +252,8 @@ int vtkDipoleFieldSource::RequestData(
   for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
   {
     const double* g = &this->Generators[ValuesPerGenerator * i];
-    generators.push_back({ { g[0], g[1], g[2] }, { g[3], g[4], g[5] }, g[6] });
+    const double* t = this->GeneratorsTranslation;
+    generators.push_back({ { g[0] + t[0], g[1] + t[1], g[2] + t[2] }, { g[3], g[4], g[5] }, g[6] });
   }
   const cga::DipoleField field(generators, this->Falloff, this->Epsilon,
     this->ExponentialRule == PAPER ? cga::ExponentialRule::Paper : cga::ExponentialRule::Exact);
@@ -309,6 +317,8 @@ void vtkDipoleFieldSource::PrintSelf(ostream& os, vtkIndent indent)
     os << indent.GetNextIndent() << "location (" << g[0] << ", " << g[1] << ", " << g[2]
        << ") direction (" << g[3] << ", " << g[4] << ", " << g[5] << ") weight " << g[6] << "\n";
   }
+  os << indent << "GeneratorsTranslation: (" << this->GeneratorsTranslation[0] << ", "
+     << this->GeneratorsTranslation[1] << ", " << this->GeneratorsTranslation[2] << ")\n";
   os << indent << "Falloff: " << this->Falloff << "\n";
   os << indent << "Epsilon: " << this->Epsilon << "\n";
   os << indent << "ExponentialRule: " << (this->ExponentialRule == PAPER ? "PAPER" : "EXACT")

@@ -30,7 +30,8 @@
  * checked after each block (an aborted update leaves the output empty).
  *
  * Bad input (a dimension < 1, a zero, negative or non-finite spacing, a non-finite origin,
- * Falloff or Epsilon, a non-finite generator value) gives an error and an empty output. A
+ * GeneratorsTranslation, Falloff or Epsilon, a non-finite generator value) gives an error and an
+ * empty output. A
  * generator with a zero direction or weight contributes nothing. A generator on a grid point is
  * finite there (Epsilon > 0): its location is the boost's fixed point. Where a boost sends a grid
  * point to infinity the failed displacement is zero and a warning counts those points.
@@ -78,6 +79,13 @@ public:
   ///@}
 
   ///@{
+  /// Added to every generator's location: moves the whole configuration (ParaView drags it with a
+  /// handle widget). Default (0, 0, 0).
+  vtkSetVector3Macro(GeneratorsTranslation, double);
+  vtkGetVector3Macro(GeneratorsTranslation, double);
+  ///@}
+
+  ///@{
   /// Falloff k >= 0 and Epsilon > 0 of d^2 = k |p - x|^2 + Epsilon. Defaults 1 and 0.1.
   vtkSetClampMacro(Falloff, double, 0.0, 1e12);
   vtkGetMacro(Falloff, double);
@@ -116,6 +124,7 @@ protected:
   double Spacing[3] = { 0.2, 0.2, 1.0 };
   int Dimensions[3] = { 21, 21, 1 };
   std::vector<double> Generators; // 7 values per generator
+  double GeneratorsTranslation[3] = { 0.0, 0.0, 0.0 };
   double Falloff = 1.0;
   double Epsilon = 0.1;
   int ExponentialRule = EXACT;

@@ -227,6 +227,23 @@ TEST(DipoleField, PotentialLevelSetsCrossOneGeneratorsFieldAtRightAngles)
   }
 }
 
+TEST(DipoleField, FarAwayTheDisplacementLengthTendsToWeightOverFalloff)
+{
+  // u = -w v / (k r^2 + eps): u.r -> 0 and |u| r -> 0, so v -> u r^2 - 2 (u.r) r, of length
+  // w |v| / k whatever the direction of r.
+  Random random(85);
+  const PointPairGenerator g{ { 0.2, 0.1, -0.3 }, { 0.0, 1.5, 0.0 }, 0.8 };
+  const double k = 2.0;
+  const DipoleField field({ g }, k, 0.1);
+  for (int n = 0; n < 20; ++n)
+  {
+    const Vec3 p = g.location + 1e4 * random.unit();
+    Vec3 v;
+    ASSERT_TRUE(field.displacementSummedGenerators(p, 1.0, v));
+    EXPECT_NEAR(norm(v), g.weight * norm(g.direction) / k, 1e-3);
+  }
+}
+
 TEST(DipoleField, BatchSamplingEqualsPointwiseSampling)
 {
   Random random(84);

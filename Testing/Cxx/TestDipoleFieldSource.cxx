@@ -314,6 +314,7 @@ TEST(DipoleFieldSource, BadInputGivesAnErrorAndAnEmptyOutput)
     NaNOrigin,
     NaNGenerator,
     NaNEpsilon,
+    NaNTranslation,
     Cases
   };
   for (int which = 0; which < Cases; ++which)
@@ -331,6 +332,7 @@ TEST(DipoleFieldSource, BadInputGivesAnErrorAndAnEmptyOutput)
       case NaNOrigin: source->SetOrigin(0, nan, 0); break;
       case NaNGenerator: source->AddGenerator(1, 1, 0, nan, 0, 0, 1); break;
       case NaNEpsilon: source->SetEpsilon(nan); break;
+      case NaNTranslation: source->SetGeneratorsTranslation(0, 0, nan); break;
     }
     source->Update();
     EXPECT_EQ(counter.errors, 1) << "case " << which;
@@ -410,6 +412,32 @@ TEST(DipoleFieldSource, ReportsProgressAndStopsWithAnEmptyOutputWhenAborted)
     {
       EXPECT_LT(blockProgress.size(), 20u);
       EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
+    }
+  }
+}
+
+TEST(DipoleFieldSource, GeneratorsTranslationMovesEveryGenerator)
+{
+  vtkNew<vtkDipoleFieldSource> moved;
+  addFig14Generators(moved);
+  moved->SetGeneratorsTranslation(0.3, -0.4, 0.1);
+  moved->Update();
+  vtkNew<vtkDipoleFieldSource> placed;
+  placed->RemoveAllGenerators();
+  placed->AddGenerator(-0.7, -0.4, 0.1, 0, 1, 0, 0.35);
+  placed->AddGenerator(1.3, -0.4, 0.1, 1, 0, 0, 0.35);
+  placed->Update();
+  for (const char* name : ArrayNames)
+  {
+    vtkDataArray* a = moved->GetOutput()->GetPointData()->GetArray(name);
+    vtkDataArray* b = placed->GetOutput()->GetPointData()->GetArray(name);
+    ASSERT_EQ(a->GetNumberOfTuples(), b->GetNumberOfTuples());
+    for (vtkIdType id = 0; id < a->GetNumberOfTuples(); ++id)
+    {
+      for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+      {
+        EXPECT_NEAR(a->GetComponent(id, c), b->GetComponent(id, c), 1e-13) << name;
+      }
     }
   }
 }

@@ -17,6 +17,7 @@ failures = []
 source = DipoleField()  # noqa: F821
 defaults = {
     "Generators": [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.5],
+    "GeneratorsTranslation": [0.0, 0.0, 0.0],
     "Origin": [-2.0, -2.0, 0.0],
     "Spacing": [0.2, 0.2, 1.0],
     "Dimensions": [21, 21, 1],
