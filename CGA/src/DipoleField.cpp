@@ -1,18 +1,10 @@
 #include "cga/DipoleField.h"
 
 #include <cmath>
+#include <utility>
 
 namespace cga
 {
-namespace
-{
-bool usable(const PointPairGenerator& g)
-{
-  return isFinite(g.location) && isFinite(g.direction) && std::isfinite(g.weight) &&
-    norm2(g.direction) != 0.0;
-}
-}
-
 DipoleField::DipoleField(const PointPairGenerator* generators,
                          std::size_t count,
                          double falloff,
@@ -24,9 +16,10 @@ DipoleField::DipoleField(const PointPairGenerator* generators,
 {
   for (std::size_t i = 0; i < count; ++i)
   {
-    if (usable(generators[i])) // the same test PointPairField skips by
+    PointPairField single(&generators[i], 1, falloff, epsilon);
+    if (single.size() == 1) // kept by the same rule as in Summed
     {
-      this->Singles.emplace_back(&generators[i], 1, falloff, epsilon);
+      this->Singles.push_back(std::move(single));
       this->Generators.push_back(generators[i]);
     }
   }
