@@ -32,8 +32,8 @@
  * Bad input (a dimension < 1, a zero, negative or non-finite spacing, a non-finite origin,
  * GeneratorsTranslation, Falloff or Epsilon, a non-finite generator value) gives an error and an
  * empty output. A
- * generator with a zero direction or weight contributes nothing. A generator on a grid point is
- * finite there (Epsilon > 0): its location is the boost's fixed point. Where a boost sends a grid
+ * generator with a zero direction or weight contributes nothing. The field stays finite at a
+ * generator on a grid point (Epsilon > 0); a single generator leaves its location fixed. Where a boost sends a grid
  * point to infinity the failed displacement is zero and a warning counts those points.
  */
 #ifndef vtkDipoleFieldSource_h
