@@ -31,10 +31,10 @@
  *
  * Bad input (a dimension < 1, a zero, negative or non-finite spacing, a non-finite origin,
  * GeneratorsTranslation, Falloff or Epsilon, a non-finite generator value) gives an error and an
- * empty output. A
- * generator with a zero direction or weight contributes nothing. The field stays finite at a
- * generator on a grid point (Epsilon > 0); a single generator leaves its location fixed. Where a boost sends a grid
- * point to infinity the failed displacement is zero and a warning counts those points.
+ * empty output. A generator with a zero direction or weight contributes nothing. The field stays
+ * finite at a generator on a grid point (Epsilon > 0); a single generator leaves its location
+ * fixed. Where a boost sends a grid point to infinity the failed displacement is zero and a
+ * warning counts those points.
  */
 #ifndef vtkDipoleFieldSource_h
 #define vtkDipoleFieldSource_h
