@@ -10,7 +10,7 @@ vtkDipoleFieldSource computes both in one pass ("DisplacementSummedGenerators" a
 "DisplacementSummedDisplacements"). The arrows point along the displacements and are coloured by
 their length on one common scale; the grey lines are contours of "DipolePotential", the sum of the
 two dipole potentials, the same in both panels. The methods agree to first order in the weights
-and visibly differ where both generators act, above all between them.
+and visibly differ where both generators act.
 
     python3 fig14_dipole_methods.py --output fig14.png --size 1400 700
 """
