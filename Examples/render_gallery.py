@@ -14,6 +14,8 @@ FIGURES = [
     "fig2_boosted_surfaces",
     "fig3_horn",
     "fig11_deformation",
+    "fig13_dipole",
+    "fig14_dipole_methods",
 ]
 
 

@@ -51,3 +51,25 @@ def finish(ok, message):
     if not ok:
         raise RuntimeError("FAILED: " + message)
     print("PASSED: " + message)
+
+
+def white_render_view(size):
+    """A render view of `size` pixels with a white background and no orientation axes."""
+    from paraview import simple
+    view = simple.CreateRenderView()
+    view.ViewSize = list(size)
+    view.OrientationAxesVisibility = 0
+    view.Background = [1, 1, 1]
+    try:
+        view.UseColorPaletteForBackground = 0
+    except AttributeError:
+        pass
+    return view
+
+
+def screenshot_matches(view, arguments, size):
+    """Save the view into --output-dir under the baseline's name and compare it with --baseline."""
+    from paraview import simple
+    image = os.path.join(arguments.output_dir, os.path.basename(arguments.baseline))
+    simple.SaveScreenshot(image, view, ImageResolution=list(size))
+    return compare_png(image, arguments.baseline, arguments.threshold)

@@ -43,14 +43,7 @@ for array in ("lambda", "theta", "Normals", "TextureCoordinates"):
     if info.GetPointDataInformation().GetArrayInformation(array) is None:
         failures.append("point array %s is missing" % array)
 
-view = simple.CreateRenderView()
-view.ViewSize = [400, 400]
-view.OrientationAxesVisibility = 0
-view.Background = [1, 1, 1]
-try:
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
+view = common.white_render_view([400, 400])
 display = simple.Show(source, view)
 simple.ColorBy(display, ("POINTS", "lambda"))
 view.CameraPosition = [3.0, 2.0, 2.5]
@@ -59,11 +52,8 @@ view.CameraViewUp = [0.0, 0.0, 1.0]
 view.ResetCamera()
 simple.Render(view)
 
-if arguments.baseline:
-    image = os.path.join(arguments.output_dir, os.path.basename(arguments.baseline))
-    simple.SaveScreenshot(image, view, ImageResolution=[400, 400])
-    if not common.compare_png(image, arguments.baseline, arguments.threshold):
-        failures.append("image differs from the baseline")
+if arguments.baseline and not common.screenshot_matches(view, arguments, [400, 400]):
+    failures.append("image differs from the baseline")
 
 for failure in failures:
     print("FAILED:", failure)

@@ -1,0 +1,89 @@
+// The dipole displacement field of section 7 (SPEC.md section 3 item 12, eq 27-28, Fig 13-14):
+// at a point p the displacement v = p' - p of the boost built from point-pair generators, computed
+// two ways that agree for one generator and differ for several:
+//   (a) summed generators:    p' = fn(K up(p) ~K),  K = exp(-s sum_i w_i tau_i / d_i^2)  (the paper's)
+//   (b) summed displacements: v = sum_i (fn(K_i up(p) ~K_i) - p),  K_i = exp(-s w_i tau_i / d_i^2)
+// with tau_i = tau(x_i, v_i), d_i^2 = k |p - x_i|^2 + eps, and s a weight scale (1 normally; the
+// VTK source's time steps run it from 0 to 1).
+//
+// Method (a) is PointPairField's map; method (b) is a sum of one-generator PointPairFields. The
+// contour scalar is the superposed dipole potential (see potential()).
+#pragma once
+
+#include "cga/PointPairField.h"
+#include "cga/Vec3.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace cga
+{
+/// The values of the field at one point.
+struct DipoleSample
+{
+  Vec3 summedGenerators;    ///< displacement by method (a)
+  Vec3 summedDisplacements; ///< displacement by method (b)
+  double potential = 0.0;   ///< the contour scalar, potential()
+};
+
+class DipoleField
+{
+public:
+  /// Generators as PointPairField takes them (falloff k >= 0, epsilon > 0 enforced by callers;
+  /// generators with a zero or non-finite direction, location or weight are skipped). `rule` is
+  /// the exponential of both methods; method (b) exponentiates blades, where both rules are exact.
+  DipoleField(const PointPairGenerator* generators,
+              std::size_t count,
+              double falloff,
+              double epsilon,
+              ExponentialRule rule = ExponentialRule::Exact);
+  explicit DipoleField(const std::vector<PointPairGenerator>& generators,
+                       double falloff = 1.0,
+                       double epsilon = 1e-2,
+                       ExponentialRule rule = ExponentialRule::Exact)
+    : DipoleField(generators.data(), generators.size(), falloff, epsilon, rule)
+  {
+  }
+
+  std::size_t size() const { return this->Singles.size(); }
+  std::size_t skippedGenerators() const { return this->Summed.skippedGenerators(); }
+
+  /// Method (a). Returns false (out = zero vector) where p is not finite or its image is at
+  /// infinity or not finite.
+  bool displacementSummedGenerators(Vec3 p, double weightScale, Vec3& out) const;
+
+  /// Method (b). Returns false where p is not finite or one generator's image of it is at
+  /// infinity; that generator then contributes nothing (the others still do).
+  bool displacementSummedDisplacements(Vec3 p, double weightScale, Vec3& out) const;
+
+  /// The superposed dipole potential  phi(p) = s sum_i w_i (v_i . r_i) / (|r_i|^2 + eps),
+  /// r_i = p - x_i. For one generator and eps -> 0 the first-order displacement of both methods
+  /// is -s w |r|^4 / (k |r|^2 + eps) grad((v . r) / |r|^2): antiparallel to grad phi, so the
+  /// level sets of phi cross the field at right angles (the equipotential lines of Fig 14).
+  /// For several generators it is the sum of their potentials. Zero for a non-finite p.
+  double potential(Vec3 p, double weightScale) const;
+
+  /// Both methods and the potential at p. Returns false if either method failed (see above).
+  bool sample(Vec3 p, double weightScale, DipoleSample& out) const;
+
+  /// The batch form for the VTK source: `count` points, xyz interleaved; writes the two
+  /// displacements (xyz interleaved) and the potential for every point, equal to sample()'s.
+  /// Returns the number of failed maps (a point counts once per method (a) failure and once per
+  /// generator of method (b) that failed on it); failed contributions are zero. `scratch` must hold
+  /// 3 * count doubles. No other allocation.
+  std::size_t sampleMany(const double* points,
+                         std::size_t count,
+                         double weightScale,
+                         double* summedGenerators,
+                         double* summedDisplacements,
+                         double* potentials,
+                         double* scratch) const;
+
+private:
+  PointPairField Summed;              // all generators: method (a)
+  std::vector<PointPairField> Singles; // one field per generator: method (b)
+  std::vector<PointPairGenerator> Generators; // the kept ones, for the potential
+  double Epsilon;
+  ExponentialRule Rule;
+};
+} // namespace cga

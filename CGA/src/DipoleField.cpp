@@ -1,0 +1,127 @@
+#include "cga/DipoleField.h"
+
+#include <cmath>
+#include <utility>
+
+namespace cga
+{
+DipoleField::DipoleField(const PointPairGenerator* generators,
+                         std::size_t count,
+                         double falloff,
+                         double epsilon,
+                         ExponentialRule rule)
+  : Summed(generators, count, falloff, epsilon)
+  , Epsilon(epsilon)
+  , Rule(rule)
+{
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    PointPairField single(&generators[i], 1, falloff, epsilon);
+    if (single.size() == 1) // kept by the same rule as in Summed
+    {
+      this->Singles.push_back(std::move(single));
+      this->Generators.push_back(generators[i]);
+    }
+  }
+}
+
+bool DipoleField::displacementSummedGenerators(Vec3 p, double weightScale, Vec3& out) const
+{
+  Vec3 image;
+  if (!this->Summed.map(p, weightScale, this->Rule, image) || !isFinite(image))
+  {
+    out = Vec3{};
+    return false;
+  }
+  out = image - p;
+  return true;
+}
+
+bool DipoleField::displacementSummedDisplacements(Vec3 p, double weightScale, Vec3& out) const
+{
+  out = Vec3{};
+  if (!isFinite(p))
+  {
+    return false;
+  }
+  bool allMapped = true;
+  for (const PointPairField& single : this->Singles)
+  {
+    Vec3 image;
+    // A single generator is a blade (tau^2 = 0): both rules are exact; using method (a)'s rule
+    // makes the two methods the same computation for one generator.
+    if (single.map(p, weightScale, this->Rule, image) && isFinite(image))
+    {
+      out = out + (image - p);
+    }
+    else
+    {
+      allMapped = false;
+    }
+  }
+  return allMapped;
+}
+
+double DipoleField::potential(Vec3 p, double weightScale) const
+{
+  if (!isFinite(p))
+  {
+    return 0.0;
+  }
+  double phi = 0.0;
+  for (const PointPairGenerator& g : this->Generators)
+  {
+    const Vec3 r = p - g.location;
+    phi += g.weight * dot(g.direction, r) / (norm2(r) + this->Epsilon);
+  }
+  return weightScale * phi;
+}
+
+bool DipoleField::sample(Vec3 p, double weightScale, DipoleSample& out) const
+{
+  const bool a = this->displacementSummedGenerators(p, weightScale, out.summedGenerators);
+  const bool b = this->displacementSummedDisplacements(p, weightScale, out.summedDisplacements);
+  out.potential = this->potential(p, weightScale);
+  return a && b;
+}
+
+std::size_t DipoleField::sampleMany(const double* points,
+                                    std::size_t count,
+                                    double weightScale,
+                                    double* summedGenerators,
+                                    double* summedDisplacements,
+                                    double* potentials,
+                                    double* scratch) const
+{
+  // mapPoints copies a point it cannot map, so a failed map adds a zero displacement, as in the
+  // pointwise methods.
+  std::size_t failures = this->Summed.mapPoints(points, scratch, count, weightScale, this->Rule);
+  for (std::size_t i = 0; i < 3 * count; ++i)
+  {
+    summedGenerators[i] = scratch[i] - points[i];
+    summedDisplacements[i] = 0.0;
+  }
+  for (const PointPairField& single : this->Singles)
+  {
+    failures += single.mapPoints(points, scratch, count, weightScale, this->Rule);
+    for (std::size_t i = 0; i < 3 * count; ++i)
+    {
+      summedDisplacements[i] += scratch[i] - points[i];
+    }
+  }
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const Vec3 p{ points[3 * i], points[3 * i + 1], points[3 * i + 2] };
+    potentials[i] = this->potential(p, weightScale);
+    if (!isFinite(p)) // NaN - NaN: make the documented zero
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        summedGenerators[3 * i + c] = 0.0;
+        summedDisplacements[3 * i + c] = 0.0;
+      }
+    }
+  }
+  return failures;
+}
+} // namespace cga

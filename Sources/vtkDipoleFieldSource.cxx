@@ -1,0 +1,328 @@
+#include "vtkDipoleFieldSource.h"
+
+#include "vtkBoostedSurfacesAbort.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include "cga/DipoleField.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+vtkStandardNewMacro(vtkDipoleFieldSource);
+
+namespace
+{
+constexpr int ValuesPerGenerator = 7;
+
+vtkSmartPointer<vtkDataArray> newArray(int precision, const char* name, int components, vtkIdType n)
+{
+  vtkSmartPointer<vtkDataArray> array;
+  if (precision == vtkAlgorithm::SINGLE_PRECISION)
+  {
+    array = vtkSmartPointer<vtkFloatArray>::New();
+  }
+  else
+  {
+    array = vtkSmartPointer<vtkDoubleArray>::New();
+  }
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(n);
+  return array;
+}
+
+// The arrays of one extent, filled by chunks of points from several threads.
+struct FieldFunctor
+{
+  const cga::DipoleField* Field;
+  double WeightScale;
+  int Extent[6];
+  double Origin[3];
+  double Spacing[3];
+  vtkDataArray* SummedGenerators;
+  vtkDataArray* SummedDisplacements;
+  vtkDataArray* Difference;
+  vtkDataArray* DifferenceMagnitude;
+  vtkDataArray* Potential;
+  std::atomic<std::size_t>* Failures;
+
+  void operator()(vtkIdType begin, vtkIdType end)
+  {
+    const std::size_t n = static_cast<std::size_t>(end - begin);
+    std::vector<double> points(3 * n), a(3 * n), b(3 * n), phi(n), scratch(3 * n);
+    const vtkIdType nx = this->Extent[1] - this->Extent[0] + 1;
+    const vtkIdType ny = this->Extent[3] - this->Extent[2] + 1;
+    for (vtkIdType id = begin; id < end; ++id)
+    {
+      // The point's structured index (i, j, k) in the whole grid, hence its coordinates.
+      const vtkIdType index[3] = { this->Extent[0] + id % nx, this->Extent[2] + (id / nx) % ny,
+        this->Extent[4] + id / (nx * ny) };
+      for (int c = 0; c < 3; ++c)
+      {
+        points[3 * (id - begin) + c] = this->Origin[c] + index[c] * this->Spacing[c];
+      }
+    }
+    *this->Failures +=
+      this->Field->sampleMany(points.data(), n, this->WeightScale, a.data(), b.data(), phi.data(), scratch.data());
+    for (vtkIdType id = begin; id < end; ++id)
+    {
+      const std::size_t i = static_cast<std::size_t>(id - begin);
+      const double difference[3] = { a[3 * i] - b[3 * i], a[3 * i + 1] - b[3 * i + 1],
+        a[3 * i + 2] - b[3 * i + 2] };
+      this->SummedGenerators->SetTuple(id, &a[3 * i]);
+      this->SummedDisplacements->SetTuple(id, &b[3 * i]);
+      this->Difference->SetTuple(id, difference);
+      this->DifferenceMagnitude->SetTuple1(id,
+        std::sqrt(difference[0] * difference[0] + difference[1] * difference[1] +
+          difference[2] * difference[2]));
+      this->Potential->SetTuple1(id, phi[i]);
+    }
+  }
+};
+} // namespace
+
+vtkDipoleFieldSource::vtkDipoleFieldSource()
+{
+  this->SetNumberOfInputPorts(0);
+  this->AddGenerator(0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.5);
+}
+
+void vtkDipoleFieldSource::AddGenerator(
+  double x, double y, double z, double dx, double dy, double dz, double weight)
+{
+  this->Generators.insert(this->Generators.end(), { x, y, z, dx, dy, dz, weight });
+  this->Modified();
+}
+
+void vtkDipoleFieldSource::RemoveAllGenerators()
+{
+  if (!this->Generators.empty())
+  {
+    this->Generators.clear();
+    this->Modified();
+  }
+}
+
+int vtkDipoleFieldSource::GetNumberOfGenerators() const
+{
+  return static_cast<int>(this->Generators.size() / ValuesPerGenerator);
+}
+
+bool vtkDipoleFieldSource::GetGenerator(int i, double generator[7]) const
+{
+  if (i < 0 || i >= this->GetNumberOfGenerators())
+  {
+    return false;
+  }
+  std::copy_n(this->Generators.begin() + ValuesPerGenerator * i, ValuesPerGenerator, generator);
+  return true;
+}
+
+std::string vtkDipoleFieldSource::Validate() const
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    if (this->Dimensions[c] < 1)
+    {
+      return "Dimensions must be at least 1 in every direction";
+    }
+    if (!std::isfinite(this->Spacing[c]) || !(this->Spacing[c] > 0.0))
+    {
+      return "Spacing must be positive and finite in every direction";
+    }
+    if (!std::isfinite(this->Origin[c]))
+    {
+      return "Origin must be finite";
+    }
+  }
+  if (!std::isfinite(this->Falloff) || !std::isfinite(this->Epsilon))
+  {
+    return "Falloff and Epsilon must be finite";
+  }
+  for (double t : this->GeneratorsTranslation)
+  {
+    if (!std::isfinite(t))
+    {
+      return "GeneratorsTranslation must be finite";
+    }
+  }
+  for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
+  {
+    for (int c = 0; c < ValuesPerGenerator; ++c)
+    {
+      if (!std::isfinite(this->Generators[ValuesPerGenerator * i + c]))
+      {
+        std::ostringstream message;
+        message << "generator " << i << " has a value that is not finite";
+        return message.str();
+      }
+    }
+  }
+  return {};
+}
+
+int vtkDipoleFieldSource::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  int wholeExtent[6] = { 0, -1, 0, -1, 0, -1 }; // empty when the grid is invalid
+  if (this->Validate().empty())
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      wholeExtent[2 * c + 1] = this->Dimensions[c] - 1;
+    }
+  }
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent, 6);
+  outInfo->Set(vtkDataObject::ORIGIN(), this->Origin, 3);
+  outInfo->Set(vtkDataObject::SPACING(), this->Spacing, 3);
+  outInfo->Set(CAN_PRODUCE_SUB_EXTENT(), 1);
+  vtkDataObject::SetPointDataActiveScalarInfo(
+    outInfo, this->OutputPrecision == SINGLE_PRECISION ? VTK_FLOAT : VTK_DOUBLE, 1);
+
+  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  if (this->NumberOfTimeSteps > 0)
+  {
+    std::vector<double> times(this->NumberOfTimeSteps, 1.0);
+    for (int k = 0; k + 1 < this->NumberOfTimeSteps; ++k)
+    {
+      times[k] = static_cast<double>(k) / (this->NumberOfTimeSteps - 1);
+    }
+    const double range[2] = { times.front(), times.back() };
+    outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(),
+      static_cast<int>(times.size()));
+    outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  }
+  return 1;
+}
+
+int vtkDipoleFieldSource::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkImageData* output = vtkImageData::GetData(outInfo);
+  output->Initialize();
+
+  const std::string problem = this->Validate();
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< problem);
+    return 1; // the output stays empty
+  }
+
+  // Only the requested extent, clipped to the whole grid.
+  int extent[6];
+  outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+  for (int c = 0; c < 3; ++c)
+  {
+    extent[2 * c] = std::max(extent[2 * c], 0);
+    extent[2 * c + 1] = std::min(extent[2 * c + 1], this->Dimensions[c] - 1);
+    if (extent[2 * c] > extent[2 * c + 1])
+    {
+      return 1; // an empty request
+    }
+  }
+  output->SetExtent(extent);
+  output->SetOrigin(this->Origin);
+  output->SetSpacing(this->Spacing);
+
+  double weightScale = 1.0;
+  if (this->NumberOfTimeSteps > 0 && outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+  {
+    const double t = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+    weightScale = std::isfinite(t) ? std::min(1.0, std::max(0.0, t)) : 1.0;
+    output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), t);
+  }
+
+  std::vector<cga::PointPairGenerator> generators;
+  for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
+  {
+    const double* g = &this->Generators[ValuesPerGenerator * i];
+    const double* t = this->GeneratorsTranslation;
+    generators.push_back({ { g[0] + t[0], g[1] + t[1], g[2] + t[2] }, { g[3], g[4], g[5] }, g[6] });
+  }
+  const cga::DipoleField field(generators, this->Falloff, this->Epsilon,
+    this->ExponentialRule == PAPER ? cga::ExponentialRule::Paper : cga::ExponentialRule::Exact);
+
+  const vtkIdType n = output->GetNumberOfPoints();
+  const int precision = this->OutputPrecision;
+  auto summedGenerators = newArray(precision, "DisplacementSummedGenerators", 3, n);
+  auto summedDisplacements = newArray(precision, "DisplacementSummedDisplacements", 3, n);
+  auto difference = newArray(precision, "DisplacementDifference", 3, n);
+  auto differenceMagnitude = newArray(precision, "DisplacementDifferenceMagnitude", 1, n);
+  auto potential = newArray(precision, "DipolePotential", 1, n);
+
+  std::atomic<std::size_t> failures{ 0 };
+  FieldFunctor functor{ &field, weightScale, {}, {}, {}, summedGenerators, summedDisplacements,
+    difference, differenceMagnitude, potential, &failures };
+  std::copy_n(extent, 6, functor.Extent);
+  std::copy_n(this->Origin, 3, functor.Origin);
+  std::copy_n(this->Spacing, 3, functor.Spacing);
+
+  // Blocks of points run in parallel; between blocks: progress and abort (from this thread only).
+  const vtkIdType blocks = std::min<vtkIdType>(20, std::max<vtkIdType>(1, n / 1024));
+  for (vtkIdType block = 0; block < blocks; ++block)
+  {
+    if (vtkBoostedSurfacesCheckAbort(this))
+    {
+      output->Initialize(); // never hand on half-filled arrays
+      return 1;
+    }
+    vtkSMPTools::For(block * n / blocks, (block + 1) * n / blocks, functor);
+    this->UpdateProgress(static_cast<double>(block + 1) / blocks);
+  }
+  if (failures > 0)
+  {
+    vtkWarningMacro(<< failures
+                    << " boost(s) sent a grid point to infinity; their displacements are zero");
+  }
+
+  vtkPointData* pointData = output->GetPointData();
+  pointData->AddArray(summedGenerators);
+  pointData->AddArray(summedDisplacements);
+  pointData->AddArray(difference);
+  pointData->AddArray(differenceMagnitude);
+  pointData->SetScalars(potential);
+  pointData->SetVectors(summedGenerators);
+  return 1;
+}
+
+void vtkDipoleFieldSource::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Origin: (" << this->Origin[0] << ", " << this->Origin[1] << ", "
+     << this->Origin[2] << ")\n";
+  os << indent << "Spacing: (" << this->Spacing[0] << ", " << this->Spacing[1] << ", "
+     << this->Spacing[2] << ")\n";
+  os << indent << "Dimensions: (" << this->Dimensions[0] << ", " << this->Dimensions[1] << ", "
+     << this->Dimensions[2] << ")\n";
+  os << indent << "Generators: " << this->GetNumberOfGenerators() << "\n";
+  for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
+  {
+    const double* g = &this->Generators[ValuesPerGenerator * i];
+    os << indent.GetNextIndent() << "location (" << g[0] << ", " << g[1] << ", " << g[2]
+       << ") direction (" << g[3] << ", " << g[4] << ", " << g[5] << ") weight " << g[6] << "\n";
+  }
+  os << indent << "GeneratorsTranslation: (" << this->GeneratorsTranslation[0] << ", "
+     << this->GeneratorsTranslation[1] << ", " << this->GeneratorsTranslation[2] << ")\n";
+  os << indent << "Falloff: " << this->Falloff << "\n";
+  os << indent << "Epsilon: " << this->Epsilon << "\n";
+  os << indent << "ExponentialRule: " << (this->ExponentialRule == PAPER ? "PAPER" : "EXACT")
+     << "\n";
+  os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
+  os << indent << "OutputPrecision: " << this->OutputPrecision << "\n";
+}

@@ -1,0 +1,142 @@
+/**
+ * @class   vtkDipoleFieldSource
+ * @brief   the dipole displacement field of Colapinto 2014, section 7 (eq 27-28, Fig 13-14)
+ *
+ * On a regular grid (Origin, Spacing, Dimensions; by default a 21 x 21 slice of [-2, 2]^2 in the
+ * xy plane, like Fig 13-14) every point p gets the displacement v = p' - p of the boost generated
+ * by a list of point-pair generators (location x_i, direction v_i, weight w_i), with
+ * tau_i = tau(x_i, v_i) and d_i^2 = Falloff |p - x_i|^2 + Epsilon, computed two ways:
+ *
+ * - DisplacementSummedGenerators (method a, the paper's): K = exp(-sum_i w_i tau_i / d_i^2),
+ *   p' = fn(K up(p) ~K). ExponentialRule picks the exact exponential (default) or the paper's
+ *   eq 9-10.
+ * - DisplacementSummedDisplacements (method b, vector field topology's):
+ *   v = sum_i (fn(K_i up(p) ~K_i) - p), K_i = exp(-w_i tau_i / d_i^2).
+ *
+ * For one generator they are equal; for several they differ (Fig 14). Further point arrays:
+ * DisplacementDifference (a - b), DisplacementDifferenceMagnitude, and DipolePotential, the
+ * contour scalar phi = sum_i w_i (v_i . (p - x_i)) / (|p - x_i|^2 + Epsilon): the superposed
+ * dipole potentials, whose level sets cross a single generator's field at right angles (the
+ * "equipotential lines" of Fig 14). The active vectors are DisplacementSummedGenerators, the
+ * active scalars DipolePotential.
+ *
+ * Time: with NumberOfTimeSteps N >= 1 the source reports N time steps t_k = k / (N - 1) in [0, 1]
+ * (t = 1 for N = 1) and scales every weight by the requested t, so the field grows from zero in
+ * an animation. With N = 0 (default) there are no time steps and the weights are used as given.
+ *
+ * It is an image source in VTK's manner: WHOLE_EXTENT, CAN_PRODUCE_SUB_EXTENT, and only the
+ * requested update extent is computed, so it streams and runs distributed. The points are
+ * computed in parallel (vtkSMPTools) in up to 20 blocks; progress is reported and an abort
+ * checked after each block (an aborted update leaves the output empty).
+ *
+ * Bad input (a dimension < 1, a zero, negative or non-finite spacing, a non-finite origin,
+ * GeneratorsTranslation, Falloff or Epsilon, a non-finite generator value) gives an error and an
+ * empty output. A generator with a zero direction or weight contributes nothing. The field stays
+ * finite at a generator on a grid point (Epsilon > 0); a single generator leaves its location
+ * fixed. Where a boost sends a grid point to infinity the failed displacement is zero and a
+ * warning counts those points.
+ */
+#ifndef vtkDipoleFieldSource_h
+#define vtkDipoleFieldSource_h
+
+#include "BoostedSurfacesSourcesModule.h" // for export macro
+#include "vtkImageAlgorithm.h"
+
+#include <string> // for Validate
+#include <vector> // for the generators
+
+class BOOSTEDSURFACESSOURCES_EXPORT vtkDipoleFieldSource : public vtkImageAlgorithm
+{
+public:
+  static vtkDipoleFieldSource* New();
+  vtkTypeMacro(vtkDipoleFieldSource, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ExponentialRules
+  {
+    EXACT = 0, ///< the true exponential
+    PAPER = 1  ///< eq 9-10 with s = <B B>_0
+  };
+
+  ///@{
+  /// The grid. Defaults: origin (-2, -2, 0), spacing (0.2, 0.2, 1), dimensions (21, 21, 1).
+  vtkSetVector3Macro(Origin, double);
+  vtkGetVector3Macro(Origin, double);
+  vtkSetVector3Macro(Spacing, double);
+  vtkGetVector3Macro(Spacing, double);
+  vtkSetVector3Macro(Dimensions, int);
+  vtkGetVector3Macro(Dimensions, int);
+  ///@}
+
+  ///@{
+  /// The generators: location (x, y, z), direction (dx, dy, dz) and weight. The direction's length
+  /// multiplies the weight. Default: one generator at the origin along x with weight 0.5 (Fig 13).
+  void AddGenerator(double x, double y, double z, double dx, double dy, double dz, double weight);
+  void RemoveAllGenerators();
+  int GetNumberOfGenerators() const;
+  /// Location, direction, weight of generator i (7 values); false if i is out of range.
+  bool GetGenerator(int i, double generator[7]) const;
+  ///@}
+
+  ///@{
+  /// Added to every generator's location: moves the whole configuration (ParaView drags it with a
+  /// handle widget). Default (0, 0, 0).
+  vtkSetVector3Macro(GeneratorsTranslation, double);
+  vtkGetVector3Macro(GeneratorsTranslation, double);
+  ///@}
+
+  ///@{
+  /// Falloff k >= 0 and Epsilon > 0 of d^2 = k |p - x|^2 + Epsilon. Defaults 1 and 0.1.
+  vtkSetClampMacro(Falloff, double, 0.0, 1e12);
+  vtkGetMacro(Falloff, double);
+  vtkSetClampMacro(Epsilon, double, 1e-12, 1e12);
+  vtkGetMacro(Epsilon, double);
+  ///@}
+
+  ///@{
+  /// EXACT (default) or PAPER: the exponential of both methods (they agree on method b's blades).
+  vtkSetClampMacro(ExponentialRule, int, EXACT, PAPER);
+  vtkGetMacro(ExponentialRule, int);
+  void SetExponentialRuleToExact() { this->SetExponentialRule(EXACT); }
+  void SetExponentialRuleToPaper() { this->SetExponentialRule(PAPER); }
+  ///@}
+
+  ///@{
+  /// Number of time steps in [0, 1] that scale the weights (0, the default: no time).
+  vtkSetClampMacro(NumberOfTimeSteps, int, 0, 100000);
+  vtkGetMacro(NumberOfTimeSteps, int);
+  ///@}
+
+  ///@{
+  /// vtkAlgorithm::SINGLE_PRECISION or DOUBLE_PRECISION (default) for the output arrays.
+  vtkSetClampMacro(OutputPrecision, int, SINGLE_PRECISION, DOUBLE_PRECISION);
+  vtkGetMacro(OutputPrecision, int);
+  ///@}
+
+protected:
+  vtkDipoleFieldSource();
+  ~vtkDipoleFieldSource() override = default;
+
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double Origin[3] = { -2.0, -2.0, 0.0 };
+  double Spacing[3] = { 0.2, 0.2, 1.0 };
+  int Dimensions[3] = { 21, 21, 1 };
+  std::vector<double> Generators; // 7 values per generator
+  double GeneratorsTranslation[3] = { 0.0, 0.0, 0.0 };
+  double Falloff = 1.0;
+  double Epsilon = 0.1;
+  int ExponentialRule = EXACT;
+  int NumberOfTimeSteps = 0;
+  int OutputPrecision = DOUBLE_PRECISION;
+
+private:
+  vtkDipoleFieldSource(const vtkDipoleFieldSource&) = delete;
+  void operator=(const vtkDipoleFieldSource&) = delete;
+
+  // Empty when the parameters are valid, otherwise what is wrong.
+  std::string Validate() const;
+};
+
+#endif

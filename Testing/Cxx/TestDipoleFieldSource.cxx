@@ -1,0 +1,443 @@
+// vtkDipoleFieldSource: its arrays against the closed form of one generator (SPEC.md section 2),
+// sub-extents against the whole field, time steps, precision and bad input.
+#include "vtkDipoleFieldSource.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace
+{
+const char* const ArrayNames[] = { "DisplacementSummedGenerators",
+  "DisplacementSummedDisplacements", "DisplacementDifference", "DisplacementDifferenceMagnitude",
+  "DipolePotential" };
+
+struct ErrorCounter
+{
+  int errors = 0;
+  int warnings = 0;
+  static void OnError(vtkObject*, unsigned long, void* clientData, void*)
+  {
+    ++static_cast<ErrorCounter*>(clientData)->errors;
+  }
+  static void OnWarning(vtkObject*, unsigned long, void* clientData, void*)
+  {
+    ++static_cast<ErrorCounter*>(clientData)->warnings;
+  }
+  void Watch(vtkObject* object, vtkCallbackCommand* onError, vtkCallbackCommand* onWarning)
+  {
+    onError->SetCallback(OnError);
+    onError->SetClientData(this);
+    onWarning->SetCallback(OnWarning);
+    onWarning->SetClientData(this);
+    object->AddObserver(vtkCommand::ErrorEvent, onError);
+    object->AddObserver(vtkCommand::WarningEvent, onWarning);
+  }
+};
+
+// The displacement of one generator in closed form: an SCT of weight
+// u = -s w v / (k |p - x|^2 + eps) about x (SPEC.md section 2 and section 3 item 12).
+std::array<double, 3> closedForm(const double x[3], const double v[3], double w, double k,
+  double eps, double s, const double p[3])
+{
+  double y[3];
+  vtkMath::Subtract(p, x, y);
+  const double y2 = vtkMath::Dot(y, y);
+  const double c = -s * w / (k * y2 + eps);
+  const double u[3] = { c * v[0], c * v[1], c * v[2] };
+  const double denominator = 1.0 + 2.0 * vtkMath::Dot(u, y) + vtkMath::Dot(u, u) * y2;
+  std::array<double, 3> out;
+  for (int i = 0; i < 3; ++i)
+  {
+    out[i] = x[i] + (y[i] + u[i] * y2) / denominator - p[i];
+  }
+  return out;
+}
+
+void addFig14Generators(vtkDipoleFieldSource* source)
+{
+  source->RemoveAllGenerators();
+  source->AddGenerator(-1, 0, 0, 0, 1, 0, 0.35);
+  source->AddGenerator(1, 0, 0, 1, 0, 0, 0.35);
+}
+}
+
+TEST(DipoleFieldSource, DefaultsAreOneDipoleOnA21By21SliceWithEveryArray)
+{
+  vtkNew<vtkDipoleFieldSource> source;
+  source->Update();
+  vtkImageData* output = source->GetOutput();
+  int dimensions[3];
+  output->GetDimensions(dimensions);
+  EXPECT_EQ(dimensions[0], 21);
+  EXPECT_EQ(dimensions[1], 21);
+  EXPECT_EQ(dimensions[2], 1);
+  EXPECT_EQ(source->GetNumberOfGenerators(), 1);
+  for (const char* name : ArrayNames)
+  {
+    vtkDataArray* array = output->GetPointData()->GetArray(name);
+    ASSERT_NE(array, nullptr) << name;
+    EXPECT_EQ(array->GetNumberOfTuples(), 21 * 21) << name;
+    EXPECT_TRUE(vtkDoubleArray::SafeDownCast(array) != nullptr) << name;
+  }
+  EXPECT_STREQ(output->GetPointData()->GetScalars()->GetName(), "DipolePotential");
+  EXPECT_STREQ(output->GetPointData()->GetVectors()->GetName(), "DisplacementSummedGenerators");
+}
+
+TEST(DipoleFieldSource, OneGeneratorBothMethodsEqualTheClosedFormAtEveryGridPoint)
+{
+  const double x[3] = { 0.15, -0.3, 0.2 }, v[3] = { 0.6, 0.0, 0.8 };
+  for (int rule : { vtkDipoleFieldSource::EXACT, vtkDipoleFieldSource::PAPER })
+  {
+    vtkNew<vtkDipoleFieldSource> source;
+    source->RemoveAllGenerators();
+    source->AddGenerator(x[0], x[1], x[2], v[0], v[1], v[2], 0.7);
+    source->SetDimensions(6, 5, 4);
+    source->SetOrigin(-1.0, -1.0, -0.5);
+    source->SetSpacing(0.4, 0.5, 0.3);
+    source->SetFalloff(1.3);
+    source->SetEpsilon(0.05);
+    source->SetExponentialRule(rule);
+    source->Update();
+    vtkImageData* output = source->GetOutput();
+    ASSERT_EQ(output->GetNumberOfPoints(), 6 * 5 * 4);
+    vtkPointData* pd = output->GetPointData();
+    double largest = 0.0;
+    for (vtkIdType id = 0; id < output->GetNumberOfPoints(); ++id)
+    {
+      double p[3];
+      output->GetPoint(id, p);
+      const auto expected = closedForm(x, v, 0.7, 1.3, 0.05, 1.0, p);
+      double a[3], b[3];
+      pd->GetArray("DisplacementSummedGenerators")->GetTuple(id, a);
+      pd->GetArray("DisplacementSummedDisplacements")->GetTuple(id, b);
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_NEAR(a[c], expected[c], 1e-12);
+        EXPECT_EQ(a[c], b[c]);
+      }
+      EXPECT_EQ(pd->GetArray("DisplacementDifferenceMagnitude")->GetTuple1(id), 0.0);
+      largest = std::max(largest, vtkMath::Norm(a));
+    }
+    EXPECT_GT(largest, 0.1); // the field is not trivially zero
+  }
+}
+
+TEST(DipoleFieldSource, TwoGeneratorsDifferenceArraysAreAMinusB)
+{
+  vtkNew<vtkDipoleFieldSource> source;
+  addFig14Generators(source);
+  source->Update();
+  vtkPointData* pd = source->GetOutput()->GetPointData();
+  double largest = 0.0;
+  for (vtkIdType id = 0; id < source->GetOutput()->GetNumberOfPoints(); ++id)
+  {
+    double a[3], b[3], d[3];
+    pd->GetArray("DisplacementSummedGenerators")->GetTuple(id, a);
+    pd->GetArray("DisplacementSummedDisplacements")->GetTuple(id, b);
+    pd->GetArray("DisplacementDifference")->GetTuple(id, d);
+    double expected[3];
+    vtkMath::Subtract(a, b, expected);
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_EQ(d[c], expected[c]);
+    }
+    EXPECT_NEAR(pd->GetArray("DisplacementDifferenceMagnitude")->GetTuple1(id),
+      vtkMath::Norm(expected), 1e-15);
+    largest = std::max(largest, vtkMath::Norm(d));
+  }
+  EXPECT_GT(largest, 0.1); // Fig 14: the methods differ
+}
+
+TEST(DipoleFieldSource, SubExtentEqualsTheMatchingPartOfTheWholeField)
+{
+  vtkNew<vtkDipoleFieldSource> whole;
+  addFig14Generators(whole);
+  whole->SetDimensions(9, 7, 5);
+  whole->SetSpacing(0.5, 0.6, 0.4);
+  whole->SetOrigin(-2.0, -1.8, -0.8);
+  whole->Update();
+  vtkImageData* full = whole->GetOutput();
+
+  vtkNew<vtkDipoleFieldSource> part;
+  addFig14Generators(part);
+  part->SetDimensions(9, 7, 5);
+  part->SetSpacing(0.5, 0.6, 0.4);
+  part->SetOrigin(-2.0, -1.8, -0.8);
+  int extent[6] = { 2, 6, 1, 3, 3, 4 };
+  part->UpdateExtent(extent);
+  vtkImageData* sub = part->GetOutput();
+  int got[6];
+  sub->GetExtent(got);
+  for (int c = 0; c < 6; ++c)
+  {
+    ASSERT_EQ(got[c], extent[c]);
+  }
+  ASSERT_EQ(sub->GetNumberOfPoints(), 5 * 3 * 2); // only the requested extent was computed
+  for (int k = extent[4]; k <= extent[5]; ++k)
+  {
+    for (int j = extent[2]; j <= extent[3]; ++j)
+    {
+      for (int i = extent[0]; i <= extent[1]; ++i)
+      {
+        int ijk[3] = { i, j, k };
+        const vtkIdType inFull = full->ComputePointId(ijk);
+        const vtkIdType inSub = sub->ComputePointId(ijk);
+        double pFull[3], pSub[3];
+        full->GetPoint(inFull, pFull);
+        sub->GetPoint(inSub, pSub);
+        EXPECT_EQ(vtkMath::Distance2BetweenPoints(pFull, pSub), 0.0);
+        for (const char* name : ArrayNames)
+        {
+          vtkDataArray* a = full->GetPointData()->GetArray(name);
+          vtkDataArray* b = sub->GetPointData()->GetArray(name);
+          for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+          {
+            EXPECT_EQ(a->GetComponent(inFull, c), b->GetComponent(inSub, c)) << name;
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(DipoleFieldSource, TimeStepsScaleTheWeightsFromZeroToOne)
+{
+  vtkNew<vtkDipoleFieldSource> timed;
+  addFig14Generators(timed);
+  timed->SetNumberOfTimeSteps(5);
+  timed->UpdateInformation();
+  vtkInformation* info = timed->GetOutputInformation(0);
+  ASSERT_TRUE(info->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+  ASSERT_EQ(info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()), 5);
+  const double* times = info->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  for (int k = 0; k < 5; ++k)
+  {
+    EXPECT_DOUBLE_EQ(times[k], 0.25 * k);
+  }
+
+  // t = 0.5 is the field of the weights halved, with no time.
+  timed->UpdateTimeStep(0.5);
+  vtkNew<vtkDipoleFieldSource> halved;
+  halved->RemoveAllGenerators();
+  halved->AddGenerator(-1, 0, 0, 0, 1, 0, 0.175);
+  halved->AddGenerator(1, 0, 0, 1, 0, 0, 0.175);
+  halved->Update();
+  vtkDataArray* a = timed->GetOutput()->GetPointData()->GetArray("DisplacementSummedGenerators");
+  vtkDataArray* b = halved->GetOutput()->GetPointData()->GetArray("DisplacementSummedGenerators");
+  ASSERT_EQ(a->GetNumberOfTuples(), b->GetNumberOfTuples());
+  for (vtkIdType id = 0; id < a->GetNumberOfTuples(); ++id)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(a->GetComponent(id, c), b->GetComponent(id, c), 1e-14);
+    }
+  }
+
+  // t = 0: no displacement; without time steps the full weights are used.
+  timed->UpdateTimeStep(0.0);
+  EXPECT_EQ(timed->GetOutput()->GetPointData()->GetArray("DisplacementSummedDisplacements")->GetMaxNorm(), 0.0);
+  vtkNew<vtkDipoleFieldSource> untimed;
+  addFig14Generators(untimed);
+  untimed->UpdateInformation();
+  EXPECT_FALSE(untimed->GetOutputInformation(0)->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+  untimed->Update();
+  timed->UpdateTimeStep(1.0);
+  EXPECT_EQ(untimed->GetOutput()->GetPointData()->GetArray("DisplacementSummedGenerators")->GetMaxNorm(),
+    timed->GetOutput()->GetPointData()->GetArray("DisplacementSummedGenerators")->GetMaxNorm());
+}
+
+TEST(DipoleFieldSource, SinglePrecisionGivesFloatArrays)
+{
+  vtkNew<vtkDipoleFieldSource> source;
+  source->SetOutputPrecision(vtkAlgorithm::SINGLE_PRECISION);
+  source->Update();
+  for (const char* name : ArrayNames)
+  {
+    EXPECT_TRUE(vtkFloatArray::SafeDownCast(source->GetOutput()->GetPointData()->GetArray(name)))
+      << name;
+  }
+}
+
+TEST(DipoleFieldSource, GeneratorOnAGridPointIsFiniteAndFixed)
+{
+  vtkNew<vtkDipoleFieldSource> source; // default: a generator at the origin, a grid point
+  source->Update();
+  vtkImageData* output = source->GetOutput();
+  const double origin[3] = { 0, 0, 0 };
+  const vtkIdType center = output->FindPoint(const_cast<double*>(origin));
+  ASSERT_GE(center, 0);
+  double p[3];
+  output->GetPoint(center, p);
+  ASSERT_EQ(vtkMath::Norm(p), 0.0);
+  for (const char* name : ArrayNames)
+  {
+    vtkDataArray* array = output->GetPointData()->GetArray(name);
+    for (vtkIdType id = 0; id < array->GetNumberOfTuples(); ++id)
+    {
+      for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+      {
+        ASSERT_TRUE(std::isfinite(array->GetComponent(id, c))) << name;
+      }
+    }
+    for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+    {
+      EXPECT_EQ(array->GetComponent(center, c), 0.0) << name;
+    }
+  }
+}
+
+TEST(DipoleFieldSource, BadInputGivesAnErrorAndAnEmptyOutput)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  enum Case
+  {
+    ZeroDimension,
+    NegativeDimension,
+    ZeroSpacing,
+    NegativeSpacing,
+    NaNOrigin,
+    NaNGenerator,
+    NaNEpsilon,
+    NaNTranslation,
+    Cases
+  };
+  for (int which = 0; which < Cases; ++which)
+  {
+    vtkNew<vtkDipoleFieldSource> source;
+    vtkNew<vtkCallbackCommand> onError, onWarning;
+    ErrorCounter counter;
+    counter.Watch(source, onError, onWarning);
+    switch (which)
+    {
+      case ZeroDimension: source->SetDimensions(0, 21, 1); break;
+      case NegativeDimension: source->SetDimensions(21, -3, 1); break;
+      case ZeroSpacing: source->SetSpacing(0.2, 0.0, 1.0); break;
+      case NegativeSpacing: source->SetSpacing(-0.2, 0.2, 1.0); break;
+      case NaNOrigin: source->SetOrigin(0, nan, 0); break;
+      case NaNGenerator: source->AddGenerator(1, 1, 0, nan, 0, 0, 1); break;
+      case NaNEpsilon: source->SetEpsilon(nan); break;
+      case NaNTranslation: source->SetGeneratorsTranslation(0, 0, nan); break;
+    }
+    source->Update();
+    EXPECT_EQ(counter.errors, 1) << "case " << which;
+    EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0) << "case " << which;
+  }
+}
+
+TEST(DipoleFieldSource, PointSentToInfinityGivesAWarningAndZero)
+{
+  // One generator at 0 along x with weight 2.5, k = 1, eps = 1: u = -0.5 x at r = (2, 0, 0), where
+  // 1 + 2 u.r + |u|^2 |r|^2 = 0: the boost sends the grid point (2, 0, 0) to infinity.
+  vtkNew<vtkDipoleFieldSource> source;
+  source->RemoveAllGenerators();
+  source->AddGenerator(0, 0, 0, 1, 0, 0, 2.5);
+  source->SetEpsilon(1.0);
+  source->SetOrigin(0, 0, 0);
+  source->SetSpacing(1, 1, 1);
+  source->SetDimensions(3, 1, 1);
+  vtkNew<vtkCallbackCommand> onError, onWarning;
+  ErrorCounter counter;
+  counter.Watch(source, onError, onWarning);
+  source->Update();
+  EXPECT_EQ(counter.errors, 0);
+  EXPECT_EQ(counter.warnings, 1);
+  vtkDataArray* a = source->GetOutput()->GetPointData()->GetArray("DisplacementSummedGenerators");
+  ASSERT_EQ(a->GetNumberOfTuples(), 3);
+  EXPECT_EQ(a->GetComponent(2, 0), 0.0);
+  EXPECT_NE(a->GetComponent(1, 0), 0.0); // its neighbour moves
+}
+
+namespace
+{
+struct ProgressLog
+{
+  std::vector<double> values;
+  bool abortOnFirst = false;
+  static void Callback(vtkObject* caller, unsigned long, void* clientData, void* callData)
+  {
+    auto* log = static_cast<ProgressLog*>(clientData);
+    log->values.push_back(*static_cast<double*>(callData));
+    if (log->abortOnFirst)
+    {
+      static_cast<vtkAlgorithm*>(caller)->AbortExecuteOn();
+    }
+  }
+};
+}
+
+TEST(DipoleFieldSource, ReportsProgressAndStopsWithAnEmptyOutputWhenAborted)
+{
+  for (bool abort : { false, true })
+  {
+    vtkNew<vtkDipoleFieldSource> source;
+    source->SetDimensions(64, 64, 8); // 32768 points: 20 blocks
+    vtkNew<vtkCallbackCommand> onProgress;
+    ProgressLog log;
+    log.abortOnFirst = abort;
+    onProgress->SetCallback(ProgressLog::Callback);
+    onProgress->SetClientData(&log);
+    source->AddObserver(vtkCommand::ProgressEvent, onProgress);
+    source->Update();
+    std::vector<double> blockProgress;
+    for (double value : log.values)
+    {
+      if (value > 0.0 && value < 1.0 + 1e-12)
+      {
+        blockProgress.push_back(value);
+      }
+    }
+    if (!abort)
+    {
+      EXPECT_GE(blockProgress.size(), 20u);
+      EXPECT_DOUBLE_EQ(log.values.back(), 1.0);
+      EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 64 * 64 * 8);
+    }
+    else
+    {
+      EXPECT_LT(blockProgress.size(), 20u);
+      EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
+    }
+  }
+}
+
+TEST(DipoleFieldSource, GeneratorsTranslationMovesEveryGenerator)
+{
+  vtkNew<vtkDipoleFieldSource> moved;
+  addFig14Generators(moved);
+  moved->SetGeneratorsTranslation(0.3, -0.4, 0.1);
+  moved->Update();
+  vtkNew<vtkDipoleFieldSource> placed;
+  placed->RemoveAllGenerators();
+  placed->AddGenerator(-0.7, -0.4, 0.1, 0, 1, 0, 0.35);
+  placed->AddGenerator(1.3, -0.4, 0.1, 1, 0, 0, 0.35);
+  placed->Update();
+  for (const char* name : ArrayNames)
+  {
+    vtkDataArray* a = moved->GetOutput()->GetPointData()->GetArray(name);
+    vtkDataArray* b = placed->GetOutput()->GetPointData()->GetArray(name);
+    ASSERT_EQ(a->GetNumberOfTuples(), b->GetNumberOfTuples());
+    for (vtkIdType id = 0; id < a->GetNumberOfTuples(); ++id)
+    {
+      for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+      {
+        EXPECT_NEAR(a->GetComponent(id, c), b->GetComponent(id, c), 1e-13) << name;
+      }
+    }
+  }
+}

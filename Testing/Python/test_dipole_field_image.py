@@ -1,0 +1,100 @@
+"""Regression images of the dipole field (paper Fig 13 and Fig 14 a, b) through the Python package,
+compared with committed baselines by vtkTesting (as vtkRegressionTestImage in the C++ tests).
+
+    python3 test_dipole_field_image.py --figure 13|14a|14b --baseline <png> --output-dir <dir>
+
+Fig 13: one dipole, arrows of "DisplacementSummedGenerators". Fig 14: two dipoles, arrows of
+method a ("DisplacementSummedGenerators") or b ("DisplacementSummedDisplacements"). Each with the
+contours of "DipolePotential". The pipeline is written out here rather than taken from Examples/,
+so that restyling an example does not break this test. A missing baseline makes the test fail after
+writing the image to --output-dir (look at it, then copy it to Testing/Data/Baseline/).
+"""
+import argparse
+import sys
+
+from vtkmodules.vtkFiltersCore import vtkContourFilter, vtkGlyph3D
+from vtkmodules.vtkFiltersSources import vtkArrowSource
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
+from vtkmodules.vtkTestingRendering import vtkTesting
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL render window)
+
+from boostedsurfaces import vtkDipoleFieldSource
+
+FIGURES = {
+    "13": ([(0, 0, 0, 1, 0, 0, 0.5)], "DisplacementSummedGenerators"),
+    "14a": ([(-1, 0, 0, 0, 1, 0, 0.35), (1, 0, 0, 1, 0, 0, 0.35)], "DisplacementSummedGenerators"),
+    "14b": ([(-1, 0, 0, 0, 1, 0, 0.35), (1, 0, 0, 1, 0, 0, 0.35)],
+            "DisplacementSummedDisplacements"),
+}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--figure", required=True, choices=sorted(FIGURES))
+    parser.add_argument("--baseline", required=True, help="absolute path of the baseline PNG")
+    parser.add_argument("--output-dir", required=True, help="where the rendered image goes")
+    parser.add_argument("--threshold", type=float, default=10.0,
+                        help="vtkTesting error threshold (10, as vtkRegressionTestImage)")
+    args = parser.parse_args()
+    generators, array = FIGURES[args.figure]
+
+    source = vtkDipoleFieldSource()  # 21 x 21 points on [-2, 2]^2, z = 0
+    source.RemoveAllGenerators()
+    for generator in generators:
+        source.AddGenerator(*generator)
+
+    arrow = vtkArrowSource()
+    glyph = vtkGlyph3D()
+    glyph.SetInputConnection(source.GetOutputPort())
+    glyph.SetSourceConnection(arrow.GetOutputPort())
+    glyph.SetInputArrayToProcess(1, 0, 0, 0, array)
+    glyph.SetVectorModeToUseVector()
+    glyph.SetScaleModeToDataScalingOff()
+    glyph.SetColorModeToColorByVector()
+    glyph.SetScaleFactor(0.18)
+    glyph_mapper = vtkPolyDataMapper()
+    glyph_mapper.SetInputConnection(glyph.GetOutputPort())
+    glyph_mapper.SetScalarModeToUsePointFieldData()
+    glyph_mapper.SelectColorArray("VectorMagnitude")
+    glyph_mapper.SetScalarRange(0.0, 1.0)
+    arrows = vtkActor()
+    arrows.SetMapper(glyph_mapper)
+
+    contour = vtkContourFilter()
+    contour.SetInputConnection(source.GetOutputPort())
+    contour.SetInputArrayToProcess(0, 0, 0, 0, "DipolePotential")
+    for i, value in enumerate((-0.6, -0.3, -0.15, -0.05, 0.05, 0.15, 0.3, 0.6)):
+        contour.SetValue(i, value)
+    contour_mapper = vtkPolyDataMapper()
+    contour_mapper.SetInputConnection(contour.GetOutputPort())
+    contour_mapper.ScalarVisibilityOff()
+    lines = vtkActor()
+    lines.SetMapper(contour_mapper)
+    lines.GetProperty().SetColor(0, 0, 0)
+    lines.GetProperty().SetLineWidth(2)
+
+    renderer = vtkRenderer()
+    renderer.SetBackground(1, 1, 1)
+    renderer.AddActor(arrows)
+    renderer.AddActor(lines)
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(True)
+    window.SetMultiSamples(0)  # no antialiasing: keeps the image the same from run to run
+    window.SetSize(300, 300)
+    window.AddRenderer(renderer)
+    camera = renderer.GetActiveCamera()
+    camera.SetParallelProjection(True)
+    renderer.ResetCamera()
+    camera.Zoom(1.3)
+    window.Render()
+
+    testing = vtkTesting()
+    for argument in ("-V", args.baseline, "-T", args.output_dir):
+        testing.AddArgument(argument)
+    testing.SetRenderWindow(window)
+    result = testing.RegressionTest(args.threshold)
+    return 0 if result == vtkTesting.PASSED else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
