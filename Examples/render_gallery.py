@@ -13,6 +13,8 @@ FIGURES = [
     "fig1_boosted_circle",
     "fig2_boosted_surfaces",
     "fig3_horn",
+    "fig4_hopf_construction",
+    "fig5_hopf_fibration",
 ]
 
 

@@ -137,6 +137,23 @@ TEST(HopfFibration, HalfLogTwistCarriesLineThetaOntoAxis)
   }
 }
 
+TEST(HopfFibration, TwistIsAQuarterScrewAboutTheCommonPerpendicular)
+{
+  // For theta = 0, M(k) L_0 ~M is the line through ((1 - k)/2, 0, 0) with direction
+  // (0, cos(k pi/2), sin(k pi/2)): a screw about the x axis (the closed form Examples/fig4 draws).
+  for (double k : { 0.0, 0.2, 0.5, 0.8, 1.0 })
+  {
+    Multivector twist;
+    ASSERT_TRUE(HopfFibration::paperTwist(0.0, (k - 0.5) * kPi, twist));
+    const Multivector image = sandwich(twist, HopfFibration::boostedLine(0.0));
+    const Multivector expected = dualLine(
+      { 0.5 * (1.0 - k), 0.0, 0.0 }, { 0.0, std::cos(0.5 * k * kPi), std::sin(0.5 * k * kPi) });
+    EXPECT_LE(relativeDifference(image, expected / std::sqrt(-scalarProduct(expected, expected))),
+      1e-12)
+      << "k " << k;
+  }
+}
+
 TEST(HopfFibration, FastVersorAndPointsMatchFullProduct)
 {
   Random random(401);
