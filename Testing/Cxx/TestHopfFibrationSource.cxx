@@ -306,6 +306,45 @@ TEST(HopfFibrationSource, TwistorMeshIsOneStripPerMeridianWithUnitNormals)
   EXPECT_EQ(source->GetOutput()->GetNumberOfPolys(), 6 * 3 * 20);
 }
 
+TEST(HopfFibrationSource, TwistorMeshesAreContinuousAlongTheBaseSphere)
+{
+  // A fiber's sample t moves continuously with (theta, phi): on a fine grid the quads' edges
+  // across fibers stay comparable to the edges along them (a jump of the motor logarithm's branch
+  // would tear the strip).
+  for (int mode : { vtkHopfFibrationSource::PAPER, vtkHopfFibrationSource::CLASSICAL })
+  {
+    for (int sweep : { vtkHopfFibrationSource::MERIDIANS, vtkHopfFibrationSource::LATITUDES })
+    {
+      vtkNew<vtkHopfFibrationSource> source;
+      source->SetMode(mode);
+      source->SetOutputTypeToTwistorMesh();
+      source->SetMeshSweep(sweep);
+      source->SetThetaResolution(48);
+      source->SetPhiRange(-1.5, 1.2);
+      source->SetPhiResolution(48);
+      source->SetFiberResolution(48);
+      source->SetClipRadius(1e5);
+      source->Update();
+      vtkPolyData* output = source->GetOutput();
+      ASSERT_GT(output->GetNumberOfPolys(), 0);
+      double worst = 0.0;
+      vtkCellArray* polys = output->GetPolys();
+      vtkIdType npts;
+      const vtkIdType* ids;
+      for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
+      {
+        double p0[3], p1[3], p3[3];
+        output->GetPoint(ids[0], p0);
+        output->GetPoint(ids[1], p1);
+        output->GetPoint(ids[3], p3);
+        worst = std::max(worst,
+          std::sqrt(vtkMath::Distance2BetweenPoints(p0, p3) / vtkMath::Distance2BetweenPoints(p0, p1)));
+      }
+      EXPECT_LT(worst, 3.0) << "mode " << mode << " sweep " << sweep;
+    }
+  }
+}
+
 TEST(HopfFibrationSource, PiecesPartitionTheFibersAndTheQuads)
 {
   for (int type : { vtkHopfFibrationSource::FIBERS, vtkHopfFibrationSource::TWISTOR_MESH })
