@@ -375,7 +375,8 @@ void vtkHopfFibrationSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CircleNormal: (" << this->CircleNormal[0] << ", " << this->CircleNormal[1]
      << ", " << this->CircleNormal[2] << ")\n";
   os << indent << "CircleRadius: " << this->CircleRadius << "\n";
-  os << indent << "SamplingMode: " << this->SamplingMode << "\n";
+  const char* samplingNames[] = { "GRID", "BASE_POINTS", "INPUT_POINTS" };
+  os << indent << "SamplingMode: " << samplingNames[this->SamplingMode] << "\n";
   os << indent << "ThetaRange: [" << this->ThetaRange[0] << ", " << this->ThetaRange[1] << "]\n";
   os << indent << "PhiRange: [" << this->PhiRange[0] << ", " << this->PhiRange[1] << "]\n";
   os << indent << "ThetaResolution: " << this->ThetaResolution << "\n";
