@@ -16,6 +16,8 @@ FIGURES = [
     "fig11_deformation",
     "fig13_dipole",
     "fig14_dipole_methods",
+    "fig4_hopf_construction",
+    "fig5_hopf_fibration",
 ]
 
 

@@ -5,6 +5,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -121,7 +122,8 @@ void vtkBoostedGridBuilder::ComputeNormal(int row, int column, double normal[3])
   int c0, c1, r0, r1;
   neighbours(
     column, this->Columns, this->PeriodicColumns, [&](int c) { return this->Usable(row, c); }, c0, c1);
-  neighbours(row, this->Rows, false, [&](int r) { return this->Usable(r, column); }, r0, r1);
+  neighbours(row, this->Rows, false,
+    [&](int r) { return this->SameBlock(r, row) && this->Usable(r, column); }, r0, r1);
 
   double alongColumns[3] = { 0, 0, 0 };
   double alongRows[3] = { 0, 0, 0 };
@@ -161,6 +163,13 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
   tcoords->SetName("TextureCoordinates");
   tcoords->SetNumberOfComponents(2);
   std::vector<vtkSmartPointer<vtkDoubleArray>> parameters;
+  std::vector<vtkSmartPointer<vtkIntArray>> integerParameters;
+  for (const auto& parameter : this->IntegerParameters)
+  {
+    auto array = vtkSmartPointer<vtkIntArray>::New();
+    array->SetName(parameter.first.c_str());
+    integerParameters.push_back(array);
+  }
   for (const Parameter& parameter : this->Parameters)
   {
     auto array = vtkSmartPointer<vtkDoubleArray>::New();
@@ -169,7 +178,7 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
   }
 
   const double uScale = this->Columns > 1 ? 1.0 / (this->Columns - 1) : 0.0;
-  const double vScale = this->Rows > 1 ? 1.0 / (this->Rows - 1) : 0.0;
+  const double vScale = this->BlockRows() > 1 ? 1.0 / (this->BlockRows() - 1) : 0.0;
   // Curves need no texture seam: the repeated last column of periodic grids is left out.
   const int columns =
     (this->PeriodicColumns && !withSurfaceAttributes) ? this->Columns - 1 : this->Columns;
@@ -187,13 +196,17 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
         double n[3];
         this->ComputeNormal(r, c, n);
         normals->InsertNextTuple(n);
-        const double uv[2] = { c * uScale, r * vScale };
+        const double uv[2] = { c * uScale, (r % this->BlockRows()) * vScale };
         tcoords->InsertNextTuple(uv);
       }
       for (size_t k = 0; k < parameters.size(); ++k)
       {
         const Parameter& parameter = this->Parameters[k];
         parameters[k]->InsertNextValue(parameter.Values[parameter.PerRow ? r : c]);
+      }
+      for (size_t k = 0; k < integerParameters.size(); ++k)
+      {
+        integerParameters[k]->InsertNextValue(this->IntegerParameters[k].second[r]);
       }
     }
   }
@@ -204,6 +217,10 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
     output->GetPointData()->SetTCoords(tcoords);
   }
   for (auto& array : parameters)
+  {
+    output->GetPointData()->AddArray(array);
+  }
+  for (auto& array : integerParameters)
   {
     output->GetPointData()->AddArray(array);
   }
@@ -218,6 +235,10 @@ void vtkBoostedGridBuilder::BuildSurface(
   vtkNew<vtkCellArray> quads;
   for (int r = firstRow; r < lastRow; ++r)
   {
+    if (!this->SameBlock(r, r + 1))
+    {
+      continue; // blocks are separate strips
+    }
     for (int c = 0; c + 1 < this->Columns; ++c)
     {
       const vtkIdType quad[4] = { ids[this->Index(r, c)], ids[this->Index(r, c + 1)],
@@ -279,4 +300,15 @@ void vtkBoostedGridBuilder::BuildCurves(
     flush();
   }
   output->SetLines(lines);
+}
+
+void vtkBoostedGridBuilder::SetRowsPerBlock(int rowsPerBlock)
+{
+  this->RowsPerBlock = rowsPerBlock;
+}
+
+void vtkBoostedGridBuilder::AddRowIntegerParameter(
+  const std::string& name, const std::vector<int>& valuePerRow)
+{
+  this->IntegerParameters.emplace_back(name, valuePerRow);
 }

@@ -14,6 +14,7 @@
 #define vtkBoostedGridBuilder_h
 
 #include <string>
+#include <utility>
 #include <vector>
 
 class vtkPolyData;
@@ -44,6 +45,13 @@ public:
   /// Number of samples that were unusable (for a warning).
   int CountUnusable() const;
 
+  /// Splits the rows into consecutive blocks of `rowsPerBlock` rows, each its own strip: no quad
+  /// and no normal difference crosses from one block to the next, and the texture coordinate v
+  /// runs from 0 to 1 within each block. Default: one block of all rows.
+  void SetRowsPerBlock(int rowsPerBlock);
+  /// A named integer per-point parameter given per row (e.g. an id).
+  void AddRowIntegerParameter(const std::string& name, const std::vector<int>& valuePerRow);
+
 private:
   struct Parameter
   {
@@ -67,6 +75,13 @@ private:
   std::vector<double> Points;
   std::vector<double> FallbackNormals;
   std::vector<Parameter> Parameters;
+  int RowsPerBlock = 0; // 0: one block of all rows
+  std::vector<std::pair<std::string, std::vector<int>>> IntegerParameters;
+  int BlockRows() const { return this->RowsPerBlock > 0 ? this->RowsPerBlock : this->Rows; }
+  bool SameBlock(int rowA, int rowB) const
+  {
+    return rowA / this->BlockRows() == rowB / this->BlockRows();
+  }
 };
 
 #endif

@@ -1,0 +1,211 @@
+#include "cga/surfaces/HopfFibration.h"
+
+#include "cga/CompactAlgebra.h"
+#include "cga/CompactConversion.h"
+#include "cga/Conformal.h"
+#include "cga/Exponential.h"
+#include "cga/Logarithm.h"
+#include "cga/PointPairs.h"
+#include "cga/PointSandwich.h"
+
+#include <cmath>
+#include <limits>
+
+namespace cga
+{
+namespace
+{
+constexpr double kPi = 3.14159265358979323846;
+// Relative weight below which an image point counts as the point at infinity (about 1e7 units
+// from the origin for the unit circle: far beyond any useful clip radius).
+constexpr double kInfinityWeight = 1e-13;
+
+Vec3 boostDirection(double theta)
+{
+  return { std::cos(theta), std::sin(theta), 0.0 };
+}
+
+/// A dual line scaled to L^2 = -1.
+Multivector unitDualLine(Vec3 point, Vec3 direction)
+{
+  const Multivector l = dualLine(point, direction);
+  return l / std::sqrt(-scalarProduct(l, l));
+}
+
+// The bivectors of the classical closed form.
+Multivector e12()
+{
+  return Multivector::basisBlade(blade::e1 | blade::e2);
+}
+Multivector classicalPlanes()
+{
+  // e1^e3 - e2^e+
+  return Multivector::basisBlade(blade::e1 | blade::e3) -
+    Multivector::basisBlade(blade::e2 | blade::ep);
+}
+
+/// exp of a multiple of a unit 2-blade U with U^2 = -1: cos a + sin a U.
+Even rotation(const Bivector& unitPlane, double angle)
+{
+  Even r = Even::fromBivector(std::sin(angle) * unitPlane);
+  r.scalar = std::cos(angle);
+  return r;
+}
+} // namespace
+
+std::string HopfFibration::validate() const
+{
+  if (!isFinite(center) || !isFinite(normal) || !std::isfinite(radius))
+  {
+    return "parameters must be finite numbers (a NaN or an infinity was given)";
+  }
+  if (!(norm(normal) > 0.0))
+  {
+    return "the circle normal must not be the zero vector";
+  }
+  if (!(radius > 0.0))
+  {
+    return "the circle radius must be positive";
+  }
+  return {};
+}
+
+Vec3 HopfFibration::toWorld(Vec3 p) const
+{
+  const Vec3 n = normalized(normal);
+  const Vec3 a = orthogonalUnit(n);
+  const Vec3 b = cross(n, a);
+  return center + radius * (p.x * a + p.y * b + p.z * n);
+}
+
+Multivector HopfFibration::baseCircle()
+{
+  return circle({ 0, 0, 0 }, { 0, 0, 1 }, 1.0);
+}
+
+Multivector HopfFibration::baseAxis()
+{
+  return unitDualLine({ 0, 0, 0 }, { 0, 0, 1 });
+}
+
+Multivector HopfFibration::boostedLine(double theta)
+{
+  return unitDualLine(0.5 * boostDirection(theta), { -std::sin(theta), std::cos(theta), 0.0 });
+}
+
+Multivector HopfFibration::paperBoost(double theta, double phi)
+{
+  const double k = hopfBoostParameter(phi);
+  return Multivector::scalar(1.0) + k * (no() * vector(boostDirection(theta)));
+}
+
+bool HopfFibration::paperTwist(double theta, double phi, Multivector& out)
+{
+  const Multivector ratio = baseAxis() * versorInverse(boostedLine(theta));
+  Bivector log;
+  if (!logVersor(toEven(ratio), log))
+  {
+    return false;
+  }
+  out = expSeries((0.5 * hopfBoostParameter(phi)) * toMultivector(log));
+  return true;
+}
+
+Multivector HopfFibration::classicalVersor(double theta, double phi)
+{
+  const double eta = 0.5 * (phi + 0.5 * kPi);
+  return expSeries((-0.5 * (theta + 0.5 * kPi)) * e12()) * expSeries((-0.5 * eta) * classicalPlanes());
+}
+
+bool HopfFibration::versorReference(double theta, double phi, Multivector& out) const
+{
+  if (mode == HopfMode::Classical)
+  {
+    out = classicalVersor(theta, phi);
+    return true;
+  }
+  Multivector twist;
+  if (!paperTwist(theta, phi, twist))
+  {
+    return false;
+  }
+  out = twist * paperBoost(theta, phi);
+  return true;
+}
+
+bool HopfFibration::fiberBladeReference(double theta, double phi, Multivector& out) const
+{
+  Multivector k;
+  if (!versorReference(theta, phi, k))
+  {
+    return false;
+  }
+  out = sandwich(k, baseCircle());
+  return true;
+}
+
+bool HopfFibration::versor(double theta, double phi, Even& out) const
+{
+  if (!std::isfinite(theta) || !std::isfinite(phi))
+  {
+    return false;
+  }
+  if (mode == HopfMode::Classical)
+  {
+    // R_z(theta + pi/2) (cos(eta/2) - sin(eta/2) e13)(cos(eta/2) + sin(eta/2) e2+): the two
+    // planes of the second factor commute, so its exponential is the product of two rotations.
+    const double eta = 0.5 * (phi + 0.5 * kPi);
+    const Even rz = rotation(toBivector(e12()), -0.5 * (theta + 0.5 * kPi));
+    const Even r13 = rotation(toBivector(Multivector::basisBlade(blade::e1 | blade::e3)), -0.5 * eta);
+    const Even r2p = rotation(toBivector(Multivector::basisBlade(blade::e2 | blade::ep)), 0.5 * eta);
+    out = rz * (r13 * r2p);
+    return true;
+  }
+  // Paper: L_theta^-1 = -L_theta for a unit dual line, so L L_theta^-1 = -L L_theta.
+  static const Bivector axis = toBivector(baseAxis());
+  const Bivector line = toBivector(boostedLine(theta));
+  const Even ratio = -1.0 * (axis * line);
+  Bivector log;
+  if (!logVersor(ratio, log))
+  {
+    return false;
+  }
+  const double k = hopfBoostParameter(phi);
+  const Even twist = expExact((0.5 * k) * log, ExpScaling::None);
+  Even boost = Even::fromBivector(k * nullPointPairCompact({ 0, 0, 0 }, boostDirection(theta)));
+  boost.scalar = 1.0;
+  out = twist * boost;
+  return true;
+}
+
+bool HopfFibration::fiberPoints(double theta, double phi, int count, std::vector<Vec3>& out) const
+{
+  out.clear();
+  Even kh;
+  if (count < 1 || !this->versor(theta, phi, kh))
+  {
+    return false;
+  }
+  const PointMap map(kh);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  out.reserve(count);
+  for (int j = 0; j < count; ++j)
+  {
+    const double t = 2.0 * kPi * j / count;
+    // A point sent to infinity has weight -ni.P = 0; round-off leaves about 1e-16 |P|, which
+    // would normalize to a meaningless finite point, so such weights count as zero.
+    const ConformalVector image =
+      map.apply(ConformalVector::point({ std::cos(t), std::sin(t), 0.0 }));
+    Vec3 p;
+    if (std::fabs(image.weight()) > kInfinityWeight * image.maxAbs() && normalizePoint(image, p))
+    {
+      out.push_back(this->toWorld(p));
+    }
+    else
+    {
+      out.push_back({ nan, nan, nan });
+    }
+  }
+  return true;
+}
+} // namespace cga
