@@ -60,6 +60,12 @@ void vtkBoostedGridBuilder::AddColumnParameter(
   this->Parameters.push_back({ name, false, valuePerColumn });
 }
 
+void vtkBoostedGridBuilder::AddPointParameter(
+  const std::string& name, const std::vector<double>& valuePerPoint)
+{
+  this->Parameters.push_back({ name, false, valuePerPoint, true });
+}
+
 bool vtkBoostedGridBuilder::Usable(int row, int column) const
 {
   const double* p = &this->Points[3 * this->Index(row, column)];
@@ -193,7 +199,9 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
       for (size_t k = 0; k < parameters.size(); ++k)
       {
         const Parameter& parameter = this->Parameters[k];
-        parameters[k]->InsertNextValue(parameter.Values[parameter.PerRow ? r : c]);
+        parameters[k]->InsertNextValue(parameter.PerPoint
+            ? parameter.Values[this->Index(r, c)]
+            : parameter.Values[parameter.PerRow ? r : c]);
       }
     }
   }

@@ -35,6 +35,8 @@ public:
   /// A named per-point parameter, given per row and per column (value = row value or column value).
   void AddRowParameter(const std::string& name, const std::vector<double>& valuePerRow);
   void AddColumnParameter(const std::string& name, const std::vector<double>& valuePerColumn);
+  /// A named per-point parameter with one value per grid sample (row-major, rows x columns).
+  void AddPointParameter(const std::string& name, const std::vector<double>& valuePerPoint);
 
   /// Quads between point rows [firstRow, lastRow] (inclusive), with normals and texture coordinates.
   void BuildSurface(vtkPolyData* output, int firstRow, int lastRow, int outputPointsPrecision) const;
@@ -50,6 +52,7 @@ private:
     std::string Name;
     bool PerRow;
     std::vector<double> Values;
+    bool PerPoint = false; // Values holds rows x columns values
   };
 
   int Index(int row, int column) const { return row * this->Columns + column; }
