@@ -13,6 +13,12 @@ FIGURES = [
     "fig1_boosted_circle",
     "fig2_boosted_surfaces",
     "fig3_horn",
+    "fig6_bent_line",
+    "fig7_translated_tangents",
+    "fig8_osculating_circles",
+    "fig9_control_point_patches",
+    "fig10_patch_assemblies",
+    "fig12_bilinear_patches",
 ]
 
 
