@@ -68,12 +68,9 @@ def build_scene():
 
 
 def main(argv=None):
-    args = gc.parse_args(__doc__.splitlines()[0], "fig10_patch_assemblies.png", argv,
-                         default_size=(1000, 800))
-    path = gc.render_to_png(build_scene(), args.output, args.size,
-                            view_direction=(0.0, -0.8, 1.0), view_up=(0, 1, 0), zoom=1.3)
-    print(path)
-    return path
+    return cc.render_figure(__doc__.splitlines()[0], "fig10_patch_assemblies.png", build_scene,
+                            argv, default_size=(1000, 800), view_direction=(0.0, -0.8, 1.0),
+                            view_up=(0, 1, 0), zoom=1.3)
 
 
 if __name__ == "__main__":

@@ -1,12 +1,14 @@
 """Paper Fig 12: patches from four corner boosts by bilinear interpolation (eq 25-26).
 
-Tangents are translated to the four corners of a grid (the arrows, reversed where a weight is negative).
+Tangents are translated to the four corners of a grid (the arrows, reversed where a weight is
+negative).
 At each grid point (s, t) the corner point pairs are interpolated,
 tau_st = (1-s)((1-t) tau_1 + t tau_2) + s((1-t) tau_3 + t tau_4), and the point is moved by
 K = exp(-tau_st / 2) (SPEC.md section 3 item 11). Four choices of corner tangents:
 
 a) all along the normal, weights (0.5, -0.5, -0.5, 0.5): a saddle (the paper's exponential is
-   exact here), b) all along the normal, equal weights, c) tangents tilted 45 degrees along u, opposite at opposite corners, d) mixed directions.
+   exact here), b) all along the normal, equal weights, c) tangents tilted 45 degrees along u,
+   opposite at opposite corners, d) mixed directions.
 In c) and d) the interpolated generator is not a blade: the exact exponential (the default) and
 the paper's rule differ.
 
@@ -42,7 +44,8 @@ def build_scene():
     renderer = gc.new_renderer()
     for i, (name, directions, weights) in enumerate(CASES):
         x = i * SPACING
-        renderer.AddActor(cc.surface_actor(bilinear_patch(x, directions, weights), "LightSteelBlue"))
+        source = bilinear_patch(x, directions, weights)
+        renderer.AddActor(cc.surface_actor(source, "LightSteelBlue"))
         arrows = [(c, tuple(w * d for d in direction))
                   for c, direction, w in zip(corners(x), directions, weights) if w != 0]
         cc.add_arrows(renderer, arrows, length=0.8)
@@ -51,12 +54,8 @@ def build_scene():
 
 
 def main(argv=None):
-    args = gc.parse_args(__doc__.splitlines()[0], "fig12_bilinear_patches.png", argv,
-                         default_size=(1200, 450))
-    path = gc.render_to_png(build_scene(), args.output, args.size,
-                            view_direction=(0.0, -1.0, 0.9), view_up=(0, 0, 1), zoom=2.0)
-    print(path)
-    return path
+    return cc.render_figure(__doc__.splitlines()[0], "fig12_bilinear_patches.png", build_scene,
+                            argv)
 
 
 if __name__ == "__main__":

@@ -40,12 +40,9 @@ def build_scene():
 
 
 def main(argv=None):
-    args = gc.parse_args(__doc__.splitlines()[0], "fig6_bent_line.png", argv)
-    # Look at the xz plane from -y; the parallel projection keeps the circles round.
-    path = gc.render_to_png(build_scene(), args.output, args.size, view_direction=(0, -1, 0),
-                            view_up=(0, 0, 1), zoom=1.1, parallel=True)
-    print(path)
-    return path
+    return cc.render_figure(__doc__.splitlines()[0], "fig6_bent_line.png", build_scene, argv,
+                            default_size=(900, 700), view_direction=(0, -1, 0), view_up=(0, 0, 1),
+                            zoom=1.1, parallel=True)
 
 
 if __name__ == "__main__":

@@ -32,12 +32,8 @@ def build_scene():
 
 
 def main(argv=None):
-    args = gc.parse_args(__doc__.splitlines()[0], "fig8_osculating_circles.png", argv,
-                         default_size=(1200, 450))
-    path = gc.render_to_png(build_scene(), args.output, args.size,
-                            view_direction=(0.0, -1.0, 0.8), view_up=(0, 0, 1), zoom=1.5)
-    print(path)
-    return path
+    return cc.render_figure(__doc__.splitlines()[0], "fig8_osculating_circles.png", build_scene,
+                            argv, view_direction=(0.0, -1.0, 0.8), zoom=1.5)
 
 
 if __name__ == "__main__":

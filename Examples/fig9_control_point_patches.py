@@ -42,19 +42,15 @@ def build_scene():
     for i, (name, curvatures) in enumerate(CASES):
         x = i * SPACING
         renderer.AddActor(cc.surface_actor(four_corner_patch(x, curvatures), "LightSteelBlue"))
-        cc.add_arrows(renderer, [(point[:3], point[3:6]) for point in control_points(x, curvatures)],
-                      length=0.8)
+        points = control_points(x, curvatures)
+        cc.add_arrows(renderer, [(point[:3], point[3:6]) for point in points], length=0.8)
         renderer.AddActor2D(gc.label(name, (x, -3.6, 0.0), font_size=22))
     return renderer
 
 
 def main(argv=None):
-    args = gc.parse_args(__doc__.splitlines()[0], "fig9_control_point_patches.png", argv,
-                         default_size=(1200, 450))
-    path = gc.render_to_png(build_scene(), args.output, args.size,
-                            view_direction=(0.0, -1.0, 0.9), view_up=(0, 0, 1), zoom=2.0)
-    print(path)
-    return path
+    return cc.render_figure(__doc__.splitlines()[0], "fig9_control_point_patches.png", build_scene,
+                            argv)
 
 
 if __name__ == "__main__":

@@ -288,3 +288,19 @@ void vtkBoostedGridBuilder::BuildCurves(
   }
   output->SetLines(lines);
 }
+
+bool vtkBoostedGridBuilder::PieceRows(
+  int rows, bool surface, int piece, int pieces, int& firstRow, int& lastRow)
+{
+  pieces = pieces < 1 ? 1 : pieces;
+  if (surface)
+  {
+    const int cellRows = rows - 1;
+    firstRow = static_cast<int>(static_cast<long long>(piece) * cellRows / pieces);
+    lastRow = static_cast<int>(static_cast<long long>(piece + 1) * cellRows / pieces);
+    return firstRow < lastRow;
+  }
+  firstRow = static_cast<int>(static_cast<long long>(piece) * rows / pieces);
+  lastRow = static_cast<int>(static_cast<long long>(piece + 1) * rows / pieces) - 1;
+  return firstRow <= lastRow;
+}

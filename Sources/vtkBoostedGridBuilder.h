@@ -46,6 +46,11 @@ public:
   /// Number of samples that were unusable (for a warning).
   int CountUnusable() const;
 
+  /// The rows [firstRow, lastRow] of piece `piece` of `pieces`: for a surface whole rows of quads
+  /// (neighbouring bands share their boundary row of points), otherwise whole rows of points.
+  /// Returns false when the piece is empty (more pieces than rows).
+  static bool PieceRows(int rows, bool surface, int piece, int pieces, int& firstRow, int& lastRow);
+
 private:
   struct Parameter
   {
