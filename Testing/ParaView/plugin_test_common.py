@@ -51,3 +51,31 @@ def finish(ok, message):
     if not ok:
         raise RuntimeError("FAILED: " + message)
     print("PASSED: " + message)
+
+
+def render_and_compare(source, color_array, camera_position, focal_point, view_up, arguments,
+                       failures):
+    """Show `source` coloured by a point array in a 400 x 400 white render view with the given
+    camera (then fitted to the data), and, with --baseline, compare its screenshot; a difference is
+    appended to `failures`."""
+    from paraview import simple
+    view = simple.CreateRenderView()
+    view.ViewSize = [400, 400]
+    view.OrientationAxesVisibility = 0
+    view.Background = [1, 1, 1]
+    try:
+        view.UseColorPaletteForBackground = 0
+    except AttributeError:
+        pass
+    display = simple.Show(source, view)
+    simple.ColorBy(display, ("POINTS", color_array))
+    view.CameraPosition = list(camera_position)
+    view.CameraFocalPoint = list(focal_point)
+    view.CameraViewUp = list(view_up)
+    view.ResetCamera()
+    simple.Render(view)
+    if arguments.baseline:
+        image = os.path.join(arguments.output_dir, os.path.basename(arguments.baseline))
+        simple.SaveScreenshot(image, view, ImageResolution=[400, 400])
+        if not compare_png(image, arguments.baseline, arguments.threshold):
+            failures.append("image differs from the baseline")

@@ -8,7 +8,6 @@ import plugin_test_common as common  # noqa: E402
 
 arguments = common.parse_arguments()
 common.load_plugin(arguments.plugin, globals())  # defines BoostedSurface()
-from paraview import simple  # noqa: E402
 
 failures = []
 
@@ -43,27 +42,8 @@ for array in ("lambda", "theta", "Normals", "TextureCoordinates"):
     if info.GetPointDataInformation().GetArrayInformation(array) is None:
         failures.append("point array %s is missing" % array)
 
-view = simple.CreateRenderView()
-view.ViewSize = [400, 400]
-view.OrientationAxesVisibility = 0
-view.Background = [1, 1, 1]
-try:
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
-display = simple.Show(source, view)
-simple.ColorBy(display, ("POINTS", "lambda"))
-view.CameraPosition = [3.0, 2.0, 2.5]
-view.CameraFocalPoint = [0.25, 0.0, 0.0]
-view.CameraViewUp = [0.0, 0.0, 1.0]
-view.ResetCamera()
-simple.Render(view)
-
-if arguments.baseline:
-    image = os.path.join(arguments.output_dir, os.path.basename(arguments.baseline))
-    simple.SaveScreenshot(image, view, ImageResolution=[400, 400])
-    if not common.compare_png(image, arguments.baseline, arguments.threshold):
-        failures.append("image differs from the baseline")
+common.render_and_compare(source, "lambda", [3.0, 2.0, 2.5], [0.25, 0.0, 0.0], [0.0, 0.0, 1.0],
+                          arguments, failures)
 
 for failure in failures:
     print("FAILED:", failure)

@@ -9,7 +9,6 @@ import plugin_test_common as common  # noqa: E402
 
 arguments = common.parse_arguments()
 common.load_plugin(arguments.plugin, globals())  # defines CurvaturePatch()
-from paraview import simple  # noqa: E402
 
 failures = []
 
@@ -72,27 +71,8 @@ for method in ("Bent Line (eq 15)", "Osculating Circles (eq 17)", "Linear (eq 24
 
 source.Method = "Translated Tangents (eq 16)"
 source.CurvaturePreset = "Umbilic (Fig 7c)"
-view = simple.CreateRenderView()
-view.ViewSize = [400, 400]
-view.OrientationAxesVisibility = 0
-view.Background = [1, 1, 1]
-try:
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
-display = simple.Show(source, view)
-simple.ColorBy(display, ("POINTS", "v"))
-view.CameraPosition = [0.0, -6.0, 4.0]
-view.CameraFocalPoint = [0.0, 0.0, -0.5]
-view.CameraViewUp = [0.0, 0.0, 1.0]
-view.ResetCamera()
-simple.Render(view)
-
-if arguments.baseline:
-    image = os.path.join(arguments.output_dir, os.path.basename(arguments.baseline))
-    simple.SaveScreenshot(image, view, ImageResolution=[400, 400])
-    if not common.compare_png(image, arguments.baseline, arguments.threshold):
-        failures.append("image differs from the baseline")
+common.render_and_compare(source, "v", [0.0, -6.0, 4.0], [0.0, 0.0, -0.5], [0.0, 0.0, 1.0],
+                          arguments, failures)
 
 for failure in failures:
     print("FAILED:", failure)

@@ -11,11 +11,11 @@ import argparse
 import sys
 
 from vtkmodules.vtkFiltersCore import vtkTubeFilter
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
-from vtkmodules.vtkTestingRendering import vtkTesting
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL render window)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 
 from boostedsurfaces import vtkCurvaturePatchSource
+
+import python_test_common as common
 
 
 def patch(**settings):
@@ -104,25 +104,8 @@ def main():
     renderer.SetBackground(1, 1, 1)
     for a in actors:
         renderer.AddActor(a)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(True)
-    window.SetMultiSamples(0)  # no antialiasing: keeps the image the same from run to run
-    window.SetSize(400, 300)
-    window.AddRenderer(renderer)
-    camera = renderer.GetActiveCamera()
-    camera.SetFocalPoint(0, 0, 0)
-    camera.SetPosition(*view_direction)
-    camera.SetViewUp(*view_up)
-    renderer.ResetCamera()
-    camera.Zoom(1.3)
-    window.Render()
-
-    testing = vtkTesting()
-    for argument in ("-V", args.baseline, "-T", args.output_dir):
-        testing.AddArgument(argument)
-    testing.SetRenderWindow(window)
-    result = testing.RegressionTest(args.threshold)
-    return 0 if result == vtkTesting.PASSED else 1
+    return common.regression_test(renderer, view_direction, view_up, 1.3, args.baseline,
+                                  args.output_dir, args.threshold)
 
 
 if __name__ == "__main__":

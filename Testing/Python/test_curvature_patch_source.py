@@ -6,23 +6,9 @@ form, the control point API, presets, and errors Python can see. Plain Python, n
 import math
 import unittest
 
-from vtkmodules.util.misc import calldata_type
-from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand
-
 from boostedsurfaces import vtkCurvaturePatchSource
 
-
-class ErrorRecorder:
-    """Observes vtkCommand.ErrorEvent: the messages go here instead of to the output window."""
-
-    def __init__(self, algorithm):
-        self.messages = []
-
-        @calldata_type(VTK_STRING)
-        def record(caller, event, message):
-            self.messages.append(message)
-
-        algorithm.AddObserver(vtkCommand.ErrorEvent, record)
+import python_test_common as common
 
 
 class CurvaturePatchSourceTest(unittest.TestCase):
@@ -56,7 +42,7 @@ class CurvaturePatchSourceTest(unittest.TestCase):
         source.Update()
         self.assertGreater(source.GetOutput().GetNumberOfCells(), 0)
         source.RemoveAllControlPoints()
-        errors = ErrorRecorder(source)
+        errors = common.ErrorRecorder(source)
         source.Update()
         self.assertEqual(len(errors.messages), 1)
         self.assertIn("control point", errors.messages[0])
@@ -66,7 +52,7 @@ class CurvaturePatchSourceTest(unittest.TestCase):
         for setup in (lambda s: s.SetSize(0.0, 1.0), lambda s: s.SetOrigin(float("nan"), 0, 0)):
             source = vtkCurvaturePatchSource()
             setup(source)
-            errors = ErrorRecorder(source)
+            errors = common.ErrorRecorder(source)
             source.Update()
             self.assertEqual(len(errors.messages), 1)
             self.assertEqual(source.GetOutput().GetNumberOfPoints(), 0)
