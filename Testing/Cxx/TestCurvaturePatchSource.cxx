@@ -3,7 +3,7 @@
 // clamping and bad input.
 #include "vtkCurvaturePatchSource.h"
 
-#include "vtkCallbackCommand.h"
+#include "ErrorCounter.h"
 #include "vtkDataArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -20,15 +20,6 @@
 
 namespace
 {
-struct ErrorCounter
-{
-  int count = 0;
-  static void Callback(vtkObject*, unsigned long, void* clientData, void*)
-  {
-    ++static_cast<ErrorCounter*>(clientData)->count;
-  }
-};
-
 bool allFinite(vtkPolyData* output)
 {
   for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
@@ -276,11 +267,7 @@ TEST(CurvaturePatchSource, BadParametersGiveAnErrorAndAnEmptyOutput)
   for (size_t k = 0; k < breakers.size(); ++k)
   {
     vtkNew<vtkCurvaturePatchSource> source;
-    ErrorCounter errors;
-    vtkNew<vtkCallbackCommand> observer;
-    observer->SetCallback(&ErrorCounter::Callback);
-    observer->SetClientData(&errors);
-    source->AddObserver(vtkCommand::ErrorEvent, observer);
+    ErrorCounter errors(source);
     breakers[k](source);
     source->Update();
     EXPECT_EQ(errors.count, 1) << "case " << k;
