@@ -23,7 +23,7 @@ CASES = [
     ("d) hyperbolic", [(0.5, -0.5), (-0.5, 0.5), (-0.5, 0.5), (0.5, -0.5)]),
 ]
 SPACING = 6.0
-EPSILON = 0.5  # larger than the default: smooth bumps around each control point
+EPSILON = 0.5  # the default, stated: smooth bumps around each control point
 
 
 def control_points(x, curvatures):

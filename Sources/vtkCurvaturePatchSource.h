@@ -130,7 +130,9 @@ public:
   ///@}
 
   ///@{
-  /// k of eq 21-22 (default 1) and the epsilon added to every squared distance (default 0.01).
+  /// k of eq 21-22 (default 1) and the epsilon added to every squared distance (default 0.5:
+  /// smooth bumps; small values give sharp pinches, as the weights grow like 1/d^2 near the
+  /// osculating circles and control points).
   vtkSetClampMacro(Falloff, double, 0.0, 1e12);
   vtkGetMacro(Falloff, double);
   vtkSetClampMacro(Epsilon, double, 1e-12, 1e12);
@@ -213,7 +215,7 @@ protected:
   double KappaV = 0.5;
   int CurvaturePreset = CUSTOM;
   double Falloff = 1.0;
-  double Epsilon = 0.01;
+  double Epsilon = 0.5;
   std::vector<std::array<double, 11>> ControlPoints;
   int SelectedControlPoint = -1;
   double SelectedControlPointLocation[3] = { 0.0, 0.0, 0.0 };

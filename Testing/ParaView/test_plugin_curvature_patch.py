@@ -26,7 +26,7 @@ defaults = {
     "KappaV": 0.5,
     "CurvaturePreset": "Custom",
     "Falloff": 1.0,
-    "Epsilon": 0.01,
+    "Epsilon": 0.5,
     "SelectedControlPoint": -1,
     "CornerWeights": [0.5, -0.5, -0.5, 0.5],
 }

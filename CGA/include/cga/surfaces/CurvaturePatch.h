@@ -40,7 +40,7 @@ struct CurvaturePatch
   double sizeU = 4.0, sizeV = 4.0; // sizeV = 0: a single line
   double kappaU = 0.5, kappaV = 0.5;
   double falloff = 1.0;  // k of eq 21-22
-  double epsilon = 1e-2; // added to every squared distance
+  double epsilon = 0.5; // added to every squared distance (see vtkCurvaturePatchSource)
   /// Used by ControlPoints; normalize() them (validate() does).
   std::vector<CurvatureControlPoint> controlPoints;
   /// Linear uses corners 0 (start, a = -sizeU/2) and 1 (end); Bilinear all four:
