@@ -107,6 +107,8 @@ CurvatureGenerator controlPoints(const CurvatureControlPoint* points,
                                  double falloff,
                                  double epsilon)
 {
+  // PointPairField does not fit here: its generator weights are fixed, while W_i depends on p
+  // through the osculating circle distances as well as through |p - x_i|.
   CurvatureGenerator g;
   for (std::size_t i = 0; i < count; ++i)
   {
