@@ -16,6 +16,8 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace
@@ -236,6 +238,11 @@ TEST(CurvaturePatchSource, ClampsAndPrecision)
   source->SetOutputPointsPrecision(vtkAlgorithm::SINGLE_PRECISION);
   source->Update();
   EXPECT_EQ(source->GetOutput()->GetPoints()->GetDataType(), VTK_FLOAT);
+  source->AddControlPoint(1, 2, 3, 0, 0, 1, 1, 0, 0, 0.5, 0.25);
+  std::ostringstream printed;
+  source->Print(printed);
+  EXPECT_NE(printed.str().find("Method: BILINEAR"), std::string::npos);
+  EXPECT_NE(printed.str().find("ControlPoint: (1, 2, 3, 0, 0, 1, 1, 0, 0, 0.5, 0.25)"), std::string::npos);
 }
 
 TEST(CurvaturePatchSource, BadParametersGiveAnErrorAndAnEmptyOutput)
