@@ -26,17 +26,17 @@ def preset_patch(preset, x):
 
 
 def build_scene():
-    lut = gc.lambda_lookup_table((-1.3, 0.0))
+    lut = gc.lambda_lookup_table((-1.2, 1.2))
     renderer = gc.new_renderer()
     for i, (preset, name) in enumerate(PRESETS):
         x = i * SPACING
         source = preset_patch(preset, x)
-        height = vtkElevationFilter()  # colour by z: the bending is along -z for kappa > 0
+        height = vtkElevationFilter()  # colour by z: kappa > 0 bends toward -z
         height.SetInputConnection(source.GetOutputPort())
         height.source = source  # a port does not keep its filter alive in Python
-        height.SetLowPoint(0, 0, -1.3)
-        height.SetHighPoint(0, 0, 0.0)
-        height.SetScalarRange(-1.3, 0.0)
+        height.SetLowPoint(0, 0, -1.2)
+        height.SetHighPoint(0, 0, 1.2)
+        height.SetScalarRange(-1.2, 1.2)
         actor = gc.colored_actor(height, lut, array="Elevation")
         renderer.AddActor(actor)
         cc.add_arrows(renderer, [((x, 0, 0), (0, 0, 1))], length=0.8)
