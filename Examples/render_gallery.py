@@ -13,11 +13,17 @@ FIGURES = [
     "fig1_boosted_circle",
     "fig2_boosted_surfaces",
     "fig3_horn",
-    "fig11_deformation",
-    "fig13_dipole",
-    "fig14_dipole_methods",
     "fig4_hopf_construction",
     "fig5_hopf_fibration",
+    "fig6_bent_line",
+    "fig7_translated_tangents",
+    "fig8_osculating_circles",
+    "fig9_control_point_patches",
+    "fig10_patch_assemblies",
+    "fig11_deformation",
+    "fig12_bilinear_patches",
+    "fig13_dipole",
+    "fig14_dipole_methods",
 ]
 
 

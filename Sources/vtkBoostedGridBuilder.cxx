@@ -61,6 +61,12 @@ void vtkBoostedGridBuilder::AddColumnParameter(
   this->Parameters.push_back({ name, false, valuePerColumn });
 }
 
+void vtkBoostedGridBuilder::AddPointParameter(
+  const std::string& name, const std::vector<double>& valuePerPoint)
+{
+  this->Parameters.push_back({ name, false, valuePerPoint, true });
+}
+
 bool vtkBoostedGridBuilder::Usable(int row, int column) const
 {
   const double* p = &this->Points[3 * this->Index(row, column)];
@@ -202,7 +208,9 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
       for (size_t k = 0; k < parameters.size(); ++k)
       {
         const Parameter& parameter = this->Parameters[k];
-        parameters[k]->InsertNextValue(parameter.Values[parameter.PerRow ? r : c]);
+        parameters[k]->InsertNextValue(parameter.PerPoint
+            ? parameter.Values[this->Index(r, c)]
+            : parameter.Values[parameter.PerRow ? r : c]);
       }
       for (size_t k = 0; k < integerParameters.size(); ++k)
       {
@@ -311,4 +319,20 @@ void vtkBoostedGridBuilder::AddRowIntegerParameter(
   const std::string& name, const std::vector<int>& valuePerRow)
 {
   this->IntegerParameters.emplace_back(name, valuePerRow);
+}
+
+bool vtkBoostedGridBuilder::PieceRows(
+  int rows, bool surface, int piece, int pieces, int& firstRow, int& lastRow)
+{
+  pieces = pieces < 1 ? 1 : pieces;
+  if (surface)
+  {
+    const int cellRows = rows - 1;
+    firstRow = static_cast<int>(static_cast<long long>(piece) * cellRows / pieces);
+    lastRow = static_cast<int>(static_cast<long long>(piece + 1) * cellRows / pieces);
+    return firstRow < lastRow;
+  }
+  firstRow = static_cast<int>(static_cast<long long>(piece) * rows / pieces);
+  lastRow = static_cast<int>(static_cast<long long>(piece + 1) * rows / pieces) - 1;
+  return firstRow <= lastRow;
 }

@@ -36,6 +36,8 @@ public:
   /// A named per-point parameter, given per row and per column (value = row value or column value).
   void AddRowParameter(const std::string& name, const std::vector<double>& valuePerRow);
   void AddColumnParameter(const std::string& name, const std::vector<double>& valuePerColumn);
+  /// A named per-point parameter with one value per grid sample (row-major, rows x columns).
+  void AddPointParameter(const std::string& name, const std::vector<double>& valuePerPoint);
 
   /// Quads between point rows [firstRow, lastRow] (inclusive), with normals and texture coordinates.
   void BuildSurface(vtkPolyData* output, int firstRow, int lastRow, int outputPointsPrecision) const;
@@ -51,6 +53,10 @@ public:
   void SetRowsPerBlock(int rowsPerBlock);
   /// A named integer per-point parameter given per row (e.g. an id).
   void AddRowIntegerParameter(const std::string& name, const std::vector<int>& valuePerRow);
+  /// The rows [firstRow, lastRow] of piece `piece` of `pieces`: for a surface whole rows of quads
+  /// (neighbouring bands share their boundary row of points), otherwise whole rows of points.
+  /// Returns false when the piece is empty (more pieces than rows).
+  static bool PieceRows(int rows, bool surface, int piece, int pieces, int& firstRow, int& lastRow);
 
 private:
   struct Parameter
@@ -58,6 +64,7 @@ private:
     std::string Name;
     bool PerRow;
     std::vector<double> Values;
+    bool PerPoint = false; // Values holds rows x columns values
   };
 
   int Index(int row, int column) const { return row * this->Columns + column; }

@@ -75,24 +75,10 @@ int vtkBoostedSurfaceSource::RequestData(
   const int pieces =
     std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
   int firstRow, lastRow;
-  if (this->OutputType == SURFACE)
+  if (!vtkBoostedGridBuilder::PieceRows(
+        rows, this->OutputType == SURFACE, piece, pieces, firstRow, lastRow))
   {
-    const int cellRows = rows - 1;
-    firstRow = static_cast<int>(static_cast<long long>(piece) * cellRows / pieces);
-    lastRow = static_cast<int>(static_cast<long long>(piece + 1) * cellRows / pieces);
-    if (firstRow == lastRow)
-    {
-      return 1; // more pieces than rows of quads: this one is empty
-    }
-  }
-  else
-  {
-    firstRow = static_cast<int>(static_cast<long long>(piece) * rows / pieces);
-    lastRow = static_cast<int>(static_cast<long long>(piece + 1) * rows / pieces) - 1;
-    if (lastRow < firstRow)
-    {
-      return 1;
-    }
+    return 1; // more pieces than rows: this one is empty
   }
 
   vtkBoostedGridBuilder grid(rows, columns, true);

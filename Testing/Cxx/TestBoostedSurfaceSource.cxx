@@ -1,7 +1,7 @@
 // Numerical tests of vtkBoostedSurfaceSource against the closed forms of SPEC.md section 3 items 1-3.
 #include "vtkBoostedSurfaceSource.h"
 
-#include "vtkCallbackCommand.h"
+#include "ErrorCounter.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkMath.h"
@@ -22,15 +22,6 @@
 
 namespace
 {
-struct ErrorCounter
-{
-  int count = 0;
-  static void Callback(vtkObject*, unsigned long, void* clientData, void*)
-  {
-    ++static_cast<ErrorCounter*>(clientData)->count;
-  }
-};
-
 // Points of the output grouped by their "lambda" value.
 std::map<double, std::vector<std::array<double, 3>>> pointsByLambda(vtkPolyData* output)
 {
@@ -324,11 +315,7 @@ TEST(BoostedSurfaceSource, BadParametersGiveAnErrorAndAnEmptyOutput)
   for (size_t k = 0; k < breakers.size(); ++k)
   {
     vtkNew<vtkBoostedSurfaceSource> source;
-    ErrorCounter errors;
-    vtkNew<vtkCallbackCommand> observer;
-    observer->SetCallback(&ErrorCounter::Callback);
-    observer->SetClientData(&errors);
-    source->AddObserver(vtkCommand::ErrorEvent, observer);
+    ErrorCounter errors(source);
     breakers[k](source);
     source->Update();
     EXPECT_EQ(errors.count, 1) << "case " << k;

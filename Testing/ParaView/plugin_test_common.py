@@ -73,3 +73,21 @@ def screenshot_matches(view, arguments, size):
     image = os.path.join(arguments.output_dir, os.path.basename(arguments.baseline))
     simple.SaveScreenshot(image, view, ImageResolution=list(size))
     return compare_png(image, arguments.baseline, arguments.threshold)
+
+
+def render_and_compare(source, color_array, camera_position, focal_point, view_up, arguments,
+                       failures):
+    """Show `source` coloured by a point array in a 400 x 400 white render view with the given
+    camera (then fitted to the data), and, with --baseline, compare its screenshot; a difference is
+    appended to `failures`."""
+    from paraview import simple
+    view = white_render_view([400, 400])
+    display = simple.Show(source, view)
+    simple.ColorBy(display, ("POINTS", color_array))
+    view.CameraPosition = list(camera_position)
+    view.CameraFocalPoint = list(focal_point)
+    view.CameraViewUp = list(view_up)
+    view.ResetCamera()
+    simple.Render(view)
+    if arguments.baseline and not screenshot_matches(view, arguments, [400, 400]):
+        failures.append("image differs from the baseline")

@@ -8,7 +8,6 @@ import plugin_test_common as common  # noqa: E402
 
 arguments = common.parse_arguments()
 common.load_plugin(arguments.plugin, globals())  # defines BoostedSurface()
-from paraview import simple  # noqa: E402
 
 failures = []
 
@@ -43,17 +42,8 @@ for array in ("lambda", "theta", "Normals", "TextureCoordinates"):
     if info.GetPointDataInformation().GetArrayInformation(array) is None:
         failures.append("point array %s is missing" % array)
 
-view = common.white_render_view([400, 400])
-display = simple.Show(source, view)
-simple.ColorBy(display, ("POINTS", "lambda"))
-view.CameraPosition = [3.0, 2.0, 2.5]
-view.CameraFocalPoint = [0.25, 0.0, 0.0]
-view.CameraViewUp = [0.0, 0.0, 1.0]
-view.ResetCamera()
-simple.Render(view)
-
-if arguments.baseline and not common.screenshot_matches(view, arguments, [400, 400]):
-    failures.append("image differs from the baseline")
+common.render_and_compare(source, "lambda", [3.0, 2.0, 2.5], [0.25, 0.0, 0.0], [0.0, 0.0, 1.0],
+                          arguments, failures)
 
 for failure in failures:
     print("FAILED:", failure)

@@ -8,10 +8,9 @@ import os
 import sys
 import unittest
 
-from vtkmodules.util.misc import calldata_type
-from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand
-
 from boostedsurfaces import vtkBoostedSurfaceSource
+
+import python_test_common as common
 
 # The horn test uses the parameters of the example script.
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Examples"))
@@ -37,20 +36,6 @@ def signed_area_xy(samples):
     for (x0, y0, _), (x1, y1, _) in zip(points, points[1:] + points[:1]):
         area += x0 * y1 - x1 * y0
     return 0.5 * area
-
-
-class ErrorRecorder:
-    """Observes vtkCommand.ErrorEvent: the messages go here instead of to the output window."""
-
-    def __init__(self, algorithm):
-        self.messages = []
-
-        # VTK looks for CallDataType on the callback itself: a function, not a callable object.
-        @calldata_type(VTK_STRING)
-        def record(caller, event, message):
-            self.messages.append(message)
-
-        algorithm.AddObserver(vtkCommand.ErrorEvent, record)
 
 
 class BoostedSurfaceSourceTest(unittest.TestCase):
@@ -126,7 +111,7 @@ class BoostedSurfaceSourceTest(unittest.TestCase):
 
     def test_zero_normal_gives_an_error_and_an_empty_output(self):
         source = vtkBoostedSurfaceSource()
-        errors = ErrorRecorder(source)
+        errors = common.ErrorRecorder(source)
         source.SetCircleNormal(0, 0, 0)
         source.Update()
         self.assertEqual(len(errors.messages), 1)

@@ -11,11 +11,11 @@ here rather than taken from Examples/, so that restyling an example does not bre
 import argparse
 import sys
 
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
-from vtkmodules.vtkTestingRendering import vtkTesting
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL render window)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 
 from boostedsurfaces import vtkBoostedSurfaceSource
+
+import python_test_common as common
 
 
 def actor_for(source, scalar_range):
@@ -61,24 +61,8 @@ def main():
     circles_actor.GetProperty().SetLineWidth(2)
     renderer.AddActor(circles_actor)
 
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(True)
-    window.SetMultiSamples(0)  # no antialiasing: keeps the image the same from run to run
-    window.SetSize(400, 300)
-    window.AddRenderer(renderer)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(-0.6, -0.5, 1.0)
-    camera.SetViewUp(0, 0, 1)
-    renderer.ResetCamera()
-    camera.Zoom(1.5)
-    window.Render()
-
-    testing = vtkTesting()
-    for argument in ("-V", args.baseline, "-T", args.output_dir):
-        testing.AddArgument(argument)
-    testing.SetRenderWindow(window)
-    result = testing.RegressionTest(args.threshold)
-    return 0 if result == vtkTesting.PASSED else 1
+    return common.regression_test(renderer, (-0.6, -0.5, 1.0), (0, 0, 1), 1.5, args.baseline,
+                                  args.output_dir, args.threshold)
 
 
 if __name__ == "__main__":

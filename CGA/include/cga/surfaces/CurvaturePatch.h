@@ -1,0 +1,66 @@
+// A plane patch bent by one of the paper's curvature operators (CurvatureOperators.h): the grid
+// point p(a, b) = origin + a u + b v, a in [-sizeU/2, sizeU/2], b in [-sizeV/2, sizeV/2], goes to
+// fn(<K up(p) ~K>_1) with K = exp(E(a, b)) by the Exact or Paper rule (SPEC.md section 2).
+#pragma once
+
+#include "cga/PointPairField.h"
+#include "cga/surfaces/CurvatureOperators.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace cga
+{
+enum class CurvatureMethod
+{
+  BentLine,           ///< eq 15, Fig 6: every u row bent with kappaU at its point on the v axis
+  TranslatedTangents, ///< eq 16, Fig 7
+  OsculatingCircles,  ///< eq 17-18, Fig 8: one control point at the origin
+  ControlPoints,      ///< eq 21-22, Fig 9-10
+  Linear,             ///< eq 24: generators at the ends of each u row (corners 1 and 2)
+  Bilinear            ///< eq 25-26, Fig 12: generators at the four corners
+};
+
+/// The curvatures of the paper's Fig 7 presets: (kappaU, kappaV).
+enum class CurvaturePreset
+{
+  Parabolic,  ///< (0.5, 0): a cylinder
+  Elliptic,   ///< (0.5, 0.25)
+  Umbilic,    ///< (0.5, 0.5): a sphere
+  Hyperbolic  ///< (-0.5, 0.5): a saddle
+};
+void presetCurvatures(CurvaturePreset preset, double& kappaU, double& kappaV);
+
+struct CurvaturePatch
+{
+  CurvatureMethod method = CurvatureMethod::TranslatedTangents;
+  ExponentialRule rule = ExponentialRule::Exact;
+  PatchFrame frame;
+  double sizeU = 4.0, sizeV = 4.0; // sizeV = 0: a single line
+  double kappaU = 0.5, kappaV = 0.5;
+  double falloff = 1.0;  // k of eq 21-22
+  double epsilon = 0.5; // added to every squared distance (see vtkCurvaturePatchSource)
+  /// Used by ControlPoints; normalize() them (validate() does).
+  std::vector<CurvatureControlPoint> controlPoints;
+  /// Linear uses corners 0 (start, a = -sizeU/2) and 1 (end); Bilinear all four:
+  /// 0 (-,-), 1 (+,-), 2 (-,+), 3 (+,+) in (a, b).
+  std::array<CornerGenerator, 4> corners{};
+
+  /// Empty when the patch can be built (normalizes the control points), otherwise the problem.
+  std::string validate();
+
+  /// Patch coordinates of row/column samples: a(column) and b(row).
+  double a(int column, int columns) const;
+  double b(int row, int rows) const;
+
+  /// Corner locations in space, in the order of `corners`.
+  std::array<Vec3, 4> cornerLocations() const;
+
+  /// E(a, b) and the local weight.
+  CurvatureGenerator generatorAt(double a, double b) const;
+
+  /// The image of p(a, b); false (out unchanged) when it is at infinity or not finite.
+  bool map(double a, double b, Vec3& out, double& weight) const;
+};
+} // namespace cga

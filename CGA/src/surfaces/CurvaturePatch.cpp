@@ -1,0 +1,142 @@
+#include "cga/surfaces/CurvaturePatch.h"
+
+#include "cga/PointSandwich.h"
+
+#include <cmath>
+
+namespace cga
+{
+void presetCurvatures(CurvaturePreset preset, double& kappaU, double& kappaV)
+{
+  switch (preset)
+  {
+    case CurvaturePreset::Parabolic:
+      kappaU = 0.5;
+      kappaV = 0.0;
+      break;
+    case CurvaturePreset::Elliptic:
+      kappaU = 0.5;
+      kappaV = 0.25;
+      break;
+    case CurvaturePreset::Umbilic:
+      kappaU = 0.5;
+      kappaV = 0.5;
+      break;
+    case CurvaturePreset::Hyperbolic:
+      kappaU = -0.5;
+      kappaV = 0.5;
+      break;
+  }
+}
+
+std::string CurvaturePatch::validate()
+{
+  if (!(std::isfinite(sizeU) && std::isfinite(sizeV)) || !(sizeU > 0.0) || !(sizeV >= 0.0))
+  {
+    return "the patch size must be finite, positive along u and not negative along v";
+  }
+  if (!std::isfinite(kappaU) || !std::isfinite(kappaV))
+  {
+    return "the curvatures must be finite";
+  }
+  if (!(std::isfinite(falloff) && falloff >= 0.0) || !(std::isfinite(epsilon) && epsilon > 0.0))
+  {
+    return "the falloff must be finite and >= 0, epsilon finite and > 0";
+  }
+  const std::string frameProblem = PatchFrame::fromDirections(frame.origin, frame.u, frame.v, frame);
+  if (!frameProblem.empty())
+  {
+    return frameProblem;
+  }
+  if (method == CurvatureMethod::ControlPoints)
+  {
+    if (controlPoints.empty())
+    {
+      return "the control points method needs at least one control point";
+    }
+    for (CurvatureControlPoint& c : controlPoints)
+    {
+      const std::string problem = c.normalize();
+      if (!problem.empty())
+      {
+        return problem;
+      }
+    }
+  }
+  if (method == CurvatureMethod::Linear || method == CurvatureMethod::Bilinear)
+  {
+    for (const CornerGenerator& g : corners)
+    {
+      if (!isFinite(g.direction) || !std::isfinite(g.weight))
+      {
+        return "the corner directions and weights must be finite";
+      }
+    }
+  }
+  return {};
+}
+
+double CurvaturePatch::a(int column, int columns) const
+{
+  return columns > 1 ? sizeU * (static_cast<double>(column) / (columns - 1) - 0.5) : 0.0;
+}
+
+double CurvaturePatch::b(int row, int rows) const
+{
+  return rows > 1 ? sizeV * (static_cast<double>(row) / (rows - 1) - 0.5) : 0.0;
+}
+
+std::array<Vec3, 4> CurvaturePatch::cornerLocations() const
+{
+  const double hu = 0.5 * sizeU, hv = 0.5 * sizeV;
+  return { frame.at(-hu, -hv), frame.at(hu, -hv), frame.at(-hu, hv), frame.at(hu, hv) };
+}
+
+CurvatureGenerator CurvaturePatch::generatorAt(double a, double b) const
+{
+  switch (method)
+  {
+    case CurvatureMethod::BentLine:
+      return bentLine(frame, kappaU, b);
+    case CurvatureMethod::TranslatedTangents:
+      return translatedTangents(frame, kappaU, kappaV, a, b);
+    case CurvatureMethod::OsculatingCircles:
+    {
+      CurvatureControlPoint c{ frame.origin, frame.normal, frame.u, kappaU, kappaV };
+      return osculatingCircles(c, frame.at(a, b), epsilon);
+    }
+    case CurvatureMethod::ControlPoints:
+      return cga::controlPoints(
+        controlPoints.data(), controlPoints.size(), frame.at(a, b), falloff, epsilon);
+    case CurvatureMethod::Linear:
+    {
+      // each row carries the two generators along (x_i + b v): every row is the same curve
+      const double hu = 0.5 * sizeU;
+      const double t = 0.5 + a / sizeU;
+      return linearInterpolation(frame.at(-hu, b), corners[0], frame.at(hu, b), corners[1], t);
+    }
+    case CurvatureMethod::Bilinear:
+    {
+      const std::array<Vec3, 4> x = cornerLocations();
+      const double t = 0.5 + a / sizeU;
+      const double s = sizeV > 0.0 ? 0.5 + b / sizeV : 0.0;
+      return bilinearInterpolation(x.data(), corners.data(), s, t);
+    }
+  }
+  return {};
+}
+
+bool CurvaturePatch::map(double a, double b, Vec3& out, double& weight) const
+{
+  const CurvatureGenerator g = generatorAt(a, b);
+  const Even k = exponential(g.exponent, rule);
+  Vec3 image;
+  if (!sandwichPoint(k, frame.at(a, b), image) || !isFinite(image))
+  {
+    return false;
+  }
+  out = image;
+  weight = g.weight;
+  return true;
+}
+} // namespace cga

@@ -1,0 +1,236 @@
+/**
+ * @class   vtkCurvaturePatchSource
+ * @brief   a plane patch bent by point-pair curvature operators (Colapinto 2014, eq 15-26, Fig 6-12)
+ *
+ * The patch p(a, b) = Origin + a u + b v, a in [-Size[0]/2, Size[0]/2], b in [-Size[1]/2,
+ * Size[1]/2] (u, v the orthonormalized UDirection and VDirection, n = u x v) is sampled on a
+ * (UResolution + 1) x (VResolution + 1) grid and every sample is moved by a boost
+ * K = exp(E(a, b)): p' = fn(<K up(p) ~K>_1). E depends on the Method (SPEC.md section 3):
+ *
+ * - BENT_LINE (eq 15, Fig 6): each u row is bent with curvature KappaU at its point on the v axis,
+ *   K = 1 - KappaU/2 tau(p, n). A row becomes the circle of radius 1/|KappaU| tangent at p, center
+ *   p - n/KappaU. With Size[1] = 0 the output is one line.
+ * - TRANSLATED_TANGENTS (eq 16, Fig 7): K = exp(-1/2 (KappaU tau(o + b v, n) + KappaV tau(o + a u, n))).
+ *   The principal curvatures at Origin are KappaU along u and KappaV along v.
+ * - OSCULATING_CIRCLES (eq 17-18, Fig 8): K = exp(-(KappaU/(d_u^2 + eps) + KappaV/(d_v^2 + eps)) tau(o, n)),
+ *   d the eq 18 distance to the osculating circles at Origin.
+ * - CONTROL_POINTS (eq 21-22, Fig 9-10): the same, summed over the control points, each weighted
+ *   by 1/(Falloff |p - x_i|^2 + Epsilon).
+ * - LINEAR (eq 24): generators 1 and 2 at the two ends of each u row, interpolated along the row.
+ * - BILINEAR (eq 25-26, Fig 12): the four corner generators interpolated over the grid.
+ *
+ * A positive curvature puts the center of curvature on the -n side; zero curvature leaves the
+ * patch flat. CurvaturePreset (other than CUSTOM) replaces KappaU, KappaV by the Fig 7 values.
+ * ExponentialRule chooses the exact exponential (default) or the paper's eq 9-10.
+ *
+ * Output: quads (SURFACE) or one polyline per u row (LINES; also whenever Size[1] = 0), with point
+ * normals, texture coordinates and the point arrays "u" (a), "v" (b) and "GeneratorWeight"
+ * (sum of w_i in E = -sum_i w_i tau_i, tau_i of unit direction). Samples whose image is at
+ * infinity, or farther than ClipRadius from Origin, are dropped with their cells.
+ *
+ * Pieces: the rows are divided among the requested pieces (neighbouring bands repeat their shared
+ * row of points; cells are never repeated; LINES partitions the points exactly).
+ *
+ * Invalid parameters (NaN or infinite values, Size[0] <= 0, Size[1] < 0, zero or parallel
+ * directions, CONTROL_POINTS without control points, a control point whose normal is zero or
+ * parallel to its u direction) produce an error and an empty output.
+ */
+#ifndef vtkCurvaturePatchSource_h
+#define vtkCurvaturePatchSource_h
+
+#include "BoostedSurfacesSourcesModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <array>  // for control points
+#include <vector> // for control points
+
+class BOOSTEDSURFACESSOURCES_EXPORT vtkCurvaturePatchSource : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkCurvaturePatchSource* New();
+  vtkTypeMacro(vtkCurvaturePatchSource, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Methods
+  {
+    BENT_LINE = 0,
+    TRANSLATED_TANGENTS = 1,
+    OSCULATING_CIRCLES = 2,
+    CONTROL_POINTS = 3,
+    LINEAR = 4,
+    BILINEAR = 5
+  };
+  enum Presets
+  {
+    CUSTOM = 0,
+    PARABOLIC = 1,  ///< (0.5, 0)
+    ELLIPTIC = 2,   ///< (0.5, 0.25)
+    UMBILIC = 3,    ///< (0.5, 0.5)
+    HYPERBOLIC = 4  ///< (-0.5, 0.5)
+  };
+  enum ExponentialRules
+  {
+    EXACT = 0,
+    PAPER = 1
+  };
+  enum OutputTypes
+  {
+    SURFACE = 0,
+    LINES = 1
+  };
+
+  ///@{
+  /// The construction (default TRANSLATED_TANGENTS).
+  vtkSetClampMacro(Method, int, BENT_LINE, BILINEAR);
+  vtkGetMacro(Method, int);
+  void SetMethodToBentLine() { this->SetMethod(BENT_LINE); }
+  void SetMethodToTranslatedTangents() { this->SetMethod(TRANSLATED_TANGENTS); }
+  void SetMethodToOsculatingCircles() { this->SetMethod(OSCULATING_CIRCLES); }
+  void SetMethodToControlPoints() { this->SetMethod(CONTROL_POINTS); }
+  void SetMethodToLinear() { this->SetMethod(LINEAR); }
+  void SetMethodToBilinear() { this->SetMethod(BILINEAR); }
+  ///@}
+
+  ///@{
+  /// EXACT (default): the true exponential; PAPER: eq 9-10 (not a versor for non-blade sums).
+  vtkSetClampMacro(ExponentialRule, int, EXACT, PAPER);
+  vtkGetMacro(ExponentialRule, int);
+  ///@}
+
+  ///@{
+  /// The patch: center (0,0,0), u direction (1,0,0), v direction (0,1,0) (made orthogonal to u),
+  /// size (4, 4) along u and v. Size[1] = 0 gives a single line.
+  vtkSetVector3Macro(Origin, double);
+  vtkGetVector3Macro(Origin, double);
+  vtkSetVector3Macro(UDirection, double);
+  vtkGetVector3Macro(UDirection, double);
+  vtkSetVector3Macro(VDirection, double);
+  vtkGetVector3Macro(VDirection, double);
+  vtkSetVector2Macro(Size, double);
+  vtkGetVector2Macro(Size, double);
+  ///@}
+
+  ///@{
+  /// Intervals along u and v (defaults 32, 32).
+  vtkSetClampMacro(UResolution, int, 1, 100000);
+  vtkGetMacro(UResolution, int);
+  vtkSetClampMacro(VResolution, int, 1, 100000);
+  vtkGetMacro(VResolution, int);
+  ///@}
+
+  ///@{
+  /// Curvatures along u and v at Origin (defaults 0.5, 0.5); KappaU alone for BENT_LINE.
+  vtkSetMacro(KappaU, double);
+  vtkGetMacro(KappaU, double);
+  vtkSetMacro(KappaV, double);
+  vtkGetMacro(KappaV, double);
+  /// CUSTOM (default) uses KappaU, KappaV; the others use the Fig 7 values instead.
+  vtkSetClampMacro(CurvaturePreset, int, CUSTOM, HYPERBOLIC);
+  vtkGetMacro(CurvaturePreset, int);
+  ///@}
+
+  ///@{
+  /// k of eq 21-22 (default 1) and the epsilon added to every squared distance (default 0.5:
+  /// smooth bumps; small values give sharp pinches, as the weights grow like 1/d^2 near the
+  /// osculating circles and control points).
+  vtkSetClampMacro(Falloff, double, 0.0, 1e12);
+  vtkGetMacro(Falloff, double);
+  vtkSetClampMacro(Epsilon, double, 1e-12, 1e12);
+  vtkGetMacro(Epsilon, double);
+  ///@}
+
+  ///@{
+  /// Control points of CONTROL_POINTS: location, normal, u direction, kappa_u, kappa_v.
+  void AddControlPoint(double x, double y, double z, double nx, double ny, double nz, double ux,
+    double uy, double uz, double kappaU, double kappaV);
+  /// Sets control point i (the list grows as needed; the ParaView table calls this).
+  void SetControlPoint(int i, double x, double y, double z, double nx, double ny, double nz,
+    double ux, double uy, double uz, double kappaU, double kappaV);
+  /// The 11 values of control point i (nothing is written when i is out of range).
+  void GetControlPoint(int i, double values[11]);
+  void RemoveAllControlPoints();
+  int GetNumberOfControlPoints() { return static_cast<int>(this->ControlPoints.size()); }
+  ///@}
+
+  ///@{
+  /// For interactive editing: when SelectedControlPoint is a valid index (default -1: none), that
+  /// control point's location is replaced by SelectedControlPointLocation.
+  vtkSetClampMacro(SelectedControlPoint, int, -1, 1000000);
+  vtkGetMacro(SelectedControlPoint, int);
+  vtkSetVector3Macro(SelectedControlPointLocation, double);
+  vtkGetVector3Macro(SelectedControlPointLocation, double);
+  ///@}
+
+  ///@{
+  /// Corner generators of LINEAR (corners 1, 2) and BILINEAR (1: (-u,-v), 2: (+u,-v), 3: (-u,+v),
+  /// 4: (+u,+v)): direction (default (0,0,1)) and weight (defaults 0.5, -0.5, -0.5, 0.5).
+  vtkSetVector3Macro(Corner1Direction, double);
+  vtkGetVector3Macro(Corner1Direction, double);
+  vtkSetVector3Macro(Corner2Direction, double);
+  vtkGetVector3Macro(Corner2Direction, double);
+  vtkSetVector3Macro(Corner3Direction, double);
+  vtkGetVector3Macro(Corner3Direction, double);
+  vtkSetVector3Macro(Corner4Direction, double);
+  vtkGetVector3Macro(Corner4Direction, double);
+  vtkSetVector4Macro(CornerWeights, double);
+  vtkGetVector4Macro(CornerWeights, double);
+  ///@}
+
+  ///@{
+  /// Samples farther than this from Origin are cut away (default 100).
+  vtkSetClampMacro(ClipRadius, double, 1e-6, 1e12);
+  vtkGetMacro(ClipRadius, double);
+  ///@}
+
+  ///@{
+  /// SURFACE (default) or LINES (one polyline per u row).
+  vtkSetClampMacro(OutputType, int, SURFACE, LINES);
+  vtkGetMacro(OutputType, int);
+  void SetOutputTypeToSurface() { this->SetOutputType(SURFACE); }
+  void SetOutputTypeToLines() { this->SetOutputType(LINES); }
+  ///@}
+
+  ///@{
+  /// vtkAlgorithm::SINGLE_PRECISION or DOUBLE_PRECISION (default) for the output points.
+  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
+  vtkGetMacro(OutputPointsPrecision, int);
+  ///@}
+
+protected:
+  vtkCurvaturePatchSource();
+  ~vtkCurvaturePatchSource() override = default;
+
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int Method = TRANSLATED_TANGENTS;
+  int ExponentialRule = EXACT;
+  double Origin[3] = { 0.0, 0.0, 0.0 };
+  double UDirection[3] = { 1.0, 0.0, 0.0 };
+  double VDirection[3] = { 0.0, 1.0, 0.0 };
+  double Size[2] = { 4.0, 4.0 };
+  int UResolution = 32;
+  int VResolution = 32;
+  double KappaU = 0.5;
+  double KappaV = 0.5;
+  int CurvaturePreset = CUSTOM;
+  double Falloff = 1.0;
+  double Epsilon = 0.5;
+  std::vector<std::array<double, 11>> ControlPoints;
+  int SelectedControlPoint = -1;
+  double SelectedControlPointLocation[3] = { 0.0, 0.0, 0.0 };
+  double Corner1Direction[3] = { 0.0, 0.0, 1.0 };
+  double Corner2Direction[3] = { 0.0, 0.0, 1.0 };
+  double Corner3Direction[3] = { 0.0, 0.0, 1.0 };
+  double Corner4Direction[3] = { 0.0, 0.0, 1.0 };
+  double CornerWeights[4] = { 0.5, -0.5, -0.5, 0.5 };
+  double ClipRadius = 100.0;
+  int OutputType = SURFACE;
+  int OutputPointsPrecision = DOUBLE_PRECISION;
+
+private:
+  vtkCurvaturePatchSource(const vtkCurvaturePatchSource&) = delete;
+  void operator=(const vtkCurvaturePatchSource&) = delete;
+};
+
+#endif

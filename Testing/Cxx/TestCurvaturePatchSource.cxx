@@ -1,0 +1,283 @@
+// Tests of vtkCurvaturePatchSource against the closed forms of SPEC.md section 3 items 5-6 (the
+// bent line is a circle, a zero curvature leaves the plane flat), and its arrays, pieces,
+// clamping and bad input.
+#include "vtkCurvaturePatchSource.h"
+
+#include "ErrorCounter.h"
+#include "vtkDataArray.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+bool allFinite(vtkPolyData* output)
+{
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    output->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
+
+TEST(CurvaturePatchSource, DefaultsGiveAGridWithAllArrays)
+{
+  vtkNew<vtkCurvaturePatchSource> source;
+  source->Update();
+  vtkPolyData* output = source->GetOutput();
+  EXPECT_EQ(output->GetNumberOfPoints(), 33 * 33);
+  EXPECT_EQ(output->GetNumberOfPolys(), 32 * 32);
+  for (const char* name : { "u", "v", "GeneratorWeight" })
+  {
+    EXPECT_NE(output->GetPointData()->GetArray(name), nullptr) << name;
+  }
+  ASSERT_NE(output->GetPointData()->GetNormals(), nullptr);
+  ASSERT_NE(output->GetPointData()->GetTCoords(), nullptr);
+  double range[2];
+  output->GetPointData()->GetArray("u")->GetRange(range);
+  EXPECT_DOUBLE_EQ(range[0], -2.0);
+  EXPECT_DOUBLE_EQ(range[1], 2.0);
+  // eq 16: the weight is (kappa_u + kappa_v)/2 everywhere
+  output->GetPointData()->GetArray("GeneratorWeight")->GetRange(range);
+  EXPECT_DOUBLE_EQ(range[0], 0.5);
+  EXPECT_DOUBLE_EQ(range[1], 0.5);
+  // the umbilic default bends away from the normal +z: the origin is the highest point, and its
+  // normal is +z
+  double bounds[6];
+  output->GetBounds(bounds);
+  EXPECT_NEAR(bounds[5], 0.0, 1e-12);
+  EXPECT_LT(bounds[4], -0.5);
+  const vtkIdType center = 16 * 33 + 16;
+  double n[3];
+  output->GetPointData()->GetNormals()->GetTuple(center, n);
+  EXPECT_NEAR(n[2], 1.0, 1e-6);
+}
+
+// Eq 15 through the VTK class: every row of a bent strip lies on a circle of radius 1/|kappa|
+// centered at (0, b, 0) - n/kappa, for a tilted patch.
+TEST(CurvaturePatchSource, BentStripRowsAreCircles)
+{
+  vtkNew<vtkCurvaturePatchSource> source;
+  source->SetMethodToBentLine();
+  source->SetOrigin(1, 2, 3);
+  source->SetUDirection(0, 1, 1);
+  source->SetVDirection(1, 0, 0);
+  source->SetKappaU(0.5);
+  source->SetSize(10, 2);
+  source->SetVResolution(4);
+  source->Update();
+  vtkPolyData* output = source->GetOutput();
+  const double s = std::sqrt(0.5);
+  const double u[3] = { 0, s, s }, v[3] = { 1, 0, 0 };
+  double n[3];
+  vtkMath::Cross(u, v, n);
+  vtkDataArray* bs = output->GetPointData()->GetArray("v");
+  ASSERT_EQ(output->GetNumberOfPoints(), 5 * 33);
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+  {
+    double p[3], c[3];
+    output->GetPoint(i, p);
+    const double b = bs->GetTuple1(i);
+    for (int k = 0; k < 3; ++k)
+    {
+      c[k] = (k == 0 ? 1.0 : k == 1 ? 2.0 : 3.0) + b * v[k] - n[k] / 0.5;
+    }
+    EXPECT_NEAR(std::sqrt(vtkMath::Distance2BetweenPoints(p, c)), 2.0, 1e-9);
+  }
+}
+
+TEST(CurvaturePatchSource, ZeroCurvatureAndPresets)
+{
+  vtkNew<vtkCurvaturePatchSource> source;
+  source->SetKappaU(0.0);
+  source->SetKappaV(0.0);
+  source->Update();
+  double bounds[6];
+  source->GetOutput()->GetBounds(bounds);
+  EXPECT_DOUBLE_EQ(bounds[0], -2.0);
+  EXPECT_DOUBLE_EQ(bounds[3], 2.0);
+  EXPECT_EQ(bounds[4], 0.0);
+  EXPECT_EQ(bounds[5], 0.0);
+
+  // the hyperbolic preset overrides the zero curvatures: a saddle above and below the plane
+  source->SetCurvaturePreset(vtkCurvaturePatchSource::HYPERBOLIC);
+  source->Update();
+  source->GetOutput()->GetBounds(bounds);
+  EXPECT_LT(bounds[4], -0.1);
+  EXPECT_GT(bounds[5], 0.1);
+}
+
+TEST(CurvaturePatchSource, SingleLineWhenTheWidthIsZero)
+{
+  vtkNew<vtkCurvaturePatchSource> source;
+  source->SetMethodToBentLine();
+  source->SetSize(6.0, 0.0);
+  source->SetUResolution(60);
+  source->Update();
+  EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 61);
+  EXPECT_EQ(source->GetOutput()->GetNumberOfLines(), 1);
+}
+
+TEST(CurvaturePatchSource, HugeCurvatureStaysFinite)
+{
+  vtkNew<vtkCurvaturePatchSource> source;
+  source->SetMethodToBentLine();
+  source->SetKappaU(1e8);
+  source->Update();
+  EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 33 * 33);
+  EXPECT_TRUE(allFinite(source->GetOutput()));
+}
+
+TEST(CurvaturePatchSource, EveryMethodGivesFinitePoints)
+{
+  for (int method = vtkCurvaturePatchSource::BENT_LINE; method <= vtkCurvaturePatchSource::BILINEAR;
+       ++method)
+  {
+    for (int rule : { vtkCurvaturePatchSource::EXACT, vtkCurvaturePatchSource::PAPER })
+    {
+      vtkNew<vtkCurvaturePatchSource> source;
+      source->SetMethod(method);
+      source->SetExponentialRule(rule);
+      source->AddControlPoint(1, 1, 0, 0, 0, 1, 1, 0, 0, 0.5, -0.5);
+      source->AddControlPoint(1, 1, 0, 0, 0, 1, 1, 0, 0, 0.5, -0.5); // coincident: they add
+      source->AddControlPoint(-1, 0, 0, 0, 1, 1, 1, 0, 0, 1.0, 0.3);
+      source->SetCorner2Direction(1, 0, 0);
+      source->Update();
+      EXPECT_GT(source->GetOutput()->GetNumberOfPolys(), 0) << method;
+      EXPECT_TRUE(allFinite(source->GetOutput())) << method;
+    }
+  }
+}
+
+TEST(CurvaturePatchSource, SelectedControlPointMovesItsLocation)
+{
+  vtkNew<vtkCurvaturePatchSource> moved, selected;
+  for (vtkCurvaturePatchSource* s : { moved.Get(), selected.Get() })
+  {
+    s->SetMethodToControlPoints();
+    s->AddControlPoint(0, 0, 0, 0, 0, 1, 1, 0, 0, 0.5, 0.5);
+  }
+  moved->SetControlPoint(0, 0.5, -0.5, 0, 0, 0, 1, 1, 0, 0, 0.5, 0.5);
+  selected->SetSelectedControlPoint(0);
+  selected->SetSelectedControlPointLocation(0.5, -0.5, 0);
+  moved->Update();
+  selected->Update();
+  ASSERT_EQ(moved->GetOutput()->GetNumberOfPoints(), selected->GetOutput()->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < moved->GetOutput()->GetNumberOfPoints(); ++i)
+  {
+    double a[3], b[3];
+    moved->GetOutput()->GetPoint(i, a);
+    selected->GetOutput()->GetPoint(i, b);
+    EXPECT_EQ(vtkMath::Distance2BetweenPoints(a, b), 0.0);
+  }
+  double values[11] = {};
+  selected->GetControlPoint(0, values);
+  EXPECT_EQ(values[9], 0.5);
+  EXPECT_EQ(selected->GetNumberOfControlPoints(), 1);
+}
+
+TEST(CurvaturePatchSource, PiecesPartitionTheCells)
+{
+  for (int type : { vtkCurvaturePatchSource::SURFACE, vtkCurvaturePatchSource::LINES })
+  {
+    vtkNew<vtkCurvaturePatchSource> whole;
+    whole->SetOutputType(type);
+    whole->SetVResolution(13);
+    whole->Update();
+    for (int pieces : { 2, 3, 20 })
+    {
+      vtkIdType cells = 0, points = 0;
+      for (int piece = 0; piece < pieces; ++piece)
+      {
+        vtkNew<vtkCurvaturePatchSource> part;
+        part->SetOutputType(type);
+        part->SetVResolution(13);
+        part->UpdatePiece(piece, pieces, 0);
+        cells += part->GetOutput()->GetNumberOfCells();
+        points += part->GetOutput()->GetNumberOfPoints();
+      }
+      EXPECT_EQ(cells, whole->GetOutput()->GetNumberOfCells()) << pieces;
+      if (type == vtkCurvaturePatchSource::LINES)
+      {
+        EXPECT_EQ(points, whole->GetOutput()->GetNumberOfPoints());
+      }
+    }
+  }
+}
+
+TEST(CurvaturePatchSource, ClampsAndPrecision)
+{
+  vtkNew<vtkCurvaturePatchSource> source;
+  source->SetUResolution(0);
+  EXPECT_EQ(source->GetUResolution(), 1);
+  source->SetMethod(42);
+  EXPECT_EQ(source->GetMethod(), vtkCurvaturePatchSource::BILINEAR);
+  source->SetCurvaturePreset(-3);
+  EXPECT_EQ(source->GetCurvaturePreset(), vtkCurvaturePatchSource::CUSTOM);
+  source->SetEpsilon(0.0);
+  EXPECT_GT(source->GetEpsilon(), 0.0);
+  source->SetFalloff(-1.0);
+  EXPECT_EQ(source->GetFalloff(), 0.0);
+  source->SetOutputPointsPrecision(vtkAlgorithm::SINGLE_PRECISION);
+  source->Update();
+  EXPECT_EQ(source->GetOutput()->GetPoints()->GetDataType(), VTK_FLOAT);
+  source->AddControlPoint(1, 2, 3, 0, 0, 1, 1, 0, 0, 0.5, 0.25);
+  std::ostringstream printed;
+  source->Print(printed);
+  EXPECT_NE(printed.str().find("Method: BILINEAR"), std::string::npos);
+  EXPECT_NE(printed.str().find("ControlPoint: (1, 2, 3, 0, 0, 1, 1, 0, 0, 0.5, 0.25)"), std::string::npos);
+}
+
+TEST(CurvaturePatchSource, BadParametersGiveAnErrorAndAnEmptyOutput)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<std::function<void(vtkCurvaturePatchSource*)>> breakers = {
+    [](vtkCurvaturePatchSource* s) { s->SetSize(0, 4); },
+    [](vtkCurvaturePatchSource* s) { s->SetSize(-1, 4); },
+    [](vtkCurvaturePatchSource* s) { s->SetSize(4, -1); },
+    [nan](vtkCurvaturePatchSource* s) { s->SetOrigin(nan, 0, 0); },
+    [nan](vtkCurvaturePatchSource* s) { s->SetKappaV(nan); },
+    [](vtkCurvaturePatchSource* s) { s->SetKappaU(std::numeric_limits<double>::infinity()); },
+    [](vtkCurvaturePatchSource* s) { s->SetUDirection(0, 0, 0); },
+    [](vtkCurvaturePatchSource* s) { s->SetVDirection(2, 0, 0); },
+    [](vtkCurvaturePatchSource* s) { s->SetMethodToControlPoints(); },
+    [](vtkCurvaturePatchSource* s) {
+      s->SetMethodToControlPoints();
+      s->AddControlPoint(0, 0, 0, 0, 0, 1, 0, 0, 3, 0.5, 0.5); // u along the normal
+    },
+    [nan](vtkCurvaturePatchSource* s) {
+      s->SetMethodToControlPoints();
+      s->AddControlPoint(0, 0, 0, 0, 0, 1, 1, 0, 0, nan, 0.5);
+    },
+    [nan](vtkCurvaturePatchSource* s) {
+      s->SetMethodToBilinear();
+      s->SetCorner3Direction(nan, 0, 1);
+    },
+  };
+  for (size_t k = 0; k < breakers.size(); ++k)
+  {
+    vtkNew<vtkCurvaturePatchSource> source;
+    ErrorCounter errors(source);
+    breakers[k](source);
+    source->Update();
+    EXPECT_EQ(errors.count, 1) << "case " << k;
+    EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0) << "case " << k;
+  }
+}
