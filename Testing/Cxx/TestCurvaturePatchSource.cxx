@@ -3,7 +3,7 @@
 // clamping and bad input.
 #include "vtkCurvaturePatchSource.h"
 
-#include "ErrorCounter.h"
+#include "EventCounter.h"
 #include "vtkDataArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -274,10 +274,10 @@ TEST(CurvaturePatchSource, BadParametersGiveAnErrorAndAnEmptyOutput)
   for (size_t k = 0; k < breakers.size(); ++k)
   {
     vtkNew<vtkCurvaturePatchSource> source;
-    ErrorCounter errors(source);
+    EventCounter events(source);
     breakers[k](source);
     source->Update();
-    EXPECT_EQ(errors.count, 1) << "case " << k;
+    EXPECT_EQ(events.errors, 1) << "case " << k;
     EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0) << "case " << k;
   }
 }

@@ -3,10 +3,9 @@
 // (SPEC.md section 2), null image points and angle preservation; and its bad-input behaviour.
 #include "vtkPointPairDeformationFilter.h"
 
-#include "vtkCallbackCommand.h"
+#include "EventCounter.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -41,35 +40,6 @@ struct Generator
 {
   Vec3 location, direction;
   double weight;
-};
-
-// Counts the error and warning events of one object (and keeps their text quiet).
-struct EventCounter
-{
-  int errors = 0;
-  int warnings = 0;
-  std::string lastWarning;
-  static void Callback(vtkObject*, unsigned long event, void* clientData, void* callData)
-  {
-    auto* self = static_cast<EventCounter*>(clientData);
-    if (event == vtkCommand::ErrorEvent)
-    {
-      ++self->errors;
-    }
-    else
-    {
-      ++self->warnings;
-      self->lastWarning = static_cast<const char*>(callData);
-    }
-  }
-  void Watch(vtkObject* object)
-  {
-    vtkNew<vtkCallbackCommand> command;
-    command->SetCallback(&EventCounter::Callback);
-    command->SetClientData(this);
-    object->AddObserver(vtkCommand::ErrorEvent, command);
-    object->AddObserver(vtkCommand::WarningEvent, command);
-  }
 };
 
 class Random
@@ -518,8 +488,7 @@ TEST(PointPairDeformationFilter, NonFinitePointsPassThroughWithOneWarning)
   mesh->GetPoints()->SetPoint(7, 0, inf, 0);
   mesh->GetPoints()->SetPoint(11, 0, 0, -inf);
   vtkNew<vtkPointPairDeformationFilter> filter;
-  EventCounter events;
-  events.Watch(filter);
+  EventCounter events(filter);
   filter->SetInputData(mesh);
   addGenerators(filter, randomGenerators(random, 3, 0.5));
   filter->Update();
@@ -552,8 +521,7 @@ TEST(PointPairDeformationFilter, ZeroDirectionsAreIgnoredWithAWarning)
   Random random(20);
   auto mesh = randomMesh(random, 10, 1.0);
   vtkNew<vtkPointPairDeformationFilter> withZero, without;
-  EventCounter events;
-  events.Watch(withZero);
+  EventCounter events(withZero);
   for (vtkPointPairDeformationFilter* filter : { withZero.Get(), without.Get() })
   {
     filter->SetInputData(mesh);
@@ -599,8 +567,7 @@ TEST(PointPairDeformationFilter, HugeWeightsGiveFiniteOutput)
     for (int rule : { vtkPointPairDeformationFilter::EXACT, vtkPointPairDeformationFilter::PAPER })
     {
       vtkNew<vtkPointPairDeformationFilter> filter;
-      EventCounter events; // a warning about points left in place is allowed
-      events.Watch(filter);
+      EventCounter events(filter); // a warning about points left in place is allowed
       filter->SetInputData(mesh);
       filter->AddGenerator(0.1, 0, 0, 0, 0, 1, weight);
       filter->AddGenerator(0, 0.3, 0, 1, 0, 0, -weight);
@@ -711,8 +678,7 @@ TEST(PointPairDeformationFilter, BadGeneratorArraysAreErrorsWithEmptyOutput)
          Case{ "Direction", "Direction", true, "1 component" } })
   {
     vtkNew<vtkPointPairDeformationFilter> filter;
-    EventCounter events;
-    events.Watch(filter);
+    EventCounter events(filter);
     filter->SetInputData(mesh);
     filter->SetGeneratorsData(generators);
     filter->SetGeneratorDirectionArrayName(c.direction);
@@ -758,8 +724,7 @@ TEST(PointPairDeformationFilter, NonFiniteStrengthOrNaNParametersAreErrors)
   for (int which = 0; which < 3; ++which)
   {
     vtkNew<vtkPointPairDeformationFilter> filter;
-    EventCounter events;
-    events.Watch(filter);
+    EventCounter events(filter);
     filter->SetInputData(mesh);
     filter->AddGenerator(0, 0, 0, 1, 0, 0, 0.4);
     if (which == 0)
