@@ -77,6 +77,17 @@ std::vector<Generator> randomGenerators(Random& random, int count, double maxWei
   return generators;
 }
 
+// The same generators as the kernel's type, for a cga::PointPairField reference.
+std::vector<cga::PointPairGenerator> kernelGeneratorsOf(const std::vector<Generator>& generators)
+{
+  std::vector<cga::PointPairGenerator> kernelGenerators;
+  for (const Generator& g : generators)
+  {
+    kernelGenerators.push_back({ g.location, g.direction, g.weight });
+  }
+  return kernelGenerators;
+}
+
 // Random points joined into triangles (every three consecutive points), with a scalar point
 // array, a Normals array and a cell array, so that the passing of arrays can be checked.
 vtkNew<vtkPolyData> randomMesh(Random& random, int triangles, double half, int pointType = VTK_DOUBLE)
@@ -216,12 +227,7 @@ TEST(PointPairDeformationFilter, ExactImagesAreNullPointsAndPaperImagesAreNot)
 {
   Random random(12);
   const auto generators = randomGenerators(random, 6, 0.8);
-  std::vector<cga::PointPairGenerator> kernelGenerators;
-  for (const Generator& g : generators)
-  {
-    kernelGenerators.push_back({ g.location, g.direction, g.weight });
-  }
-  const cga::PointPairField field(kernelGenerators, 1.0, 0.05);
+  const cga::PointPairField field(kernelGeneratorsOf(generators), 1.0, 0.05);
   double exactDefect = 0.0, paperDefect = 0.0;
   for (int n = 0; n < 200; ++n)
   {
@@ -300,12 +306,7 @@ TEST(PointPairDeformationFilter, EachPointsExactBoostKeepsAnglesAroundIt)
 {
   Random random(14);
   const auto generators = randomGenerators(random, 5, 0.5);
-  std::vector<cga::PointPairGenerator> kernelGenerators;
-  for (const Generator& g : generators)
-  {
-    kernelGenerators.push_back({ g.location, g.direction, g.weight });
-  }
-  const cga::PointPairField field(kernelGenerators, 1.0, 0.05);
+  const cga::PointPairField field(kernelGeneratorsOf(generators), 1.0, 0.05);
   auto mesh = randomMesh(random, 20, 1.5);
   vtkNew<vtkPointPairDeformationFilter> filter;
   filter->SetInputData(mesh);

@@ -84,6 +84,13 @@ def render_and_compare(source, color_array, camera_position, focal_point, view_u
     view = white_render_view([400, 400])
     display = simple.Show(source, view)
     simple.ColorBy(display, ("POINTS", color_array))
+    look_and_compare(view, camera_position, focal_point, view_up, arguments, failures)
+
+
+def look_and_compare(view, camera_position, focal_point, view_up, arguments, failures):
+    """Place the camera of a 400 x 400 `view` (then fit it to the data), render, and, with
+    --baseline, compare its screenshot; a difference is appended to `failures`."""
+    from paraview import simple
     view.CameraPosition = list(camera_position)
     view.CameraFocalPoint = list(focal_point)
     view.CameraViewUp = list(view_up)

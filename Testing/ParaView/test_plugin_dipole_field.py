@@ -92,13 +92,6 @@ contour_display = simple.Show(contours, view)
 simple.ColorBy(contour_display, None)
 contour_display.AmbientColor = contour_display.DiffuseColor = [0.0, 0.0, 0.0]
 contour_display.LineWidth = 2
-view.CameraPosition = [0, 0, 10]
-view.CameraFocalPoint = [0, 0, 0]
-view.CameraViewUp = [0, 1, 0]
-view.ResetCamera()
-simple.Render(view)
-
-if arguments.baseline and not common.screenshot_matches(view, arguments, [400, 400]):
-    failures.append("image differs from the baseline")
+common.look_and_compare(view, [0, 0, 10], [0, 0, 0], [0, 1, 0], arguments, failures)
 
 common.report(failures, "Dipole Field through the plugin")

@@ -97,13 +97,7 @@ normals = simple.GenerateSurfaceNormals(Input=deformation, Splitting=0)
 display = simple.Show(normals, view)
 simple.ColorBy(display, ("POINTS", "Displacement", "Magnitude"))
 display.LookupTable.RescaleTransferFunction(0.0, 0.6)
-view.CameraPosition = [0.6, -4.0, 2.4]
-view.CameraFocalPoint = [0.0, 0.0, 0.0]
-view.CameraViewUp = [0.0, 0.0, 1.0]
-view.ResetCamera()
-simple.Render(view)
-
-if arguments.baseline and not common.screenshot_matches(view, arguments, [400, 400]):
-    failures.append("image differs from the baseline")
+common.look_and_compare(view, [0.6, -4.0, 2.4], [0.0, 0.0, 0.0], [0.0, 0.0, 1.0], arguments,
+                        failures)
 
 common.report(failures, "Point Pair Deformation through the plugin")
