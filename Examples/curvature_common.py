@@ -68,11 +68,8 @@ def surface_actor(source, color):
 
 def render_figure(description, default_output, build_scene, argv=None, default_size=(1200, 450),
                   view_direction=(0.0, -1.0, 0.9), view_up=(0, 0, 1), zoom=2.0, parallel=False):
-    """The main() of a figure script: parse --output/--size, render build_scene() to PNG, print
-    and return the path. The default view looks at a row of patches in the xy plane from the
-    front and above."""
-    args = gc.parse_args(description, default_output, argv, default_size=default_size)
-    path = gc.render_to_png(build_scene(), args.output, args.size, view_direction=view_direction,
-                            view_up=view_up, zoom=zoom, parallel=parallel)
-    print(path)
-    return path
+    """gc.render_figure with the curvature figures' defaults: a view of a row of patches in the xy
+    plane from the front and above."""
+    return gc.render_figure(description, default_output, build_scene, argv, default_size,
+                            view_direction=view_direction, view_up=view_up, zoom=zoom,
+                            parallel=parallel)

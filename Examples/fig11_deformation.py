@@ -104,11 +104,8 @@ def build_scene():
 
 
 def main(argv=None):
-    args = gc.parse_args(__doc__.splitlines()[0], "fig11_deformation.png", argv)
-    path = gc.render_to_png(build_scene(), args.output, args.size,
+    return gc.render_figure(__doc__.splitlines()[0], "fig11_deformation.png", build_scene, argv,
                             view_direction=(0.15, -1.0, 0.6), view_up=(0, 0, 1), zoom=1.1)
-    print(path)
-    return path
 
 
 if __name__ == "__main__":

@@ -33,10 +33,8 @@ def build_scene():
 
 
 def main(argv=None):
-    args = gc.parse_args(__doc__.splitlines()[0], "fig13_dipole.png", argv)
-    path = gc.render_to_png(build_scene(), args.output, args.size, parallel=True, zoom=1.1)
-    print(path)
-    return path
+    return gc.render_figure(__doc__.splitlines()[0], "fig13_dipole.png", build_scene, argv,
+                            parallel=True, zoom=1.1)
 
 
 if __name__ == "__main__":

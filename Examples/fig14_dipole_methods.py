@@ -48,11 +48,8 @@ def build_scene():
 
 
 def main(argv=None):
-    args = gc.parse_args(__doc__.splitlines()[0], "fig14_dipole_methods.png", argv,
-                         default_size=(1400, 700))
-    path = gc.render_to_png(build_scene(), args.output, args.size, parallel=True, zoom=1.6)
-    print(path)
-    return path
+    return gc.render_figure(__doc__.splitlines()[0], "fig14_dipole_methods.png", build_scene,
+                            argv, default_size=(1400, 700), parallel=True, zoom=1.6)
 
 
 if __name__ == "__main__":

@@ -53,12 +53,9 @@ def build_scene():
 
 
 def main(argv=None):
-    args = gc.parse_args(__doc__.splitlines()[0], "fig1_boosted_circle.png", argv)
-
     # Look down on the xy plane; the parallel projection keeps the circles round.
-    path = gc.render_to_png(build_scene(), args.output, args.size, zoom=1.2, parallel=True)
-    print(path)
-    return path
+    return gc.render_figure(__doc__.splitlines()[0], "fig1_boosted_circle.png", build_scene, argv,
+                            zoom=1.2, parallel=True)
 
 
 if __name__ == "__main__":

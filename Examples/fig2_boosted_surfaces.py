@@ -66,12 +66,9 @@ def build_scene():
 
 
 def main(argv=None):
-    args = gc.parse_args(__doc__.splitlines()[0], "fig2_boosted_surfaces.png", argv,
-                         default_size=(1200, 500))
-    path = gc.render_to_png(build_scene(), args.output, args.size, view_direction=VIEW_DIRECTION,
+    return gc.render_figure(__doc__.splitlines()[0], "fig2_boosted_surfaces.png", build_scene,
+                            argv, default_size=(1200, 500), view_direction=VIEW_DIRECTION,
                             view_up=VIEW_UP, zoom=1.8, parallel=True)
-    print(path)
-    return path
 
 
 if __name__ == "__main__":

@@ -65,11 +65,8 @@ def build_scene():
 
 
 def main(argv=None):
-    args = gc.parse_args(__doc__.splitlines()[0], "fig3_horn.png", argv)
-    path = gc.render_to_png(build_scene(), args.output, args.size,
+    return gc.render_figure(__doc__.splitlines()[0], "fig3_horn.png", build_scene, argv,
                             view_direction=(-0.4, -1.0, 0.4), view_up=(0, 0, 1), zoom=1.3)
-    print(path)
-    return path
 
 
 if __name__ == "__main__":

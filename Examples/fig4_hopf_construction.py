@@ -107,13 +107,9 @@ def build_scene():
 
 
 def main(argv=None):
-    args = gc.parse_args(__doc__.splitlines()[0], "fig4_hopf_construction.png", argv,
-                         default_size=(1600, 500))
-    path = gc.render_to_png(build_scene(), args.output, args.size,
-                            view_direction=(0.35, -1.0, 0.45), view_up=(0, 0, 1), zoom=1.6,
-                            parallel=True)
-    print(path)
-    return path
+    return gc.render_figure(__doc__.splitlines()[0], "fig4_hopf_construction.png", build_scene,
+                            argv, default_size=(1600, 500), view_direction=(0.35, -1.0, 0.45),
+                            view_up=(0, 0, 1), zoom=1.6, parallel=True)
 
 
 if __name__ == "__main__":

@@ -65,12 +65,9 @@ def main(argv=None):
     classical = "--classical" in argv
     if classical:
         argv.remove("--classical")
-    args = gc.parse_args(__doc__.splitlines()[0], "fig5_hopf_fibration.png", argv,
-                         default_size=(900, 800))
-    path = gc.render_to_png(build_scene(classical), args.output, args.size,
+    return gc.render_figure(__doc__.splitlines()[0], "fig5_hopf_fibration.png",
+                            lambda: build_scene(classical), argv, default_size=(900, 800),
                             view_direction=(0.6, -1.0, 0.7), view_up=(0, 0, 1), zoom=1.2)
-    print(path)
-    return path
 
 
 if __name__ == "__main__":

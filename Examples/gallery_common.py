@@ -1,6 +1,7 @@
 """Helpers shared by the figure scripts: command line, colours, tubes, offscreen render to PNG.
 
-Every figure script builds a vtkRenderer with its actors and hands it to `render_to_png`.
+Every figure script builds a vtkRenderer with its actors and hands it to `render_to_png`, mostly
+through `render_figure`, the main() of a figure script.
 """
 import argparse
 import os
@@ -183,4 +184,14 @@ def render_to_png(renderer, path, size, view_direction=(0, 0, 1), view_up=(0, 1,
     writer.SetInputConnection(grab.GetOutputPort())
     writer.Write()
     window.Finalize()  # release the OpenGL context before the next figure makes its own
+    return path
+
+
+def render_figure(description, default_output, build_scene, argv=None, default_size=(900, 700),
+                  **view):
+    """The main() of a figure script: parse --output/--size, render build_scene() to PNG (`view`:
+    the keywords of render_to_png), print and return the path."""
+    args = parse_args(description, default_output, argv, default_size=default_size)
+    path = render_to_png(build_scene(), args.output, args.size, **view)
+    print(path)
     return path

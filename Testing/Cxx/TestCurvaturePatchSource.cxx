@@ -3,7 +3,7 @@
 // clamping and bad input.
 #include "vtkCurvaturePatchSource.h"
 
-#include "ErrorCounter.h"
+#include "BadParameterCases.h"
 #include "vtkDataArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -271,13 +271,5 @@ TEST(CurvaturePatchSource, BadParametersGiveAnErrorAndAnEmptyOutput)
       s->SetCorner3Direction(nan, 0, 1);
     },
   };
-  for (size_t k = 0; k < breakers.size(); ++k)
-  {
-    vtkNew<vtkCurvaturePatchSource> source;
-    ErrorCounter errors(source);
-    breakers[k](source);
-    source->Update();
-    EXPECT_EQ(errors.count, 1) << "case " << k;
-    EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0) << "case " << k;
-  }
+  ExpectOneErrorEach(breakers, EmptyOutput::NoPoints);
 }

@@ -2,6 +2,7 @@
 // sub-extents against the whole field, time steps, precision and bad input.
 #include "vtkDipoleFieldSource.h"
 
+#include "EventCounter.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
@@ -26,29 +27,6 @@ namespace
 const char* const ArrayNames[] = { "DisplacementSummedGenerators",
   "DisplacementSummedDisplacements", "DisplacementDifference", "DisplacementDifferenceMagnitude",
   "DipolePotential" };
-
-struct ErrorCounter
-{
-  int errors = 0;
-  int warnings = 0;
-  static void OnError(vtkObject*, unsigned long, void* clientData, void*)
-  {
-    ++static_cast<ErrorCounter*>(clientData)->errors;
-  }
-  static void OnWarning(vtkObject*, unsigned long, void* clientData, void*)
-  {
-    ++static_cast<ErrorCounter*>(clientData)->warnings;
-  }
-  void Watch(vtkObject* object, vtkCallbackCommand* onError, vtkCallbackCommand* onWarning)
-  {
-    onError->SetCallback(OnError);
-    onError->SetClientData(this);
-    onWarning->SetCallback(OnWarning);
-    onWarning->SetClientData(this);
-    object->AddObserver(vtkCommand::ErrorEvent, onError);
-    object->AddObserver(vtkCommand::WarningEvent, onWarning);
-  }
-};
 
 // The displacement of one generator in closed form: an SCT of weight
 // u = -s w v / (k |p - x|^2 + eps) about x (SPEC.md section 2 and section 3 item 12).
@@ -320,9 +298,7 @@ TEST(DipoleFieldSource, BadInputGivesAnErrorAndAnEmptyOutput)
   for (int which = 0; which < Cases; ++which)
   {
     vtkNew<vtkDipoleFieldSource> source;
-    vtkNew<vtkCallbackCommand> onError, onWarning;
-    ErrorCounter counter;
-    counter.Watch(source, onError, onWarning);
+    EventCounter counter(source);
     switch (which)
     {
       case ZeroDimension: source->SetDimensions(0, 21, 1); break;
@@ -351,9 +327,7 @@ TEST(DipoleFieldSource, PointSentToInfinityGivesAWarningAndZero)
   source->SetOrigin(0, 0, 0);
   source->SetSpacing(1, 1, 1);
   source->SetDimensions(3, 1, 1);
-  vtkNew<vtkCallbackCommand> onError, onWarning;
-  ErrorCounter counter;
-  counter.Watch(source, onError, onWarning);
+  EventCounter counter(source);
   source->Update();
   EXPECT_EQ(counter.errors, 0);
   EXPECT_EQ(counter.warnings, 1);

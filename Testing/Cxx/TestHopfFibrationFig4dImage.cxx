@@ -3,15 +3,7 @@
 // Usage: TestHopfFibrationFig4dImage -V <baseline.png> -T <output directory>
 #include "vtkHopfFibrationSource.h"
 
-#include "vtkActor.h"
-#include "vtkCamera.h"
-#include "vtkNew.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
-#include "vtkRegressionTestImage.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderWindowInteractor.h"
-#include "vtkRenderer.h"
+#include "RegressionScene.h"
 
 int main(int argc, char* argv[])
 {
@@ -23,13 +15,6 @@ int main(int argc, char* argv[])
   mesh->SetPhiResolution(64);
   mesh->SetFiberResolution(128);
   mesh->SetClipRadius(2.2);
-  vtkNew<vtkPolyDataMapper> meshMapper;
-  meshMapper->SetInputConnection(mesh->GetOutputPort());
-  meshMapper->SetScalarModeToUsePointFieldData();
-  meshMapper->SelectColorArray("phi");
-  meshMapper->SetScalarRange(-pi / 2, pi / 2);
-  vtkNew<vtkActor> meshActor;
-  meshActor->SetMapper(meshMapper);
 
   vtkNew<vtkHopfFibrationSource> fibers;
   fibers->SetThetaRange(0.0, 0.0);
@@ -37,36 +22,12 @@ int main(int argc, char* argv[])
   fibers->SetPhiResolution(9);
   fibers->SetFiberResolution(256);
   fibers->SetClipRadius(2.2);
-  vtkNew<vtkPolyDataMapper> fibersMapper;
-  fibersMapper->SetInputConnection(fibers->GetOutputPort());
-  fibersMapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> fibersActor;
-  fibersActor->SetMapper(fibersMapper);
-  fibersActor->GetProperty()->SetColor(0.1, 0.1, 0.1);
+
+  RegressionScene scene(400, 400);
+  scene.renderer->AddActor(ColoredActor(mesh, "phi", -pi / 2, pi / 2));
+  auto fibersActor = PlainActor(fibers, 0.1, 0.1, 0.1);
   fibersActor->GetProperty()->SetLineWidth(2);
-
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(meshActor);
-  renderer->AddActor(fibersActor);
-  renderer->SetBackground(1, 1, 1);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(400, 400);
-  window->AddRenderer(renderer);
-  vtkNew<vtkRenderWindowInteractor> interactor;
-  interactor->SetRenderWindow(window);
-
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(0.35, -1.0, 0.45);
-  camera->SetFocalPoint(0, 0, 0);
-  camera->SetViewUp(0, 0, 1);
-  renderer->ResetCamera();
-  camera->Zoom(1.2);
-  window->Render();
-
-  const int result = vtkRegressionTestImage(window);
-  if (result == vtkRegressionTester::DO_INTERACTOR)
-  {
-    interactor->Start();
-  }
-  return result == vtkRegressionTester::FAILED ? 1 : 0;
+  scene.renderer->AddActor(fibersActor);
+  scene.LookAtOriginFrom(0.35, -1.0, 0.45, 1.2);
+  return scene.RenderAndCompare(argc, argv);
 }

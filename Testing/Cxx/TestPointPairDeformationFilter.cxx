@@ -3,10 +3,9 @@
 // (SPEC.md section 2), null image points and angle preservation; and its bad-input behaviour.
 #include "vtkPointPairDeformationFilter.h"
 
-#include "vtkCallbackCommand.h"
+#include "EventCounter.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -43,35 +42,6 @@ struct Generator
   double weight;
 };
 
-// Counts the error and warning events of one object (and keeps their text quiet).
-struct EventCounter
-{
-  int errors = 0;
-  int warnings = 0;
-  std::string lastWarning;
-  static void Callback(vtkObject*, unsigned long event, void* clientData, void* callData)
-  {
-    auto* self = static_cast<EventCounter*>(clientData);
-    if (event == vtkCommand::ErrorEvent)
-    {
-      ++self->errors;
-    }
-    else
-    {
-      ++self->warnings;
-      self->lastWarning = static_cast<const char*>(callData);
-    }
-  }
-  void Watch(vtkObject* object)
-  {
-    vtkNew<vtkCallbackCommand> command;
-    command->SetCallback(&EventCounter::Callback);
-    command->SetClientData(this);
-    object->AddObserver(vtkCommand::ErrorEvent, command);
-    object->AddObserver(vtkCommand::WarningEvent, command);
-  }
-};
-
 class Random
 {
 public:
@@ -105,6 +75,17 @@ std::vector<Generator> randomGenerators(Random& random, int count, double maxWei
     generators.push_back({ random.vec3(1.5), random.unit(), random.uniform(-maxWeight, maxWeight) });
   }
   return generators;
+}
+
+// The same generators as the kernel's type, for a cga::PointPairField reference.
+std::vector<cga::PointPairGenerator> kernelGeneratorsOf(const std::vector<Generator>& generators)
+{
+  std::vector<cga::PointPairGenerator> kernelGenerators;
+  for (const Generator& g : generators)
+  {
+    kernelGenerators.push_back({ g.location, g.direction, g.weight });
+  }
+  return kernelGenerators;
 }
 
 // Random points joined into triangles (every three consecutive points), with a scalar point
@@ -246,12 +227,7 @@ TEST(PointPairDeformationFilter, ExactImagesAreNullPointsAndPaperImagesAreNot)
 {
   Random random(12);
   const auto generators = randomGenerators(random, 6, 0.8);
-  std::vector<cga::PointPairGenerator> kernelGenerators;
-  for (const Generator& g : generators)
-  {
-    kernelGenerators.push_back({ g.location, g.direction, g.weight });
-  }
-  const cga::PointPairField field(kernelGenerators, 1.0, 0.05);
+  const cga::PointPairField field(kernelGeneratorsOf(generators), 1.0, 0.05);
   double exactDefect = 0.0, paperDefect = 0.0;
   for (int n = 0; n < 200; ++n)
   {
@@ -330,12 +306,7 @@ TEST(PointPairDeformationFilter, EachPointsExactBoostKeepsAnglesAroundIt)
 {
   Random random(14);
   const auto generators = randomGenerators(random, 5, 0.5);
-  std::vector<cga::PointPairGenerator> kernelGenerators;
-  for (const Generator& g : generators)
-  {
-    kernelGenerators.push_back({ g.location, g.direction, g.weight });
-  }
-  const cga::PointPairField field(kernelGenerators, 1.0, 0.05);
+  const cga::PointPairField field(kernelGeneratorsOf(generators), 1.0, 0.05);
   auto mesh = randomMesh(random, 20, 1.5);
   vtkNew<vtkPointPairDeformationFilter> filter;
   filter->SetInputData(mesh);
@@ -518,8 +489,7 @@ TEST(PointPairDeformationFilter, NonFinitePointsPassThroughWithOneWarning)
   mesh->GetPoints()->SetPoint(7, 0, inf, 0);
   mesh->GetPoints()->SetPoint(11, 0, 0, -inf);
   vtkNew<vtkPointPairDeformationFilter> filter;
-  EventCounter events;
-  events.Watch(filter);
+  EventCounter events(filter);
   filter->SetInputData(mesh);
   addGenerators(filter, randomGenerators(random, 3, 0.5));
   filter->Update();
@@ -552,8 +522,7 @@ TEST(PointPairDeformationFilter, ZeroDirectionsAreIgnoredWithAWarning)
   Random random(20);
   auto mesh = randomMesh(random, 10, 1.0);
   vtkNew<vtkPointPairDeformationFilter> withZero, without;
-  EventCounter events;
-  events.Watch(withZero);
+  EventCounter events(withZero);
   for (vtkPointPairDeformationFilter* filter : { withZero.Get(), without.Get() })
   {
     filter->SetInputData(mesh);
@@ -599,8 +568,7 @@ TEST(PointPairDeformationFilter, HugeWeightsGiveFiniteOutput)
     for (int rule : { vtkPointPairDeformationFilter::EXACT, vtkPointPairDeformationFilter::PAPER })
     {
       vtkNew<vtkPointPairDeformationFilter> filter;
-      EventCounter events; // a warning about points left in place is allowed
-      events.Watch(filter);
+      EventCounter events(filter); // a warning about points left in place is allowed
       filter->SetInputData(mesh);
       filter->AddGenerator(0.1, 0, 0, 0, 0, 1, weight);
       filter->AddGenerator(0, 0.3, 0, 1, 0, 0, -weight);
@@ -711,8 +679,7 @@ TEST(PointPairDeformationFilter, BadGeneratorArraysAreErrorsWithEmptyOutput)
          Case{ "Direction", "Direction", true, "1 component" } })
   {
     vtkNew<vtkPointPairDeformationFilter> filter;
-    EventCounter events;
-    events.Watch(filter);
+    EventCounter events(filter);
     filter->SetInputData(mesh);
     filter->SetGeneratorsData(generators);
     filter->SetGeneratorDirectionArrayName(c.direction);
@@ -758,8 +725,7 @@ TEST(PointPairDeformationFilter, NonFiniteStrengthOrNaNParametersAreErrors)
   for (int which = 0; which < 3; ++which)
   {
     vtkNew<vtkPointPairDeformationFilter> filter;
-    EventCounter events;
-    events.Watch(filter);
+    EventCounter events(filter);
     filter->SetInputData(mesh);
     filter->AddGenerator(0, 0, 0, 1, 0, 0, 0.4);
     if (which == 0)

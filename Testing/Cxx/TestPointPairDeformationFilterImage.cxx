@@ -3,19 +3,12 @@
 // Usage: TestPointPairDeformationFilterImage -V <baseline.png> -T <output directory>
 #include "vtkPointPairDeformationFilter.h"
 
-#include "vtkActor.h"
-#include "vtkCamera.h"
+#include "RegressionScene.h"
 #include "vtkCellArray.h"
 #include "vtkLookupTable.h"
 #include "vtkMath.h"
-#include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkRegressionTestImage.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderWindowInteractor.h"
-#include "vtkRenderer.h"
 
 #include <cmath>
 #include <functional>
@@ -101,29 +94,10 @@ int main(int argc, char* argv[])
     p[2] = std::cos(phi);
   });
 
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(deformedActor(plane, planeGenerators, 4));
-  renderer->AddActor(deformedActor(sphere, sphereGenerators, 4));
-  renderer->SetBackground(1, 1, 1);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(500, 300);
-  window->SetMultiSamples(0);
-  window->AddRenderer(renderer);
-  vtkNew<vtkRenderWindowInteractor> interactor;
-  interactor->SetRenderWindow(window);
-
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetFocalPoint(0, 0, 0);
-  camera->SetPosition(0.15, -1.0, 0.6);
-  camera->SetViewUp(0, 0, 1);
-  renderer->ResetCamera();
-  camera->Zoom(1.3);
-  window->Render();
-
-  const int result = vtkRegressionTestImage(window);
-  if (result == vtkRegressionTester::DO_INTERACTOR)
-  {
-    interactor->Start();
-  }
-  return result == vtkRegressionTester::FAILED ? 1 : 0;
+  RegressionScene scene(500, 300);
+  scene.window->SetMultiSamples(0);
+  scene.renderer->AddActor(deformedActor(plane, planeGenerators, 4));
+  scene.renderer->AddActor(deformedActor(sphere, sphereGenerators, 4));
+  scene.LookAtOriginFrom(0.15, -1.0, 0.6, 1.3);
+  return scene.RenderAndCompare(argc, argv);
 }

@@ -84,6 +84,13 @@ def render_and_compare(source, color_array, camera_position, focal_point, view_u
     view = white_render_view([400, 400])
     display = simple.Show(source, view)
     simple.ColorBy(display, ("POINTS", color_array))
+    look_and_compare(view, camera_position, focal_point, view_up, arguments, failures)
+
+
+def look_and_compare(view, camera_position, focal_point, view_up, arguments, failures):
+    """Place the camera of a 400 x 400 `view` (then fit it to the data), render, and, with
+    --baseline, compare its screenshot; a difference is appended to `failures`."""
+    from paraview import simple
     view.CameraPosition = list(camera_position)
     view.CameraFocalPoint = list(focal_point)
     view.CameraViewUp = list(view_up)
@@ -91,3 +98,68 @@ def render_and_compare(source, color_array, camera_position, focal_point, view_u
     simple.Render(view)
     if arguments.baseline and not screenshot_matches(view, arguments, [400, 400]):
         failures.append("image differs from the baseline")
+
+
+def report(failures, message):
+    """Print each failure, then finish(): the end of every plugin test."""
+    for failure in failures:
+        print("FAILED:", failure)
+    finish(not failures, message)
+
+
+def check_defaults(proxy, defaults, failures):
+    """Compare each property named in `defaults` with its documented value."""
+    for name, expected in defaults.items():
+        value = proxy.GetPropertyValue(name)
+        value = list(value) if isinstance(expected, list) else value
+        if value != expected:
+            failures.append("default %s is %r, expected %r" % (name, value, expected))
+
+
+def check_point_arrays(info, names, failures, what="point array"):
+    """Each point array of `names` must be in the data information `info`."""
+    for array in names:
+        if info.GetPointDataInformation().GetArrayInformation(array) is None:
+            failures.append("%s %s is missing" % (what, array))
+
+
+# Under `mpiexec -np N pvbatch`: the distributed pipeline against one process.
+
+def mpi_ranks(failures):
+    """The number of MPI ranks; fewer than two is a failure (the test would prove nothing)."""
+    from paraview import servermanager
+    ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+    if ranks < 2:
+        failures.append("expected at least 2 MPI ranks, got %d" % ranks)
+    return ranks
+
+
+def whole_in_one_process(proxy):
+    """The output of `proxy`'s algorithm run whole in this process only, never through the
+    parallel pipeline."""
+    algorithm = proxy.GetClientSideObject()
+    algorithm.UpdatePiece(0, 1, 0)
+    return algorithm.GetOutput()
+
+
+def compare_cell_counts(label, ranks, distributed, single, failures, gathered=None):
+    """Print the counts; the cells summed over the ranks (`distributed`, a data information) and,
+    when given, those gathered on this process (`gathered`) must be those of one process."""
+    print("%s: %d ranks: %d points %d cells; one process: %d points %d cells"
+          % (label, ranks, distributed.GetNumberOfPoints(), distributed.GetNumberOfCells(),
+             single.GetNumberOfPoints(), single.GetNumberOfCells()))
+    if distributed.GetNumberOfCells() != single.GetNumberOfCells():
+        failures.append("%s: %d cells over the ranks, %d in one process"
+                        % (label, distributed.GetNumberOfCells(), single.GetNumberOfCells()))
+    if gathered is not None and gathered.GetNumberOfCells() != single.GetNumberOfCells():
+        failures.append("%s: %d cells gathered, %d in one process"
+                        % (label, gathered.GetNumberOfCells(), single.GetNumberOfCells()))
+
+
+def compare_bounds(label, distributed, single, failures):
+    """The bounds over the ranks must be those of one process (to 1e-12)."""
+    for got, expected in zip(distributed.GetBounds(), single.GetBounds()):
+        if abs(got - expected) > 1e-12:
+            failures.append("%s: bounds %r over the ranks, %r in one process"
+                            % (label, distributed.GetBounds(), single.GetBounds()))
+            break

@@ -8,12 +8,9 @@ import plugin_test_common as common  # noqa: E402
 
 arguments = common.parse_arguments()
 common.load_plugin(arguments.plugin, globals())  # defines CurvaturePatch()
-from paraview import servermanager  # noqa: E402
 
-ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
 failures = []
-if ranks < 2:
-    failures.append("expected at least 2 MPI ranks, got %d" % ranks)
+ranks = common.mpi_ranks(failures)
 
 for output_type in ("Surface", "Lines"):
     parameters = dict(Method="Bilinear (eq 25)", UResolution=20, VResolution=17,
@@ -22,26 +19,12 @@ for output_type in ("Surface", "Lines"):
     source.UpdatePipeline()
     distributed = source.GetDataInformation()  # summed over the ranks
 
-    single_proxy = CurvaturePatch(**parameters)  # noqa: F821
-    single_algorithm = single_proxy.GetClientSideObject()
-    single_algorithm.UpdatePiece(0, 1, 0)
-    single = single_algorithm.GetOutput()
+    single = common.whole_in_one_process(CurvaturePatch(**parameters))  # noqa: F821
 
-    print("%s: %d ranks: %d points %d cells; one process: %d points %d cells"
-          % (output_type, ranks, distributed.GetNumberOfPoints(), distributed.GetNumberOfCells(),
-             single.GetNumberOfPoints(), single.GetNumberOfCells()))
-    if distributed.GetNumberOfCells() != single.GetNumberOfCells():
-        failures.append("%s: %d cells over the ranks, %d in one process"
-                        % (output_type, distributed.GetNumberOfCells(), single.GetNumberOfCells()))
+    common.compare_cell_counts(output_type, ranks, distributed, single, failures)
     if output_type == "Lines" and distributed.GetNumberOfPoints() != single.GetNumberOfPoints():
         failures.append("Lines: %d points over the ranks, %d in one process"
                         % (distributed.GetNumberOfPoints(), single.GetNumberOfPoints()))
-    for got, expected in zip(distributed.GetBounds(), single.GetBounds()):
-        if abs(got - expected) > 1e-12:
-            failures.append("%s: bounds %r over the ranks, %r in one process"
-                            % (output_type, distributed.GetBounds(), single.GetBounds()))
-            break
+    common.compare_bounds(output_type, distributed, single, failures)
 
-for failure in failures:
-    print("FAILED:", failure)
-common.finish(not failures, "Curvature Patch over MPI ranks")
+common.report(failures, "Curvature Patch over MPI ranks")

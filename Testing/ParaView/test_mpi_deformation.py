@@ -11,10 +11,8 @@ arguments = common.parse_arguments()
 common.load_plugin(arguments.plugin, globals())  # defines PointPairDeformation()
 from paraview import servermanager, simple  # noqa: E402
 
-ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
 failures = []
-if ranks < 2:
-    failures.append("expected at least 2 MPI ranks, got %d" % ranks)
+ranks = common.mpi_ranks(failures)
 
 
 def pipeline():
@@ -37,9 +35,7 @@ distributed_proxy.UpdatePipeline()
 distributed = distributed_proxy.GetDataInformation()  # summed over the ranks
 gathered = servermanager.Fetch(distributed_proxy)  # all pieces appended, on this (root) process
 
-single_algorithm = pipeline().GetClientSideObject()  # this process only, whole data
-single_algorithm.UpdatePiece(0, 1, 0)
-single = single_algorithm.GetOutput()
+single = common.whole_in_one_process(pipeline())
 
 print("%d ranks: %d points %d cells; one process: %d points %d cells"
       % (ranks, distributed.GetNumberOfPoints(), distributed.GetNumberOfCells(),
@@ -56,6 +52,4 @@ moved = max(abs(a - b) for a, b in zip(single.GetBounds(), (-1, 1, -1, 1, -1, 1)
 if moved < 1e-2:
     failures.append("the sphere was hardly deformed (%g): the test would prove nothing" % moved)
 
-for failure in failures:
-    print("FAILED:", failure)
-common.finish(not failures, "Point Pair Deformation over MPI ranks")
+common.report(failures, "Point Pair Deformation over MPI ranks")

@@ -11,10 +11,8 @@ arguments = common.parse_arguments()
 common.load_plugin(arguments.plugin, globals())  # defines DipoleField()
 from paraview import servermanager  # noqa: E402
 
-ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
 failures = []
-if ranks < 2:
-    failures.append("expected at least 2 MPI ranks, got %d" % ranks)
+ranks = common.mpi_ranks(failures)
 
 ARRAYS = ("DisplacementSummedGenerators", "DisplacementSummedDisplacements",
           "DisplacementDifference", "DisplacementDifferenceMagnitude", "DipolePotential")
@@ -30,9 +28,7 @@ for rule in ("Exact", "Paper"):
     pieces = [servermanager.Fetch(source, rank) for rank in range(ranks)]
 
     # The same source run whole in this process only, never through the parallel pipeline.
-    single_algorithm = DipoleField(ExponentialRule=rule, **parameters).GetClientSideObject()  # noqa: F821
-    single_algorithm.UpdatePiece(0, 1, 0)
-    single = single_algorithm.GetOutput()
+    single = common.whole_in_one_process(DipoleField(ExponentialRule=rule, **parameters))  # noqa: F821
 
     print("%s: %d ranks: %d points (with shared boundaries); one process: %d points"
           % (rule, ranks, distributed.GetNumberOfPoints(), single.GetNumberOfPoints()))
@@ -68,6 +64,4 @@ for rule in ("Exact", "Paper"):
     if largest != 0.0:
         failures.append("%s: the distributed field differs from one process by %g" % (rule, largest))
 
-for failure in failures:
-    print("FAILED:", failure)
-common.finish(not failures, "Dipole Field over MPI ranks")
+common.report(failures, "Dipole Field over MPI ranks")

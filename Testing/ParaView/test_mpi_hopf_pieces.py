@@ -11,10 +11,8 @@ arguments = common.parse_arguments()
 common.load_plugin(arguments.plugin, globals())  # defines HopfFibration()
 from paraview import servermanager  # noqa: E402
 
-ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
 failures = []
-if ranks < 2:
-    failures.append("expected at least 2 MPI ranks, got %d" % ranks)
+ranks = common.mpi_ranks(failures)
 
 
 def fibers(polydata):
@@ -35,19 +33,9 @@ for mode in ("Paper", "Classical"):
         distributed = source.GetDataInformation()  # summed over the ranks
         gathered = servermanager.Fetch(source)  # all pieces appended, on this (root) process
 
-        single_algorithm = HopfFibration(**parameters).GetClientSideObject()  # noqa: F821
-        single_algorithm.UpdatePiece(0, 1, 0)
-        single = single_algorithm.GetOutput()
+        single = common.whole_in_one_process(HopfFibration(**parameters))  # noqa: F821
         label = "%s %s" % (mode, output_type)
-        print("%s: %d ranks: %d points %d cells; one process: %d points %d cells"
-              % (label, ranks, distributed.GetNumberOfPoints(), distributed.GetNumberOfCells(),
-                 single.GetNumberOfPoints(), single.GetNumberOfCells()))
-        if distributed.GetNumberOfCells() != single.GetNumberOfCells():
-            failures.append("%s: %d cells over the ranks, %d in one process"
-                            % (label, distributed.GetNumberOfCells(), single.GetNumberOfCells()))
-        if gathered.GetNumberOfCells() != single.GetNumberOfCells():
-            failures.append("%s: %d cells gathered, %d in one process"
-                            % (label, gathered.GetNumberOfCells(), single.GetNumberOfCells()))
+        common.compare_cell_counts(label, ranks, distributed, single, failures, gathered)
         got, expected = fibers(gathered), fibers(single)
         if output_type == "Fibers":
             # whole fibers go to one rank each: the same fibers, point for point
@@ -64,6 +52,4 @@ for mode in ("Paper", "Classical"):
             if wanted != have:
                 failures.append("%s: the mesh points differ" % label)
 
-for failure in failures:
-    print("FAILED:", failure)
-common.finish(not failures, "Hopf Fibration over MPI ranks")
+common.report(failures, "Hopf Fibration over MPI ranks")

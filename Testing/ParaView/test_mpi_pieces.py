@@ -9,12 +9,10 @@ import plugin_test_common as common  # noqa: E402
 
 arguments = common.parse_arguments()
 common.load_plugin(arguments.plugin, globals())  # defines BoostedSurface()
-from paraview import servermanager, simple  # noqa: E402
+from paraview import servermanager  # noqa: E402
 
-ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
 failures = []
-if ranks < 2:
-    failures.append("expected at least 2 MPI ranks, got %d" % ranks)
+ranks = common.mpi_ranks(failures)
 
 lambda_resolution, theta_resolution = 31, 40
 
@@ -39,20 +37,9 @@ for output_type in ("Surface", "Circles"):
     gathered = servermanager.Fetch(source)  # all pieces appended, on this (root) process
 
     # The same source run whole in this process only, never through the parallel pipeline.
-    single_proxy = BoostedSurface(**parameters)  # noqa: F821
-    single_algorithm = single_proxy.GetClientSideObject()
-    single_algorithm.UpdatePiece(0, 1, 0)
-    single = single_algorithm.GetOutput()
+    single = common.whole_in_one_process(BoostedSurface(**parameters))  # noqa: F821
 
-    print("%s: %d ranks: %d points %d cells; one process: %d points %d cells"
-          % (output_type, ranks, distributed.GetNumberOfPoints(), distributed.GetNumberOfCells(),
-             single.GetNumberOfPoints(), single.GetNumberOfCells()))
-    if distributed.GetNumberOfCells() != single.GetNumberOfCells():
-        failures.append("%s: %d cells over the ranks, %d in one process"
-                        % (output_type, distributed.GetNumberOfCells(), single.GetNumberOfCells()))
-    if gathered.GetNumberOfCells() != single.GetNumberOfCells():
-        failures.append("%s: %d cells gathered, %d in one process"
-                        % (output_type, gathered.GetNumberOfCells(), single.GetNumberOfCells()))
+    common.compare_cell_counts(output_type, ranks, distributed, single, failures, gathered)
     if output_type == "Circles":
         # whole circles go to one rank each: the points are partitioned exactly
         if distributed.GetNumberOfPoints() != single.GetNumberOfPoints():
@@ -65,12 +52,6 @@ for output_type in ("Surface", "Circles"):
                             % (cleaned_point_count(gathered), cleaned_point_count(single)))
         if distributed.GetNumberOfPoints() <= single.GetNumberOfPoints() - 1:
             failures.append("Surface: points were lost over the ranks")
-    for got, expected in zip(distributed.GetBounds(), single.GetBounds()):
-        if abs(got - expected) > 1e-12:
-            failures.append("%s: bounds %r over the ranks, %r in one process"
-                            % (output_type, distributed.GetBounds(), single.GetBounds()))
-            break
+    common.compare_bounds(output_type, distributed, single, failures)
 
-for failure in failures:
-    print("FAILED:", failure)
-common.finish(not failures, "Boosted Surface over MPI ranks")
+common.report(failures, "Boosted Surface over MPI ranks")

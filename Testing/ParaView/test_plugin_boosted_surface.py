@@ -21,11 +21,7 @@ defaults = {
     "LambdaResolution": 64,
     "ThetaResolution": 64,
 }
-for name, expected in defaults.items():
-    value = source.GetPropertyValue(name)
-    value = list(value) if isinstance(expected, list) else value
-    if value != expected:
-        failures.append("default %s is %r, expected %r" % (name, value, expected))
+common.check_defaults(source, defaults, failures)
 
 source.LambdaResolution = 16
 source.ThetaResolution = 32
@@ -38,13 +34,9 @@ bounds = info.GetBounds()
 # x runs from 0 (lambda = 0) to the largest plane x = lambda/(1+lambda^2) = 1/2 (lambda = 1).
 if abs(bounds[0]) > 1e-12 or abs(bounds[1] - 0.5) > 1e-12 or abs(bounds[3] - 1.0) > 1e-12:
     failures.append("unexpected bounds %r" % (bounds,))
-for array in ("lambda", "theta", "Normals", "TextureCoordinates"):
-    if info.GetPointDataInformation().GetArrayInformation(array) is None:
-        failures.append("point array %s is missing" % array)
+common.check_point_arrays(info, ("lambda", "theta", "Normals", "TextureCoordinates"), failures)
 
 common.render_and_compare(source, "lambda", [3.0, 2.0, 2.5], [0.25, 0.0, 0.0], [0.0, 0.0, 1.0],
                           arguments, failures)
 
-for failure in failures:
-    print("FAILED:", failure)
-common.finish(not failures, "Boosted Surface through the plugin")
+common.report(failures, "Boosted Surface through the plugin")

@@ -30,20 +30,14 @@ defaults = {
     "SelectedControlPoint": -1,
     "CornerWeights": [0.5, -0.5, -0.5, 0.5],
 }
-for name, expected in defaults.items():
-    value = source.GetPropertyValue(name)
-    value = list(value) if isinstance(expected, list) else value
-    if value != expected:
-        failures.append("default %s is %r, expected %r" % (name, value, expected))
+common.check_defaults(source, defaults, failures)
 
 source.UpdatePipeline()
 info = source.GetDataInformation()
 if info.GetNumberOfPoints() != 33 * 33 or info.GetNumberOfCells() != 32 * 32:
     failures.append("default patch has %d points and %d cells"
                     % (info.GetNumberOfPoints(), info.GetNumberOfCells()))
-for array in ("u", "v", "GeneratorWeight", "Normals", "TextureCoordinates"):
-    if info.GetPointDataInformation().GetArrayInformation(array) is None:
-        failures.append("point array %s is missing" % array)
+common.check_point_arrays(info, ("u", "v", "GeneratorWeight", "Normals", "TextureCoordinates"), failures)
 
 # Control points through the repeatable table property: two rows of 11 numbers.
 source.Method = "Control Points (eq 21)"
@@ -74,6 +68,4 @@ source.CurvaturePreset = "Umbilic (Fig 7c)"
 common.render_and_compare(source, "v", [0.0, -6.0, 4.0], [0.0, 0.0, -0.5], [0.0, 0.0, 1.0],
                           arguments, failures)
 
-for failure in failures:
-    print("FAILED:", failure)
-common.finish(not failures, "Curvature Patch through the plugin")
+common.report(failures, "Curvature Patch through the plugin")

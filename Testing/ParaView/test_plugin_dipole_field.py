@@ -26,11 +26,7 @@ defaults = {
     "ExponentialRule": "Exact",
     "NumberOfTimeSteps": 0,
 }
-for name, expected in defaults.items():
-    value = source.GetPropertyValue(name)
-    value = list(value) if isinstance(expected, list) else value
-    if value != expected:
-        failures.append("default %s is %r, expected %r" % (name, value, expected))
+common.check_defaults(source, defaults, failures)
 
 # One generator off the grid's symmetry: the field must be the closed form, an SCT about x of
 # weight u = -w v / (k |p - x|^2 + eps) (SPEC.md section 2).
@@ -43,10 +39,8 @@ source.UpdatePipeline()
 info = source.GetDataInformation()
 if info.GetNumberOfPoints() != 11 * 9:
     failures.append("%d points, expected %d" % (info.GetNumberOfPoints(), 11 * 9))
-for array in ("DisplacementSummedGenerators", "DisplacementSummedDisplacements",
-              "DisplacementDifference", "DisplacementDifferenceMagnitude", "DipolePotential"):
-    if info.GetPointDataInformation().GetArrayInformation(array) is None:
-        failures.append("point array %s is missing" % array)
+common.check_point_arrays(info, ("DisplacementSummedGenerators", "DisplacementSummedDisplacements",
+              "DisplacementDifference", "DisplacementDifferenceMagnitude", "DipolePotential"), failures)
 
 image = servermanager.Fetch(source)
 field = image.GetPointData().GetArray("DisplacementSummedGenerators")
@@ -98,15 +92,6 @@ contour_display = simple.Show(contours, view)
 simple.ColorBy(contour_display, None)
 contour_display.AmbientColor = contour_display.DiffuseColor = [0.0, 0.0, 0.0]
 contour_display.LineWidth = 2
-view.CameraPosition = [0, 0, 10]
-view.CameraFocalPoint = [0, 0, 0]
-view.CameraViewUp = [0, 1, 0]
-view.ResetCamera()
-simple.Render(view)
+common.look_and_compare(view, [0, 0, 10], [0, 0, 0], [0, 1, 0], arguments, failures)
 
-if arguments.baseline and not common.screenshot_matches(view, arguments, [400, 400]):
-    failures.append("image differs from the baseline")
-
-for failure in failures:
-    print("FAILED:", failure)
-common.finish(not failures, "Dipole Field through the plugin")
+common.report(failures, "Dipole Field through the plugin")

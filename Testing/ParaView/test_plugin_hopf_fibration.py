@@ -34,11 +34,7 @@ defaults = {
     "ClipRadius": 10.0,
     "OutputType": "Fibers",
 }
-for name, expected in defaults.items():
-    value = source.GetPropertyValue(name)
-    value = list(value) if isinstance(expected, list) else value
-    if value != expected:
-        failures.append("default %s is %r, expected %r" % (name, value, expected))
+common.check_defaults(source, defaults, failures)
 
 # Grid: 8 x 9 fibers, with the documented arrays, nothing beyond the clip radius.
 source.UpdatePipeline()
@@ -80,10 +76,6 @@ mesh.UpdatePipeline()
 info = mesh.GetDataInformation()
 if info.GetNumberOfCells() != 3 * 9 * 24:
     failures.append("twistor mesh has %d cells, expected %d" % (info.GetNumberOfCells(), 3 * 9 * 24))
-for array in ("Normals", "TextureCoordinates", "StripId"):
-    if info.GetPointDataInformation().GetArrayInformation(array) is None:
-        failures.append("mesh point array %s is missing" % array)
+common.check_point_arrays(info, ("Normals", "TextureCoordinates", "StripId"), failures, what="mesh point array")
 
-for failure in failures:
-    print("FAILED:", failure)
-common.finish(not failures, "Hopf Fibration through the plugin")
+common.report(failures, "Hopf Fibration through the plugin")

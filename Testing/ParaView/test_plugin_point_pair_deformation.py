@@ -39,11 +39,7 @@ defaults = {
     "GeneratorDirectionArrayName": "Direction",
     "UseGeneratorWeightArray": 0,
 }
-for name, expected in defaults.items():
-    value = deformation.GetPropertyValue(name)
-    value = list(value) if isinstance(expected, list) else value
-    if value != expected:
-        failures.append("default %s is %r, expected %r" % (name, value, expected))
+common.check_defaults(deformation, defaults, failures)
 
 # One generator: p -> x + SCT_u(p - x) with u = -w v / (k |p - x|^2 + eps).
 x, v, w, k, eps = (0.2, 0.0, 0.9), (0.0, 0.0, 1.0), 0.6, 4.0, 0.05
@@ -96,30 +92,12 @@ deformation.GeneratorList = [0.0, 0.0, 1.4, 0, 0, 1, 0.6,
                              -0.4, -1.4, -0.4, 0, 1, 0, 0.5,
                              -0.7, 0.9, -1.0, -1, 1, -1, 0.4]
 deformation.Falloff = 4.0
-view = simple.CreateRenderView()
-view.ViewSize = [400, 400]
-view.OrientationAxesVisibility = 0
-view.Background = [1, 1, 1]
-try:
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
+view = common.white_render_view([400, 400])
 normals = simple.GenerateSurfaceNormals(Input=deformation, Splitting=0)
 display = simple.Show(normals, view)
 simple.ColorBy(display, ("POINTS", "Displacement", "Magnitude"))
 display.LookupTable.RescaleTransferFunction(0.0, 0.6)
-view.CameraPosition = [0.6, -4.0, 2.4]
-view.CameraFocalPoint = [0.0, 0.0, 0.0]
-view.CameraViewUp = [0.0, 0.0, 1.0]
-view.ResetCamera()
-simple.Render(view)
+common.look_and_compare(view, [0.6, -4.0, 2.4], [0.0, 0.0, 0.0], [0.0, 0.0, 1.0], arguments,
+                        failures)
 
-if arguments.baseline:
-    image = os.path.join(arguments.output_dir, os.path.basename(arguments.baseline))
-    simple.SaveScreenshot(image, view, ImageResolution=[400, 400])
-    if not common.compare_png(image, arguments.baseline, arguments.threshold):
-        failures.append("image differs from the baseline")
-
-for failure in failures:
-    print("FAILED:", failure)
-common.finish(not failures, "Point Pair Deformation through the plugin")
+common.report(failures, "Point Pair Deformation through the plugin")

@@ -1,4 +1,7 @@
-"""Shared by the Python tests: error observation and the regression-image comparison."""
+"""Shared by the Python tests: error observation, the arguments of the image tests and the
+regression-image comparison."""
+import argparse
+
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand
 from vtkmodules.vtkRenderingCore import vtkRenderWindow
@@ -7,29 +10,65 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL rende
 
 
 class ErrorRecorder:
-    """Observes vtkCommand.ErrorEvent: the messages go here instead of to the output window."""
+    """Observes vtkCommand.ErrorEvent and WarningEvent: the messages go here (errors in
+    `messages`, warnings in `warnings`) instead of to the output window."""
 
     def __init__(self, algorithm):
         self.messages = []
+        self.warnings = []
 
         # VTK looks for CallDataType on the callback itself: a function, not a callable object.
         @calldata_type(VTK_STRING)
-        def record(caller, event, message):
+        def record_error(caller, event, message):
             self.messages.append(message)
 
-        algorithm.AddObserver(vtkCommand.ErrorEvent, record)
+        @calldata_type(VTK_STRING)
+        def record_warning(caller, event, message):
+            self.warnings.append(message)
+
+        algorithm.AddObserver(vtkCommand.ErrorEvent, record_error)
+        algorithm.AddObserver(vtkCommand.WarningEvent, record_warning)
 
 
-def regression_test(renderer, camera_position, view_up, zoom, baseline, output_dir, threshold,
-                    size=(400, 300)):
-    """Render `renderer` offscreen, the camera looking at the origin from camera_position and fitted
-    to the scene, and compare with `baseline` by vtkTesting (as vtkRegressionTestImage). A missing
-    baseline fails after writing the image to output_dir. Returns the exit code (0: passed)."""
+def parse_image_arguments(description, figures=None):
+    """The command line of a regression-image test: --baseline, --output-dir, --threshold and,
+    when `figures` is given, --figure (one of them)."""
+    parser = argparse.ArgumentParser(description=description)
+    if figures is not None:
+        parser.add_argument("--figure", required=True, choices=sorted(figures))
+    parser.add_argument("--baseline", required=True, help="absolute path of the baseline PNG")
+    parser.add_argument("--output-dir", required=True, help="where the rendered image goes")
+    parser.add_argument("--threshold", type=float, default=10.0,
+                        help="vtkTesting error threshold (10, as vtkRegressionTestImage)")
+    return parser.parse_args()
+
+
+def offscreen_window(renderer, size):
+    """An offscreen render window of `size` pixels showing `renderer`."""
     window = vtkRenderWindow()
     window.SetOffScreenRendering(True)
     window.SetMultiSamples(0)  # no antialiasing: keeps the image the same from run to run
     window.SetSize(*size)
     window.AddRenderer(renderer)
+    return window
+
+
+def compare_with_baseline(window, baseline, output_dir, threshold):
+    """Compare the rendered `window` with `baseline` by vtkTesting (as vtkRegressionTestImage). A
+    missing baseline fails after writing the image to output_dir. Returns the exit code (0: passed)."""
+    testing = vtkTesting()
+    for argument in ("-V", baseline, "-T", output_dir):
+        testing.AddArgument(argument)
+    testing.SetRenderWindow(window)
+    result = testing.RegressionTest(threshold)
+    return 0 if result == vtkTesting.PASSED else 1
+
+
+def regression_test(renderer, camera_position, view_up, zoom, baseline, output_dir, threshold,
+                    size=(400, 300)):
+    """Render `renderer` offscreen, the camera looking at the origin from camera_position and fitted
+    to the scene, and compare with `baseline` (compare_with_baseline). Returns the exit code."""
+    window = offscreen_window(renderer, size)
     camera = renderer.GetActiveCamera()
     camera.SetFocalPoint(0, 0, 0)
     camera.SetPosition(*camera_position)
@@ -37,10 +76,4 @@ def regression_test(renderer, camera_position, view_up, zoom, baseline, output_d
     renderer.ResetCamera()
     camera.Zoom(zoom)
     window.Render()
-
-    testing = vtkTesting()
-    for argument in ("-V", baseline, "-T", output_dir):
-        testing.AddArgument(argument)
-    testing.SetRenderWindow(window)
-    result = testing.RegressionTest(threshold)
-    return 0 if result == vtkTesting.PASSED else 1
+    return compare_with_baseline(window, baseline, output_dir, threshold)

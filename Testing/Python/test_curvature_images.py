@@ -7,7 +7,6 @@ A missing baseline makes the test fail after writing the image to --output-dir (
 copy it to Testing/Data/Baseline/). The pipelines are written out here rather than taken from
 Examples/, so that restyling an example does not break these tests.
 """
-import argparse
 import sys
 
 from vtkmodules.vtkFiltersCore import vtkTubeFilter
@@ -91,13 +90,7 @@ FIGURES = {"fig6": fig6, "fig7": fig7, "fig9": fig9, "fig12": fig12}
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--figure", required=True, choices=sorted(FIGURES))
-    parser.add_argument("--baseline", required=True, help="absolute path of the baseline PNG")
-    parser.add_argument("--output-dir", required=True, help="where the rendered image goes")
-    parser.add_argument("--threshold", type=float, default=10.0,
-                        help="vtkTesting error threshold (10, as vtkRegressionTestImage)")
-    args = parser.parse_args()
+    args = common.parse_image_arguments(__doc__.splitlines()[0], FIGURES)
 
     actors, view_direction, view_up = FIGURES[args.figure]()
     renderer = vtkRenderer()

@@ -9,16 +9,15 @@ contours of "DipolePotential". The pipeline is written out here rather than take
 so that restyling an example does not break this test. A missing baseline makes the test fail after
 writing the image to --output-dir (look at it, then copy it to Testing/Data/Baseline/).
 """
-import argparse
 import sys
 
 from vtkmodules.vtkFiltersCore import vtkContourFilter, vtkGlyph3D
 from vtkmodules.vtkFiltersSources import vtkArrowSource
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
-from vtkmodules.vtkTestingRendering import vtkTesting
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL render window)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 
 from boostedsurfaces import vtkDipoleFieldSource
+
+import python_test_common as common
 
 FIGURES = {
     "13": ([(0, 0, 0, 1, 0, 0, 0.5)], "DisplacementSummedGenerators"),
@@ -29,13 +28,7 @@ FIGURES = {
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--figure", required=True, choices=sorted(FIGURES))
-    parser.add_argument("--baseline", required=True, help="absolute path of the baseline PNG")
-    parser.add_argument("--output-dir", required=True, help="where the rendered image goes")
-    parser.add_argument("--threshold", type=float, default=10.0,
-                        help="vtkTesting error threshold (10, as vtkRegressionTestImage)")
-    args = parser.parse_args()
+    args = common.parse_image_arguments(__doc__.splitlines()[0], FIGURES)
     generators, array = FIGURES[args.figure]
 
     source = vtkDipoleFieldSource()  # 21 x 21 points on [-2, 2]^2, z = 0
@@ -77,23 +70,13 @@ def main():
     renderer.SetBackground(1, 1, 1)
     renderer.AddActor(arrows)
     renderer.AddActor(lines)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(True)
-    window.SetMultiSamples(0)  # no antialiasing: keeps the image the same from run to run
-    window.SetSize(300, 300)
-    window.AddRenderer(renderer)
+    window = common.offscreen_window(renderer, (300, 300))
     camera = renderer.GetActiveCamera()
     camera.SetParallelProjection(True)
     renderer.ResetCamera()
     camera.Zoom(1.3)
     window.Render()
-
-    testing = vtkTesting()
-    for argument in ("-V", args.baseline, "-T", args.output_dir):
-        testing.AddArgument(argument)
-    testing.SetRenderWindow(window)
-    result = testing.RegressionTest(args.threshold)
-    return 0 if result == vtkTesting.PASSED else 1
+    return common.compare_with_baseline(window, args.baseline, args.output_dir, args.threshold)
 
 
 if __name__ == "__main__":

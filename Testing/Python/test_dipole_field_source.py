@@ -7,24 +7,11 @@ scale the weights, and the methods differ for two generators. Plain Python, no n
 import math
 import unittest
 
-from vtkmodules.util.misc import calldata_type
-from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand
 from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
 
 from boostedsurfaces import vtkDipoleFieldSource
 
-
-class ErrorRecorder:
-    """Observes vtkCommand.ErrorEvent: the messages go here instead of to the output window."""
-
-    def __init__(self, algorithm):
-        self.messages = []
-
-        @calldata_type(VTK_STRING)
-        def record(caller, event, message):
-            self.messages.append(message)
-
-        algorithm.AddObserver(vtkCommand.ErrorEvent, record)
+import python_test_common as common
 
 
 def closed_form(x, v, w, k, eps, p):
@@ -72,7 +59,7 @@ class DipoleFieldSourceTest(unittest.TestCase):
                       lambda s: s.SetSpacing(0.1, 0.0, 1.0),
                       lambda s: s.AddGenerator(0, 0, 0, 1, float("nan"), 0, 1)):
             source = vtkDipoleFieldSource()
-            errors = ErrorRecorder(source)
+            errors = common.ErrorRecorder(source)
             setup(source)
             source.Update()
             self.assertEqual(source.GetOutput().GetNumberOfPoints(), 0)

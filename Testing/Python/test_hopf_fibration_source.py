@@ -9,24 +9,13 @@ import os
 import sys
 import unittest
 
-from vtkmodules.util.misc import calldata_type
-from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand
 from vtkmodules.vtkFiltersSources import vtkSphereSource
 
 from boostedsurfaces import vtkHopfFibrationSource
 
+import python_test_common as common
+
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Examples"))
-
-
-def record_errors(algorithm):
-    messages = []
-
-    @calldata_type(VTK_STRING)
-    def record(caller, event, message):
-        messages.append(message)
-
-    algorithm.AddObserver(vtkCommand.ErrorEvent, record)
-    return messages
 
 
 def fiber_ids(output):
@@ -37,7 +26,7 @@ def fiber_ids(output):
 class HopfFibrationSourceTest(unittest.TestCase):
     def test_zero_resolution_gives_an_error_in_python_and_an_empty_output(self):
         source = vtkHopfFibrationSource()
-        errors = record_errors(source)
+        errors = common.ErrorRecorder(source).messages
         source.SetPhiResolution(0)
         source.Update()
         self.assertEqual(len(errors), 1)

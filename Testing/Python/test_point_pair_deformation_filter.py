@@ -9,11 +9,13 @@ import os
 import sys
 import unittest
 
-from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkPoints
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
 
 from boostedsurfaces import vtkPointPairDeformationFilter
+
+import python_test_common as common
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Examples"))
 
@@ -49,22 +51,6 @@ def generator_cloud(generators, direction_name="Direction", weight_name="Weight"
     data.GetPointData().AddArray(directions)
     data.GetPointData().AddArray(weights)
     return data
-
-
-class Events:
-    """Counts the error and warning events of a filter."""
-
-    def __init__(self, algorithm):
-        self.errors = 0
-        self.warnings = 0
-        algorithm.AddObserver(vtkCommand.ErrorEvent, self.on_error)
-        algorithm.AddObserver(vtkCommand.WarningEvent, self.on_warning)
-
-    def on_error(self, *_):
-        self.errors += 1
-
-    def on_warning(self, *_):
-        self.warnings += 1
 
 
 class PointPairDeformationFilterTest(unittest.TestCase):
@@ -114,23 +100,23 @@ class PointPairDeformationFilterTest(unittest.TestCase):
 
     def test_missing_generator_array_is_an_error_python_sees(self):
         deformation = vtkPointPairDeformationFilter()
-        events = Events(deformation)
+        events = common.ErrorRecorder(deformation)
         sphere = self.sphere()  # kept alive: an output port does not hold its algorithm
         deformation.SetInputConnection(sphere.GetOutputPort())
         deformation.SetGeneratorsData(generator_cloud([((0, 0, 0), (1, 0, 0), 1.0)]))
         deformation.SetGeneratorDirectionArrayName("NoSuchArray")
         deformation.Update()
-        self.assertEqual(events.errors, 1)
+        self.assertEqual(len(events.messages), 1)
         self.assertEqual(deformation.GetOutput().GetNumberOfPoints(), 0)
 
     def test_zero_direction_is_a_warning(self):
         deformation = vtkPointPairDeformationFilter()
-        events = Events(deformation)
+        events = common.ErrorRecorder(deformation)
         source = self.sphere()
         deformation.SetInputConnection(source.GetOutputPort())
         deformation.AddGenerator(0, 0, 0, 0, 0, 0, 1.0)
         deformation.Update()
-        self.assertEqual((events.errors, events.warnings), (0, 1))
+        self.assertEqual((len(events.messages), len(events.warnings)), (0, 1))
         sphere = source.GetOutput()
         for i in range(sphere.GetNumberOfPoints()):  # nothing left: the identity
             self.assertEqual(deformation.GetOutput().GetPoint(i), sphere.GetPoint(i))

@@ -8,17 +8,16 @@ A missing baseline makes the test fail after writing the image to --output-dir (
 copy it to Testing/Data/Baseline/). The generators are written out here rather than taken from
 Examples/, so that restyling the example does not break this test.
 """
-import argparse
 import sys
 
 from vtkmodules.vtkCommonCore import vtkLookupTable
 from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
-from vtkmodules.vtkTestingRendering import vtkTesting
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL render window)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 
 from boostedsurfaces import vtkPointPairDeformationFilter
+
+import python_test_common as common
 
 PLANE_GENERATORS = [((-1.0, -0.8, 0.4), (0, 0, 1), 0.7), ((1.0, -0.7, -0.4), (0, 0, 1), -0.7),
                     ((-0.3, 0.9, 0.3), (1, 0, 0), 0.6)]
@@ -54,12 +53,7 @@ def deformed_actor(source, generators, keep):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--baseline", required=True, help="absolute path of the baseline PNG")
-    parser.add_argument("--output-dir", required=True, help="where the rendered image goes")
-    parser.add_argument("--threshold", type=float, default=10.0,
-                        help="vtkTesting error threshold (10, as vtkRegressionTestImage)")
-    args = parser.parse_args()
+    args = common.parse_image_arguments(__doc__.splitlines()[0])
 
     plane = vtkPlaneSource()
     plane.SetOrigin(-2, -2, 0)
@@ -77,26 +71,8 @@ def main():
     renderer.SetBackground(1, 1, 1)
     renderer.AddActor(deformed_actor(plane, PLANE_GENERATORS, keep))
     renderer.AddActor(deformed_actor(sphere, SPHERE_GENERATORS, keep))
-
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(True)
-    window.SetMultiSamples(0)  # no antialiasing: keeps the image the same from run to run
-    window.SetSize(500, 300)
-    window.AddRenderer(renderer)
-    camera = renderer.GetActiveCamera()
-    camera.SetFocalPoint(0, 0, 0)
-    camera.SetPosition(0.15, -1.0, 0.6)
-    camera.SetViewUp(0, 0, 1)
-    renderer.ResetCamera()
-    camera.Zoom(1.3)
-    window.Render()
-
-    testing = vtkTesting()
-    for argument in ("-V", args.baseline, "-T", args.output_dir):
-        testing.AddArgument(argument)
-    testing.SetRenderWindow(window)
-    result = testing.RegressionTest(args.threshold)
-    return 0 if result == vtkTesting.PASSED else 1
+    return common.regression_test(renderer, (0.15, -1.0, 0.6), (0, 0, 1), 1.3, args.baseline,
+                                  args.output_dir, args.threshold, size=(500, 300))
 
 
 if __name__ == "__main__":

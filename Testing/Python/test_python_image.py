@@ -8,7 +8,6 @@ A missing baseline makes the test fail after writing the image to --output-dir: 
 baseline is made (look at it, then copy it to Testing/Data/Baseline/). The pipeline is written out
 here rather than taken from Examples/, so that restyling an example does not break this test.
 """
-import argparse
 import sys
 
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
@@ -30,12 +29,7 @@ def actor_for(source, scalar_range):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--baseline", required=True, help="absolute path of the baseline PNG")
-    parser.add_argument("--output-dir", required=True, help="where the rendered image goes")
-    parser.add_argument("--threshold", type=float, default=10.0,
-                        help="vtkTesting error threshold (10, as vtkRegressionTestImage)")
-    args = parser.parse_args()
+    args = common.parse_image_arguments(__doc__.splitlines()[0])
 
     horn = vtkBoostedSurfaceSource()  # yz unit circle, boosted from (-1.5, 0, 0) along +x
     horn.SetBoostAtCircleCenter(False)
