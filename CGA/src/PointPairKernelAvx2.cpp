@@ -1,0 +1,3 @@
+// The block kernel compiled for avx2 (compile options in CGA/CMakeLists.txt).
+#define BOOSTED_KERNEL_ISA avx2
+#include "PointPairKernelLanes.h"
