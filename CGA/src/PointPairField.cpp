@@ -76,45 +76,51 @@ bool PointPairField::map(Vec3 p, double strength, ExponentialRule rule, Vec3& ou
 
 namespace
 {
-// The Exact rule for the block kernel (PointPairKernel.h): even = pack(expExact(bivector)).
-void exactExponential(const double* bivector, double* even)
+// The terms of a sparse product (SparseProduct.h), as plain data for the block kernel, grouped
+// by result slot (a stable sort: each slot still sums its terms in SparseProduct's order, so the
+// kernel's sums round exactly as accumulate()'s).
+class TermTable
 {
-  Bivector b;
-  std::copy(bivector, bivector + Bivector::Count, b.c.begin());
-  const detail::EvenArray k = detail::pack(expExact(b));
-  std::copy(k.begin(), k.end(), even);
-}
-
-// The terms of sandwichGrade1's two sparse products, as plain data for the block kernel.
-template <std::size_t N>
-struct TermTable
-{
-  std::array<kernel::KernelTerm, N> terms{};
-  int size = 0;
-
+public:
   explicit TermTable(const detail::SparseProduct& product)
   {
-    for (int t = 0; t < product.size() && t < static_cast<int>(N); ++t)
+    for (int t = 0; t < product.size(); ++t)
     {
       const detail::ProductTerm& term = product.term(t);
-      terms[t] = { term.a, term.b, term.r, term.coefficient };
-      size = t + 1;
+      this->Terms[t] = { term.a, term.b, term.r, term.coefficient };
     }
+    this->Size = product.size();
+    std::stable_sort(this->Terms.begin(),
+                     this->Terms.begin() + this->Size,
+                     [](const kernel::KernelTerm& x, const kernel::KernelTerm& y) { return x.r < y.r; });
   }
+
+  kernel::KernelTerms view() const { return { this->Terms.data(), this->Size }; }
+
+private:
+  std::array<kernel::KernelTerm, 512> Terms{};
+  int Size = 0;
 };
 
-const TermTable<512>& evenTimesVectorTerms()
+// The products of expExact and sandwichGrade1, with the same blade lists as there.
+struct ExactRuleTables
 {
-  static const TermTable<512> table(detail::SparseProduct(
-    detail::kEvenBlades, ConformalVector::kBlades, detail::kOddBlades));
-  return table;
-}
+  TermTable wedge{ detail::SparseProduct(
+    Bivector::kBlades, Bivector::kBlades, Quadvector::kBlades) };
+  TermTable quadvectorSquare{ detail::SparseProduct(
+    Quadvector::kBlades, Quadvector::kBlades, detail::kScalarBlade) };
+  TermTable rightContraction{ detail::SparseProduct(
+    Quadvector::kBlades, Bivector::kBlades, Bivector::kBlades) };
+  TermTable evenTimesVector{ detail::SparseProduct(
+    detail::kEvenBlades, ConformalVector::kBlades, detail::kOddBlades) };
+  TermTable oddTimesEvenToVector{ detail::SparseProduct(
+    detail::kOddBlades, detail::kEvenBlades, ConformalVector::kBlades) };
+};
 
-const TermTable<512>& oddTimesEvenToVectorTerms()
+const ExactRuleTables& exactRuleTables()
 {
-  static const TermTable<512> table(detail::SparseProduct(
-    detail::kOddBlades, detail::kEvenBlades, ConformalVector::kBlades));
-  return table;
+  static const ExactRuleTables tables;
+  return tables;
 }
 
 template <typename In, typename Out>
@@ -213,13 +219,12 @@ std::size_t mapPointsWith(const PointPairField& field,
   args.exactRule = rule == ExponentialRule::Exact;
   if (args.exactRule)
   {
-    args.exactExponential = &exactExponential;
-    const auto& kx = evenTimesVectorTerms();
-    const auto& oddK = oddTimesEvenToVectorTerms();
-    args.evenTimesVector = kx.terms.data();
-    args.evenTimesVectorSize = kx.size;
-    args.oddTimesEvenToVector = oddK.terms.data();
-    args.oddTimesEvenToVectorSize = oddK.size;
+    const ExactRuleTables& tables = exactRuleTables();
+    args.wedge = tables.wedge.view();
+    args.quadvectorSquare = tables.quadvectorSquare.view();
+    args.rightContraction = tables.rightContraction.view();
+    args.evenTimesVector = tables.evenTimesVector.view();
+    args.oddTimesEvenToVector = tables.oddTimesEvenToVector.view();
   }
   return mapPointsInBlocks(args, in, out, count);
 }

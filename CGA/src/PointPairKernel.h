@@ -31,9 +31,12 @@ struct KernelTerm
   double coefficient;
 };
 
-/// The Exact rule: even[16] (scalar, Bivector, Quadvector) = expExact(bivector[10]), computed by
-/// the baseline translation unit so both rules keep the scalar code's exponential exactly.
-using ExactExponential = void (*)(const double* bivector, double* even);
+/// The terms of one sparse product, sorted by result slot, each slot's in SparseProduct's order.
+struct KernelTerms
+{
+  const KernelTerm* terms = nullptr;
+  int size = 0;
+};
 
 /// Everything one call of a block kernel needs.
 struct KernelArgs
@@ -44,12 +47,10 @@ struct KernelArgs
   double epsilon = 1e-2;
   double strength = 1.0;
   bool exactRule = false;
-  ExactExponential exactExponential = nullptr;
-  // <K X>: even (16 slots) times vector (5) into odd (16); <(K X) ~K>_1: odd times even to vector.
-  const KernelTerm* evenTimesVector = nullptr;
-  int evenTimesVectorSize = 0;
-  const KernelTerm* oddTimesEvenToVector = nullptr;
-  int oddTimesEvenToVectorSize = 0;
+  // The products expExact and sandwichGrade1 use (CompactAlgebra.cpp, PointSandwich.cpp), for
+  // the Exact rule: B ^ B, Q Q, Q _| B; K X (even times vector into odd) and <(K X) ~K>_1.
+  KernelTerms wedge, quadvectorSquare, rightContraction;
+  KernelTerms evenTimesVector, oddTimesEvenToVector;
 };
 
 /// Maps kLanes points: xyz holds x[kLanes], y[kLanes], z[kLanes]; image receives the images in

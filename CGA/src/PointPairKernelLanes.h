@@ -201,6 +201,30 @@ void sandwichScalarBivector(const double* c,
   }
 }
 
+// r = sum of the terms' coefficient a[a] b[b], each slot's sum in the table's order like
+// SparseProduct::accumulate, but in a register rather than through memory.
+template <int NR>
+void applyTerms(const KernelTerms& table, const double (*a)[L], const double (*b)[L], double (*r)[L])
+{
+  int t = 0;
+  for (int i = 0; i < NR; ++i)
+  {
+    alignas(64) Lanes sum = {};
+    for (; t < table.size && table.terms[t].r == i; ++t)
+    {
+      const KernelTerm term = table.terms[t];
+      for (int l = 0; l < L; ++l)
+      {
+        sum[l] += term.coefficient * a[term.a][l] * b[term.b][l];
+      }
+    }
+    for (int l = 0; l < L; ++l)
+    {
+      r[i][l] = sum[l];
+    }
+  }
+}
+
 // <K X ~K>_1 for a full even K (scalar, bivector, 4-vector slots as detail::pack) through the
 // sparse product terms of sandwichGrade1, in the same order.
 void sandwichEven(const KernelArgs& args,
@@ -218,28 +242,212 @@ void sandwichEven(const KernelArgs& args,
       reversed[s][l] = sign * k[s][l];
     }
   }
-  alignas(64) double odd[16][L] = {};
-  for (int t = 0; t < args.evenTimesVectorSize; ++t)
+  alignas(64) double odd[16][L];
+  applyTerms<16>(args.evenTimesVector, k, x, odd);
+  applyTerms<VectorCount>(args.oddTimesEvenToVector, odd, reversed, r);
+}
+
+constexpr int QuadvectorCount = 5;
+constexpr int EvenCount = 16; // scalar, 10 bivector, 5 quadvector components (detail::pack)
+
+// planeSquares() of Exponential.cpp, one lane.
+void planeSquares(double s, double w2, double& l1, double& l2)
+{
+  const double disc = s * s - w2;
+  if (!(disc > 0.0))
   {
-    const KernelTerm term = args.evenTimesVector[t];
+    l1 = l2 = 0.5 * s;
+    return;
+  }
+  const double r = __builtin_sqrt(disc);
+  if (s >= 0.0)
+  {
+    l1 = 0.5 * (s + r);
+    l2 = l1 != 0.0 ? 0.25 * w2 / l1 : 0.0;
+  }
+  else
+  {
+    l2 = 0.5 * (s - r);
+    l1 = 0.25 * w2 / l2;
+  }
+}
+
+// planeFunctions() of Exponential.cpp with AvoidOverflow, one lane.
+void planeFunctions(double m, double lh, double& c, double& sHat)
+{
+  const double r = __builtin_sqrt(__builtin_fabs(lh));
+  const double x = m * r;
+  if (x < 1e-2)
+  {
+    const double l = lh >= 0.0 ? x * x : -x * x;
+    c = 1.0 + l / 2.0 * (1.0 + l / 12.0 * (1.0 + l / 30.0 * (1.0 + l / 56.0)));
+    sHat = m * (1.0 + l / 6.0 * (1.0 + l / 20.0 * (1.0 + l / 42.0 * (1.0 + l / 72.0))));
+    return;
+  }
+  planeTranscendental(r, x, lh, c, sHat);
+}
+
+double sinc(double x)
+{
+  return __builtin_fabs(x) < 1e-4 ? 1.0 - x * x / 6.0 : sin(x) / x;
+}
+
+// exp(B) = scalar + quadvector w + bivectorU u + bivectorWU <w u>_2 outside the series range.
+struct ClosedFormCoefficients
+{
+  double scalar, quadvector, bivectorU, bivectorWU;
+};
+
+ClosedFormCoefficients closedFormCoefficients(double m, double l1, double l2, double largest)
+{
+  ClosedFormCoefficients k;
+  if (l1 - l2 >= 0.05 * largest || l1 > 0.0)
+  {
+    double c1, s1, c2, s2;
+    planeFunctions(m, l1, c1, s1);
+    planeFunctions(m, l2, c2, s2);
+    const double d = l1 - l2;
+    k.scalar = c1 * c2;
+    k.quadvector = 0.5 * s1 * s2;
+    k.bivectorU = (l1 * s1 * c2 - l2 * s2 * c1) / d;
+    k.bivectorWU = 0.5 * (c1 * s2 - c2 * s1) / d;
+    return k;
+  }
+  // Two rotations with nearly equal angles (expExact).
+  const double r1 = __builtin_sqrt(-l1), r2 = __builtin_sqrt(-l2);
+  const double t1 = m * r1, t2 = m * r2;
+  const double mSincSum = sin(t1 + t2) / (r1 + r2);
+  const double mSincDiff = m * sinc(t1 - t2);
+  k.scalar = cos(t1) * cos(t2);
+  k.quadvector = 0.5 * (sin(t1) / r1) * (sin(t2) / r2);
+  k.bivectorU = 0.5 * (mSincSum + mSincDiff);
+  k.bivectorWU = 0.25 * (mSincDiff - mSincSum) / (r1 * r2);
+  return k;
+}
+
+// seriesExp() of Exponential.cpp on every lane of b, into k (detail::pack order).
+void seriesExponential(const KernelArgs& args, const double (*b)[L], double (*k)[L])
+{
+  alignas(64) double w[QuadvectorCount][L];
+  applyTerms<QuadvectorCount>(args.wedge, b, b, w);
+  alignas(64) double w2[1][L];
+  applyTerms<1>(args.quadvectorSquare, w, w, w2);
+  alignas(64) double wb[BivectorCount][L];
+  applyTerms<BivectorCount>(args.rightContraction, w, b, wb);
+  alignas(64) Lanes s, alpha, beta, a0, a4, b0, b4;
+  for (int l = 0; l < L; ++l)
+  {
+    s[l] = scalarSquare(b, l);
+    alpha[l] = 1.0;
+    beta[l] = a0[l] = a4[l] = b0[l] = b4[l] = 0.0;
+  }
+  double evenFactorial = 1.0;
+  for (int n = 0; n < 16; ++n)
+  {
+    const double oddFactorial = evenFactorial / (2 * n + 1);
     for (int l = 0; l < L; ++l)
     {
-      odd[term.r][l] += term.coefficient * k[term.a][l] * x[term.b][l];
+      a0[l] += alpha[l] * evenFactorial;
+      a4[l] += beta[l] * evenFactorial;
+      b0[l] += alpha[l] * oddFactorial;
+      b4[l] += beta[l] * oddFactorial;
+      const double nextAlpha = s[l] * alpha[l] + w2[0][l] * beta[l];
+      beta[l] = alpha[l] + s[l] * beta[l];
+      alpha[l] = nextAlpha;
+    }
+    evenFactorial = oddFactorial / (2 * n + 2);
+  }
+  for (int l = 0; l < L; ++l)
+  {
+    k[0][l] = a0[l];
+    for (int i = 0; i < BivectorCount; ++i)
+    {
+      k[1 + i][l] = b0[l] * b[i][l] + b4[l] * wb[i][l];
+    }
+    for (int i = 0; i < QuadvectorCount; ++i)
+    {
+      k[1 + BivectorCount + i][l] = a4[l] * w[i][l];
     }
   }
-  for (int i = 0; i < VectorCount; ++i)
+}
+
+// K of the Exact rule (expExact) for every lane, in detail::pack order; NaN where B is not finite.
+void exactExponential(const KernelArgs& args, const double (*b)[L], double (*k)[L])
+{
+  alignas(64) Lanes m;
+  maxAbs(b, m);
+  alignas(64) double u[BivectorCount][L];
+  for (int l = 0; l < L; ++l)
   {
-    for (int l = 0; l < L; ++l)
+    const double scale = (m[l] != 0.0 && __builtin_isfinite(m[l])) ? m[l] : 1.0;
+    for (int i = 0; i < BivectorCount; ++i)
     {
-      r[i][l] = 0.0;
+      u[i][l] = b[i][l] / scale;
     }
   }
-  for (int t = 0; t < args.oddTimesEvenToVectorSize; ++t)
+  alignas(64) double w[QuadvectorCount][L];
+  applyTerms<QuadvectorCount>(args.wedge, u, u, w);
+  alignas(64) double w2[1][L];
+  applyTerms<1>(args.quadvectorSquare, w, w, w2);
+  // Which lanes take the power series (seriesExp of B itself) and which the closed form.
+  alignas(64) Lanes l1, l2, largest;
+  bool series[L], closed[L];
+  bool anySeries = false, anyClosed = false;
+  for (int l = 0; l < L; ++l)
   {
-    const KernelTerm term = args.oddTimesEvenToVector[t];
+    planeSquares(scalarSquare(u, l), w2[0][l], l1[l], l2[l]);
+    const double a1 = __builtin_fabs(l1[l]), a2 = __builtin_fabs(l2[l]);
+    largest[l] = a1 < a2 ? a2 : a1; // std::max
+    const bool usable = m[l] != 0.0 && __builtin_isfinite(m[l]);
+    series[l] = usable && (largest[l] == 0.0 || m[l] * largest[l] * m[l] <= 1.0);
+    closed[l] = usable && !series[l];
+    anySeries = anySeries || series[l];
+    anyClosed = anyClosed || closed[l];
+  }
+  alignas(64) double fromSeries[EvenCount][L];
+  if (anySeries)
+  {
+    seriesExponential(args, b, fromSeries);
+  }
+  alignas(64) double wu[BivectorCount][L];
+  alignas(64) double coefficients[4][L] = {};
+  if (anyClosed)
+  {
+    applyTerms<BivectorCount>(args.rightContraction, w, u, wu);
     for (int l = 0; l < L; ++l)
     {
-      r[term.r][l] += term.coefficient * odd[term.a][l] * reversed[term.b][l];
+      if (closed[l])
+      {
+        const ClosedFormCoefficients c = closedFormCoefficients(m[l], l1[l], l2[l], largest[l]);
+        coefficients[0][l] = c.scalar;
+        coefficients[1][l] = c.quadvector;
+        coefficients[2][l] = c.bivectorU;
+        coefficients[3][l] = c.bivectorWU;
+      }
+    }
+  }
+  const double nan = __builtin_nan("");
+  for (int l = 0; l < L; ++l)
+  {
+    const bool finite = __builtin_isfinite(m[l]);
+    const bool zero = m[l] == 0.0;
+    for (int i = 0; i < EvenCount; ++i)
+    {
+      double closedValue;
+      if (i == 0)
+      {
+        closedValue = coefficients[0][l];
+      }
+      else if (i <= BivectorCount)
+      {
+        closedValue = coefficients[2][l] * u[i - 1][l] + coefficients[3][l] * wu[i - 1][l];
+      }
+      else
+      {
+        closedValue = coefficients[1][l] * w[i - 1 - BivectorCount][l];
+      }
+      const double identity = i == 0 ? 1.0 : 0.0;
+      k[i][l] = !finite ? nan : (zero ? identity : (series[l] ? fromSeries[i][l] : closedValue));
     }
   }
 }
@@ -327,21 +535,8 @@ void mapBlock(const KernelArgs& args, const double* xyz, double* image, std::uin
   }
   else
   {
-    alignas(64) double k[16][L];
-    for (int l = 0; l < L; ++l)
-    {
-      double lane[BivectorCount];
-      double even[16];
-      for (int i = 0; i < BivectorCount; ++i)
-      {
-        lane[i] = b[i][l];
-      }
-      args.exactExponential(lane, even);
-      for (int s = 0; s < 16; ++s)
-      {
-        k[s][l] = even[s];
-      }
-    }
+    alignas(64) double k[EvenCount][L];
+    exactExponential(args, b, k);
     sandwichEven(args, k, x, r);
   }
   normalize(xyz, r, image, mapped);

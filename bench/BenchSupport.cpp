@@ -1,0 +1,98 @@
+#include "BenchSupport.h"
+
+#include <vtkDoubleArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+
+#include <cmath>
+#include <random>
+#include <thread>
+
+namespace boostedbench
+{
+namespace
+{
+vtkSmartPointer<vtkStructuredGrid> makeMesh()
+{
+  vtkNew<vtkDoubleArray> coordinates;
+  coordinates->SetNumberOfComponents(3);
+  coordinates->SetNumberOfTuples(static_cast<vtkIdType>(kMeshPoints));
+  vtkNew<vtkDoubleArray> displacement;
+  displacement->SetName("displacement");
+  displacement->SetNumberOfComponents(3);
+  displacement->SetNumberOfTuples(static_cast<vtkIdType>(kMeshPoints));
+  for (int j = 0; j < kMeshSide; ++j)
+  {
+    for (int i = 0; i < kMeshSide; ++i)
+    {
+      const double x = -2.0 + 4.0 * i / (kMeshSide - 1);
+      const double y = -2.0 + 4.0 * j / (kMeshSide - 1);
+      const double z = 0.3 * std::sin(2.0 * x) * std::cos(3.0 * y);
+      const vtkIdType id = static_cast<vtkIdType>(j) * kMeshSide + i;
+      coordinates->SetTypedTuple(id, std::array<double, 3>{ x, y, z }.data());
+      displacement->SetTypedTuple(id, std::array<double, 3>{ 0.1 * y, -0.1 * x, 0.05 }.data());
+    }
+  }
+  vtkNew<vtkPoints> points;
+  points->SetData(coordinates);
+  auto grid = vtkSmartPointer<vtkStructuredGrid>::New();
+  grid->SetDimensions(kMeshSide, kMeshSide, 1);
+  grid->SetPoints(points);
+  grid->GetPointData()->SetVectors(displacement);
+  return grid;
+}
+} // namespace
+
+vtkStructuredGrid* benchmarkMesh()
+{
+  static const vtkSmartPointer<vtkStructuredGrid> mesh = makeMesh();
+  return mesh;
+}
+
+const double* benchmarkPoints()
+{
+  auto* coordinates = vtkDoubleArray::SafeDownCast(benchmarkMesh()->GetPoints()->GetData());
+  return coordinates->GetPointer(0);
+}
+
+std::vector<cga::PointPairGenerator> benchmarkGenerators(int count)
+{
+  std::mt19937_64 engine(20140601);
+  std::uniform_real_distribution<double> coordinate(-2.0, 2.0), unit(-1.0, 1.0), weight(0.1, 0.4);
+  std::vector<cga::PointPairGenerator> generators;
+  for (int i = 0; i < count; ++i)
+  {
+    const cga::Vec3 location{ coordinate(engine), coordinate(engine), 0.3 * unit(engine) };
+    const cga::Vec3 direction{ unit(engine), unit(engine), unit(engine) };
+    generators.push_back({ location, direction, weight(engine) });
+  }
+  return generators;
+}
+
+void reportPoints(benchmark::State& state, std::size_t pointsPerIteration)
+{
+  const double points = static_cast<double>(pointsPerIteration) * state.iterations();
+  state.counters["points/s"] = benchmark::Counter(points, benchmark::Counter::kIsRate);
+  state.SetItemsProcessed(static_cast<int64_t>(points));
+}
+
+void runOnThreads(int threads,
+                  std::size_t count,
+                  const std::function<void(std::size_t, std::size_t)>& work)
+{
+  std::vector<std::thread> others;
+  const std::size_t share = (count + threads - 1) / threads;
+  for (int t = 1; t < threads; ++t)
+  {
+    const std::size_t first = std::min(count, t * share);
+    const std::size_t last = std::min(count, first + share);
+    others.emplace_back(work, first, last);
+  }
+  work(0, std::min(count, share));
+  for (std::thread& thread : others)
+  {
+    thread.join();
+  }
+}
+} // namespace boostedbench

@@ -1,0 +1,55 @@
+// Shared by the benchmarks of BoostedBench: the one 1,000,000-point mesh every benchmark deforms,
+// the generator fields, the points-per-second counter, and running work on N threads.
+//
+// A new benchmark (e.g. the VTK deformation filter) is one function in its own file that takes
+// benchmarkMesh(), loops over the state, and calls reportPoints(); see BenchWarpVector.cpp.
+#pragma once
+
+#include "cga/PointPairField.h"
+
+#include <vtkSmartPointer.h>
+#include <vtkStructuredGrid.h>
+
+#include <benchmark/benchmark.h>
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+namespace boostedbench
+{
+/// Points of the shared mesh: a 1000 x 1000 wavy sheet.
+constexpr int kMeshSide = 1000;
+constexpr std::size_t kMeshPoints = static_cast<std::size_t>(kMeshSide) * kMeshSide;
+
+/// Generator counts M of the figures.
+inline const std::vector<long>& generatorCounts()
+{
+  static const std::vector<long> counts = { 1, 4, 16, 64 };
+  return counts;
+}
+
+/// The 1,000,000-point mesh (double points), with a point vector array "displacement" for
+/// vtkWarpVector. Built once.
+vtkStructuredGrid* benchmarkMesh();
+
+/// The mesh points as xyz doubles (the mesh's own array).
+const double* benchmarkPoints();
+
+/// M generators spread over the mesh's bounds, fixed seed.
+std::vector<cga::PointPairGenerator> benchmarkGenerators(int count);
+
+/// The field of M generators the kernel, reference and filter benchmarks share.
+constexpr double kFalloff = 1.0;
+constexpr double kEpsilon = 0.05;
+constexpr double kStrength = 0.5;
+
+/// Reports points per second ("points/s") and items per second, over real (wall) time.
+void reportPoints(benchmark::State& state, std::size_t pointsPerIteration);
+
+/// Runs work(first, last) over [0, count) split into `threads` contiguous ranges, one std::thread
+/// each (the calling thread takes the first).
+void runOnThreads(int threads,
+                  std::size_t count,
+                  const std::function<void(std::size_t, std::size_t)>& work);
+} // namespace boostedbench
