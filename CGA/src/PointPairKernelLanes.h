@@ -55,47 +55,51 @@ enum
 
 using Lanes = double[L];
 
+// kLanes doubles as one value (GCC/Clang vector extension): the generator loop below keeps its
+// ten sums in registers, which plain arrays did not get from every compiler.
+typedef double LaneVector __attribute__((vector_size(L * sizeof(double))));
+
+inline LaneVector loadLanes(const double* p)
+{
+  LaneVector v;
+  __builtin_memcpy(&v, p, sizeof v);
+  return v;
+}
+
+inline void storeLanes(double* p, LaneVector v)
+{
+  __builtin_memcpy(p, &v, sizeof v);
+}
+
 // b[c][l] = -strength B(p_l) = -strength sum_i w_i tau_i / (k |p_l - x_i|^2 + eps).
 void accumulateGenerator(const KernelArgs& args, const double* xyz, double (*b)[L])
 {
+  const LaneVector px = loadLanes(xyz);
+  const LaneVector py = loadLanes(xyz + L);
+  const LaneVector pz = loadLanes(xyz + 2 * L);
+  LaneVector sum[BivectorCount];
   for (int c = 0; c < BivectorCount; ++c)
   {
-    for (int l = 0; l < L; ++l)
-    {
-      b[c][l] = 0.0;
-    }
+    sum[c] = LaneVector{} + 0.0;
   }
-  const double* px = xyz;
-  const double* py = xyz + L;
-  const double* pz = xyz + 2 * L;
+  const double falloff = args.falloff, epsilon = args.epsilon;
   for (std::size_t i = 0; i < args.generatorCount; ++i)
   {
     const double* g = args.generators + i * kGeneratorStride;
-    alignas(64) Lanes factor;
-    for (int l = 0; l < L; ++l)
-    {
-      const double dx = px[l] - g[0];
-      const double dy = py[l] - g[1];
-      const double dz = pz[l] - g[2];
-      const double d2 = dx * dx + dy * dy + dz * dz;
-      factor[l] = 1.0 / (args.falloff * d2 + args.epsilon);
-    }
+    const LaneVector dx = px - g[0];
+    const LaneVector dy = py - g[1];
+    const LaneVector dz = pz - g[2];
+    const LaneVector d2 = dx * dx + dy * dy + dz * dz;
+    const LaneVector factor = 1.0 / (falloff * d2 + epsilon);
     for (int c = 0; c < BivectorCount; ++c)
     {
-      const double pair = g[3 + c];
-      for (int l = 0; l < L; ++l)
-      {
-        b[c][l] += pair * factor[l];
-      }
+      sum[c] += g[3 + c] * factor;
     }
   }
   const double scale = -args.strength;
   for (int c = 0; c < BivectorCount; ++c)
   {
-    for (int l = 0; l < L; ++l)
-    {
-      b[c][l] *= scale;
-    }
+    storeLanes(b[c], sum[c] * scale);
   }
 }
 
@@ -150,18 +154,15 @@ void planeTranscendental(double r, double x, double lh, double& c, double& sHat)
 // y = v _| B for conformal vectors v (five lanes arrays) and a bivector B:
 // v = a no + u + b ni gives y = (u.A + d a) no + (u _| E + b A + a C) + (u.C - d b) ni with
 // B = E + A_i e_i^no + C_i e_i^ni + d no^ni (no.ni = -1).
-void contract(const double (*v)[L], const double (*b)[L], double (*y)[L])
+inline void contract(const LaneVector* v, const LaneVector* b, LaneVector* y)
 {
-  for (int l = 0; l < L; ++l)
-  {
-    const double a = v[NO][l], u1 = v[E1][l], u2 = v[E2][l], u3 = v[E3][l], bb = v[NI][l];
-    const double d = b[NONI][l];
-    y[NO][l] = u1 * b[E1NO][l] + u2 * b[E2NO][l] + u3 * b[E3NO][l] + d * a;
-    y[E1][l] = -b[E12][l] * u2 - b[E13][l] * u3 + bb * b[E1NO][l] + a * b[E1NI][l];
-    y[E2][l] = b[E12][l] * u1 - b[E23][l] * u3 + bb * b[E2NO][l] + a * b[E2NI][l];
-    y[E3][l] = b[E13][l] * u1 + b[E23][l] * u2 + bb * b[E3NO][l] + a * b[E3NI][l];
-    y[NI][l] = u1 * b[E1NI][l] + u2 * b[E2NI][l] + u3 * b[E3NI][l] - d * bb;
-  }
+  const LaneVector a = v[NO], u1 = v[E1], u2 = v[E2], u3 = v[E3], bb = v[NI];
+  const LaneVector d = b[NONI];
+  y[NO] = u1 * b[E1NO] + u2 * b[E2NO] + u3 * b[E3NO] + d * a;
+  y[E1] = -b[E12] * u2 - b[E13] * u3 + bb * b[E1NO] + a * b[E1NI];
+  y[E2] = b[E12] * u1 - b[E23] * u3 + bb * b[E2NO] + a * b[E2NI];
+  y[E3] = b[E13] * u1 + b[E23] * u2 + bb * b[E3NO] + a * b[E3NI];
+  y[NI] = u1 * b[E1NI] + u2 * b[E2NI] + u3 * b[E3NI] - d * bb;
 }
 
 // up(p) = no + p + |p|^2/2 ni.
@@ -186,18 +187,26 @@ void sandwichScalarBivector(const double* c,
                             const double (*x)[L],
                             double (*r)[L])
 {
-  alignas(64) double y[VectorCount][L];
-  alignas(64) double z[VectorCount][L];
-  contract(x, b, y);
-  contract(y, b, z);
-  for (int l = 0; l < L; ++l)
+  LaneVector bv[BivectorCount], xv[VectorCount], y[VectorCount], z[VectorCount];
+  for (int i = 0; i < BivectorCount; ++i)
   {
-    const double a = c[l] * c[l] - scalarSquare(b, l);
-    const double twoC = 2.0 * c[l];
-    for (int i = 0; i < VectorCount; ++i)
-    {
-      r[i][l] = a * x[i][l] - twoC * y[i][l] + 2.0 * z[i][l];
-    }
+    bv[i] = loadLanes(b[i]);
+  }
+  for (int i = 0; i < VectorCount; ++i)
+  {
+    xv[i] = loadLanes(x[i]);
+  }
+  contract(xv, bv, y);
+  contract(y, bv, z);
+  const LaneVector cv = loadLanes(c);
+  const LaneVector square = -(bv[E12] * bv[E12] + bv[E13] * bv[E13] + bv[E23] * bv[E23]) +
+    2.0 * (bv[E1NO] * bv[E1NI] + bv[E2NO] * bv[E2NI] + bv[E3NO] * bv[E3NI]) +
+    bv[NONI] * bv[NONI];
+  const LaneVector a = cv * cv - square;
+  const LaneVector twoC = 2.0 * cv;
+  for (int i = 0; i < VectorCount; ++i)
+  {
+    storeLanes(r[i], a * xv[i] - twoC * y[i] + 2.0 * z[i]);
   }
 }
 
