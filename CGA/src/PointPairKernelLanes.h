@@ -55,9 +55,67 @@ enum
 
 using Lanes = double[L];
 
-// kLanes doubles as one value (GCC/Clang vector extension): the generator loop below keeps its
-// ten sums in registers, which plain arrays did not get from every compiler.
-typedef double LaneVector __attribute__((vector_size(L * sizeof(double))));
+// kLanes doubles as one value, made of registers of the target's width (the including file sets
+// BOOSTED_KERNEL_VECTOR_BYTES: 64 for AVX-512, 32 for AVX2, 16 otherwise). GCC/Clang vector
+// extensions; wider vector types than the target has are lowered badly, hence the parts. The
+// generator loop below keeps its ten sums in registers, which plain arrays did not get from GCC.
+#ifndef BOOSTED_KERNEL_VECTOR_BYTES
+#define BOOSTED_KERNEL_VECTOR_BYTES 16
+#endif
+typedef double NativeVector __attribute__((vector_size(BOOSTED_KERNEL_VECTOR_BYTES)));
+constexpr int kParts = L * static_cast<int>(sizeof(double)) / BOOSTED_KERNEL_VECTOR_BYTES;
+static_assert(kParts >= 1 && kParts * BOOSTED_KERNEL_VECTOR_BYTES == L * sizeof(double),
+              "lanes must fill whole registers");
+
+struct LaneVector
+{
+  NativeVector part[kParts];
+};
+
+#define BOOSTED_LANE_OPERATOR(op)                                                                \
+  inline LaneVector operator op(LaneVector a, const LaneVector& b)                               \
+  {                                                                                              \
+    for (int i = 0; i < kParts; ++i)                                                             \
+    {                                                                                            \
+      a.part[i] = a.part[i] op b.part[i];                                                        \
+    }                                                                                            \
+    return a;                                                                                    \
+  }                                                                                              \
+  inline LaneVector operator op(LaneVector a, double b)                                          \
+  {                                                                                              \
+    for (int i = 0; i < kParts; ++i)                                                             \
+    {                                                                                            \
+      a.part[i] = a.part[i] op b;                                                                \
+    }                                                                                            \
+    return a;                                                                                    \
+  }                                                                                              \
+  inline LaneVector operator op(double a, LaneVector b)                                          \
+  {                                                                                              \
+    for (int i = 0; i < kParts; ++i)                                                             \
+    {                                                                                            \
+      b.part[i] = a op b.part[i];                                                                \
+    }                                                                                            \
+    return b;                                                                                    \
+  }
+BOOSTED_LANE_OPERATOR(+)
+BOOSTED_LANE_OPERATOR(-)
+BOOSTED_LANE_OPERATOR(*)
+BOOSTED_LANE_OPERATOR(/)
+#undef BOOSTED_LANE_OPERATOR
+
+inline LaneVector operator-(LaneVector a)
+{
+  for (int i = 0; i < kParts; ++i)
+  {
+    a.part[i] = -a.part[i];
+  }
+  return a;
+}
+
+inline LaneVector& operator+=(LaneVector& a, const LaneVector& b)
+{
+  return a = a + b;
+}
 
 inline LaneVector loadLanes(const double* p)
 {
@@ -66,7 +124,7 @@ inline LaneVector loadLanes(const double* p)
   return v;
 }
 
-inline void storeLanes(double* p, LaneVector v)
+inline void storeLanes(double* p, const LaneVector& v)
 {
   __builtin_memcpy(p, &v, sizeof v);
 }
@@ -80,7 +138,7 @@ void accumulateGenerator(const KernelArgs& args, const double* xyz, double (*b)[
   LaneVector sum[BivectorCount];
   for (int c = 0; c < BivectorCount; ++c)
   {
-    sum[c] = LaneVector{} + 0.0;
+    sum[c] = LaneVector{};
   }
   const double falloff = args.falloff, epsilon = args.epsilon;
   for (std::size_t i = 0; i < args.generatorCount; ++i)
