@@ -13,6 +13,7 @@ FIGURES = [
     "fig1_boosted_circle",
     "fig2_boosted_surfaces",
     "fig3_horn",
+    "fig11_deformation",
 ]
 
 

@@ -1,6 +1,7 @@
 """BoostedSurfaces: VTK sources and filters from point-pair boosts (Colapinto 2014).
 
     from boostedsurfaces import vtkBoostedSurfaceSource
+    from boostedsurfaces import vtkPointPairDeformationFilter
 """
 # The wrapped module depends on these VTK modules; importing them first makes the classes'
 # base types known to Python.
@@ -8,3 +9,4 @@ import vtkmodules.vtkCommonCore  # noqa: F401
 import vtkmodules.vtkCommonExecutionModel  # noqa: F401
 
 from .BoostedSurfacesSources import *  # noqa: F401,F403
+from .BoostedSurfacesFilters import *  # noqa: F401,F403

@@ -21,6 +21,13 @@ source.Update()
 count = source.GetOutput().GetNumberOfPoints()
 assert count == 65 * 65, count
 print("installed Python package: %d points" % count)
+from boostedsurfaces import vtkPointPairDeformationFilter
+deformation = vtkPointPairDeformationFilter()
+deformation.SetInputConnection(source.GetOutputPort())
+deformation.AddGenerator(0, 0, 0, 1, 0, 0, 0.5)
+deformation.Update()
+assert deformation.GetOutput().GetNumberOfPoints() == count
+print("installed Python package: the deformation filter runs")
 PY
 
 if [ -n "$pvpython" ]; then
@@ -34,6 +41,10 @@ surface.UpdatePipeline()
 count = surface.GetDataInformation().GetNumberOfPoints()
 assert count == 65 * 65, count
 print("installed plugin: %d points" % count)
+deformation = PointPairDeformation(Input=surface)
+deformation.UpdatePipeline()
+assert deformation.GetDataInformation().GetNumberOfPoints() == count
+print("installed plugin: the deformation filter runs")
 PY
   "$pvpython" "$prefix/load_plugin.py"
 fi

@@ -23,4 +23,7 @@ PYTHONPATH="$site_packages" "$python" -c "
 from boostedsurfaces import vtkBoostedSurfaceSource
 s = vtkBoostedSurfaceSource(); s.Update()
 assert s.GetOutput().GetNumberOfCells() == 64 * 64
+from boostedsurfaces import vtkPointPairDeformationFilter
+d = vtkPointPairDeformationFilter(); d.SetInputConnection(s.GetOutputPort()); d.Update()
+assert d.GetOutput().GetNumberOfCells() == 64 * 64
 print('standalone VTK build OK')"

@@ -1,0 +1,164 @@
+/**
+ * @class   vtkPointPairDeformationFilter
+ * @brief   warps any mesh through a field of point-pair generators (Colapinto 2014, eq 23, Fig 11)
+ *
+ * Generators i sit at locations x_i with directions v_i and weights w_i. At each point p of the
+ * input the generators sum, weighted by their inverse squared distance, into the bivector
+ *
+ *   B(p) = sum_i w_i tau(x_i, v_i) / (Falloff |p - x_i|^2 + Epsilon),
+ *
+ * tau the null point pair (the tangent no ^ v_i translated to x_i; |v_i| multiplies the weight),
+ * and p moves to p' = fn(K up(p) ~K) with K = exp(-Strength B(p)) (SPEC.md section 3 item 9).
+ *
+ * ExponentialRule: EXACT (default) uses the true exponential of B, so K is a versor and every image
+ * point is null (each K is a conformal map); PAPER uses eq 9-10 of the paper, cosh/sinh of
+ * s = <B B>_0, which is exact only when B is a blade (one generator) and otherwise not a versor.
+ *
+ * Generators come from the list set by AddGenerator()/SetGenerator() (the ParaView table), and from
+ * the optional second input port "Generators": any vtkPointSet whose points are the locations,
+ * with a 3-component point array named GeneratorDirectionArrayName and, when
+ * UseGeneratorWeightArray is on, a 1-component point array named GeneratorWeightArrayName (the
+ * weights; otherwise every weight is 1). Both sources are summed. The Generators input is always
+ * requested whole, so every MPI rank sees every generator.
+ *
+ * Output: the input's topology, cells and arrays with moved points, plus the point vector
+ * "Displacement" = p' - p. Normals are dropped (they would be wrong once the points moved).
+ * vtkImageData and vtkRectilinearGrid inputs give a vtkStructuredGrid, as vtkWarpVector does.
+ *
+ * Bad input: points that are NaN or infinite pass through unchanged (Displacement 0) and are
+ * counted in one warning; so are points whose image would be at infinity. Generators with a zero
+ * or non-finite direction, location or weight are ignored with one warning. No generators (or
+ * Strength 0) is the identity. A missing or wrongly typed array on the Generators port, or a
+ * non-finite Strength, is an error and gives an empty output.
+ *
+ * The per-point work runs in vtkSMPTools. Note that Debian's VTK uses the Sequential backend
+ * unless the environment sets VTK_SMP_BACKEND_IN_USE=STDThread; the filter does not change the
+ * process-wide backend.
+ */
+#ifndef vtkPointPairDeformationFilter_h
+#define vtkPointPairDeformationFilter_h
+
+#include "BoostedSurfacesFiltersModule.h" // for export macro
+#include "vtkPointSetAlgorithm.h"
+
+#include <vector> // for the generator list
+
+class BOOSTEDSURFACESFILTERS_EXPORT vtkPointPairDeformationFilter : public vtkPointSetAlgorithm
+{
+public:
+  static vtkPointPairDeformationFilter* New();
+  vtkTypeMacro(vtkPointPairDeformationFilter, vtkPointSetAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ExponentialRules
+  {
+    EXACT = 0,
+    PAPER = 1
+  };
+
+  ///@{
+  /// The generator list: location (x, y, z), direction (vx, vy, vz) and weight of each.
+  /// SetNumberOfGenerators resizes the list (new entries are zero, hence ignored until set);
+  /// SetGenerator(i, ...) changes entry i < GetNumberOfGenerators().
+  void SetNumberOfGenerators(int count);
+  int GetNumberOfGenerators() const;
+  void SetGenerator(int index, double x, double y, double z, double vx, double vy, double vz,
+    double weight);
+  /// Appends a generator and returns its index.
+  int AddGenerator(double x, double y, double z, double vx, double vy, double vz, double weight);
+  /// The 7 values of entry index (location, direction, weight); false if there is no such entry.
+  bool GetGenerator(int index, double values[7]) const;
+  void RemoveAllGenerators();
+  ///@}
+
+  ///@{
+  /// A handle for one generator of the list: when SelectedGenerator is a valid index, its location
+  /// is replaced by SelectedGeneratorLocation (ParaView moves it with a handle widget). -1 (the
+  /// default) selects none.
+  vtkSetMacro(SelectedGenerator, int);
+  vtkGetMacro(SelectedGenerator, int);
+  vtkSetVector3Macro(SelectedGeneratorLocation, double);
+  vtkGetVector3Macro(SelectedGeneratorLocation, double);
+  ///@}
+
+  ///@{
+  /// Names of the point arrays of the Generators input: directions (3 components, default
+  /// "Direction") and weights (1 component, default "Weight", read only when
+  /// UseGeneratorWeightArray is on; otherwise every weight is 1).
+  vtkSetStringMacro(GeneratorDirectionArrayName);
+  vtkGetStringMacro(GeneratorDirectionArrayName);
+  vtkSetStringMacro(GeneratorWeightArrayName);
+  vtkGetStringMacro(GeneratorWeightArrayName);
+  vtkSetMacro(UseGeneratorWeightArray, bool);
+  vtkGetMacro(UseGeneratorWeightArray, bool);
+  vtkBooleanMacro(UseGeneratorWeightArray, bool);
+  ///@}
+
+  ///@{
+  /// The optional second input: a vtkPointSet of generators (see the class description).
+  void SetGeneratorsConnection(vtkAlgorithmOutput* output);
+  void SetGeneratorsData(vtkDataObject* data);
+  ///@}
+
+  ///@{
+  /// Global factor on B: 0 is the identity, 1 the field as given. Default 1. Must be finite.
+  vtkSetMacro(Strength, double);
+  vtkGetMacro(Strength, double);
+  ///@}
+
+  ///@{
+  /// k of the weighting w / (k |p - x|^2 + eps). Default 1; k = 0 makes B the same everywhere.
+  vtkSetClampMacro(Falloff, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Falloff, double);
+  ///@}
+
+  ///@{
+  /// eps of the weighting: keeps B finite on a generator's location. Default 0.01. Clamped to at
+  /// least 1e-10 (smaller values only make B huge, where no exponential is accurate).
+  vtkSetClampMacro(Epsilon, double, 1e-10, VTK_DOUBLE_MAX);
+  vtkGetMacro(Epsilon, double);
+  ///@}
+
+  ///@{
+  /// EXACT (default) or PAPER.
+  vtkSetClampMacro(ExponentialRule, int, EXACT, PAPER);
+  vtkGetMacro(ExponentialRule, int);
+  void SetExponentialRuleToExact() { this->SetExponentialRule(EXACT); }
+  void SetExponentialRuleToPaper() { this->SetExponentialRule(PAPER); }
+  ///@}
+
+  ///@{
+  /// vtkAlgorithm::DEFAULT_PRECISION (default: as the input's points), SINGLE_PRECISION or
+  /// DOUBLE_PRECISION.
+  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
+  vtkGetMacro(OutputPointsPrecision, int);
+  ///@}
+
+protected:
+  vtkPointPairDeformationFilter();
+  ~vtkPointPairDeformationFilter() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int ComputeInputUpdateExtent(
+    vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  std::vector<double> Generators; // 7 values per generator
+  int SelectedGenerator = -1;
+  double SelectedGeneratorLocation[3] = { 0.0, 0.0, 0.0 };
+  char* GeneratorDirectionArrayName = nullptr;
+  char* GeneratorWeightArrayName = nullptr;
+  bool UseGeneratorWeightArray = false;
+  double Strength = 1.0;
+  double Falloff = 1.0;
+  double Epsilon = 0.01;
+  int ExponentialRule = EXACT;
+  int OutputPointsPrecision = DEFAULT_PRECISION;
+
+private:
+  vtkPointPairDeformationFilter(const vtkPointPairDeformationFilter&) = delete;
+  void operator=(const vtkPointPairDeformationFilter&) = delete;
+};
+
+#endif

@@ -1,0 +1,767 @@
+// vtkPointPairDeformationFilter against independent references: the full multivector product with
+// a series exponential (Exact) or eq 9-10 written out (Paper), the closed form of one generator
+// (SPEC.md section 2), null image points and angle preservation; and its bad-input behaviour.
+#include "vtkPointPairDeformationFilter.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStringArray.h"
+#include "vtkStructuredGrid.h"
+
+#include "cga/CompactConversion.h"
+#include "cga/Conformal.h"
+#include "cga/Exponential.h"
+#include "cga/PointPairField.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace
+{
+using cga::Multivector;
+using cga::Vec3;
+
+struct Generator
+{
+  Vec3 location, direction;
+  double weight;
+};
+
+// Counts the error and warning events of one object (and keeps their text quiet).
+struct EventCounter
+{
+  int errors = 0;
+  int warnings = 0;
+  std::string lastWarning;
+  static void Callback(vtkObject*, unsigned long event, void* clientData, void* callData)
+  {
+    auto* self = static_cast<EventCounter*>(clientData);
+    if (event == vtkCommand::ErrorEvent)
+    {
+      ++self->errors;
+    }
+    else
+    {
+      ++self->warnings;
+      self->lastWarning = static_cast<const char*>(callData);
+    }
+  }
+  void Watch(vtkObject* object)
+  {
+    vtkNew<vtkCallbackCommand> command;
+    command->SetCallback(&EventCounter::Callback);
+    command->SetClientData(this);
+    object->AddObserver(vtkCommand::ErrorEvent, command);
+    object->AddObserver(vtkCommand::WarningEvent, command);
+  }
+};
+
+class Random
+{
+public:
+  explicit Random(unsigned seed)
+    : Engine(seed)
+  {
+  }
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<>(lo, hi)(Engine); }
+  Vec3 vec3(double half) { return { uniform(-half, half), uniform(-half, half), uniform(-half, half) }; }
+  Vec3 unit()
+  {
+    for (;;)
+    {
+      const Vec3 v = vec3(1.0);
+      if (cga::norm(v) > 0.1 && cga::norm(v) <= 1.0)
+      {
+        return v / cga::norm(v);
+      }
+    }
+  }
+
+private:
+  std::mt19937 Engine;
+};
+
+std::vector<Generator> randomGenerators(Random& random, int count, double maxWeight)
+{
+  std::vector<Generator> generators;
+  for (int i = 0; i < count; ++i)
+  {
+    generators.push_back({ random.vec3(1.5), random.unit(), random.uniform(-maxWeight, maxWeight) });
+  }
+  return generators;
+}
+
+// Random points joined into triangles (every three consecutive points), with a scalar point
+// array, a Normals array and a cell array, so that the passing of arrays can be checked.
+vtkNew<vtkPolyData> randomMesh(Random& random, int triangles, double half, int pointType = VTK_DOUBLE)
+{
+  vtkNew<vtkPolyData> mesh;
+  vtkNew<vtkPoints> points;
+  points->SetDataType(pointType);
+  vtkNew<vtkCellArray> cells;
+  vtkNew<vtkDoubleArray> scalars;
+  scalars->SetName("Scalars");
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  vtkNew<vtkDoubleArray> cellIds;
+  cellIds->SetName("CellIds");
+  for (int t = 0; t < triangles; ++t)
+  {
+    vtkIdType ids[3];
+    for (vtkIdType& id : ids)
+    {
+      const Vec3 p = random.vec3(half);
+      id = points->InsertNextPoint(p.x, p.y, p.z);
+      scalars->InsertNextValue(static_cast<double>(id));
+      normals->InsertNextTuple3(0, 0, 1);
+    }
+    cells->InsertNextCell(3, ids);
+    cellIds->InsertNextValue(t);
+  }
+  mesh->SetPoints(points);
+  mesh->SetPolys(cells);
+  mesh->GetPointData()->AddArray(scalars);
+  mesh->GetPointData()->SetNormals(normals);
+  mesh->GetCellData()->AddArray(cellIds);
+  return mesh;
+}
+
+void addGenerators(vtkPointPairDeformationFilter* filter, const std::vector<Generator>& generators)
+{
+  for (const Generator& g : generators)
+  {
+    filter->AddGenerator(g.location.x, g.location.y, g.location.z, g.direction.x, g.direction.y,
+      g.direction.z, g.weight);
+  }
+}
+
+Vec3 pointOf(vtkPointSet* data, vtkIdType i)
+{
+  double p[3];
+  data->GetPoint(i, p);
+  return { p[0], p[1], p[2] };
+}
+
+// B(p) on the full multivector, from the definition.
+Multivector referenceField(const std::vector<Generator>& generators, Vec3 p, double k, double eps)
+{
+  Multivector b;
+  for (const Generator& g : generators)
+  {
+    b += cga::nullPointPair(g.location, g.direction) *
+      (g.weight / (k * cga::norm2(p - g.location) + eps));
+  }
+  return b;
+}
+
+// Eq 9-10 with s = <B B>_0, written out.
+Multivector paperExp(const Multivector& b)
+{
+  const double s = (b * b).c[0];
+  if (s > 0.0)
+  {
+    return Multivector::scalar(std::cosh(std::sqrt(s))) + b * (std::sinh(std::sqrt(s)) / std::sqrt(s));
+  }
+  if (s < 0.0)
+  {
+    return Multivector::scalar(std::cos(std::sqrt(-s))) + b * (std::sin(std::sqrt(-s)) / std::sqrt(-s));
+  }
+  return Multivector::scalar(1.0) + b;
+}
+
+Vec3 image(const Multivector& k, Vec3 p)
+{
+  Vec3 out{ std::nan(""), 0, 0 };
+  EXPECT_TRUE(cga::normalizePoint(cga::sandwich(k, cga::up(p)).grade(1), out));
+  return out;
+}
+
+// |Y.Y| / (ni.Y)^2 for Y = <K up(p) ~K>_1: 0 exactly when the image is a null vector (a point).
+double nullDefect(const Multivector& k, Vec3 p)
+{
+  const Multivector y = cga::sandwich(k, cga::up(p)).grade(1);
+  const double scale = (cga::ni() * y).c[0];
+  return std::fabs((y * y).c[0]) / (scale * scale);
+}
+
+double angleAt(Vec3 a, Vec3 b, Vec3 c)
+{
+  const Vec3 u = b - a, v = c - a;
+  return std::atan2(cga::norm(cga::cross(u, v)), cga::dot(u, v));
+}
+
+TEST(PointPairDeformationFilter, BothRulesMatchTheFullProductOnRandomMeshes)
+{
+  Random random(11);
+  for (int trial = 0; trial < 6; ++trial)
+  {
+    const auto generators = randomGenerators(random, 1 + trial * 2, 0.4);
+    const double k = random.uniform(0.2, 2.0), eps = random.uniform(0.02, 0.5);
+    const double strength = random.uniform(0.3, 1.5);
+    auto mesh = randomMesh(random, 40, 2.0);
+    for (int rule : { vtkPointPairDeformationFilter::EXACT, vtkPointPairDeformationFilter::PAPER })
+    {
+      vtkNew<vtkPointPairDeformationFilter> filter;
+      filter->SetInputData(mesh);
+      addGenerators(filter, generators);
+      filter->SetFalloff(k);
+      filter->SetEpsilon(eps);
+      filter->SetStrength(strength);
+      filter->SetExponentialRule(rule);
+      filter->Update();
+      vtkPointSet* output = filter->GetOutput();
+      ASSERT_EQ(output->GetNumberOfPoints(), mesh->GetNumberOfPoints());
+      for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+      {
+        const Vec3 p = pointOf(mesh, i);
+        const Multivector b = referenceField(generators, p, k, eps) * -strength;
+        const Multivector kk =
+          rule == vtkPointPairDeformationFilter::EXACT ? cga::expSeries(b) : paperExp(b);
+        const Vec3 expected = image(kk, p);
+        EXPECT_LE(cga::norm(pointOf(output, i) - expected), 1e-10 * (1.0 + cga::norm(expected)))
+          << "rule " << rule << " point " << i;
+      }
+    }
+  }
+}
+
+TEST(PointPairDeformationFilter, ExactImagesAreNullPointsAndPaperImagesAreNot)
+{
+  Random random(12);
+  const auto generators = randomGenerators(random, 6, 0.8);
+  std::vector<cga::PointPairGenerator> kernelGenerators;
+  for (const Generator& g : generators)
+  {
+    kernelGenerators.push_back({ g.location, g.direction, g.weight });
+  }
+  const cga::PointPairField field(kernelGenerators, 1.0, 0.05);
+  double exactDefect = 0.0, paperDefect = 0.0;
+  for (int n = 0; n < 200; ++n)
+  {
+    const Vec3 p = random.vec3(2.0);
+    const Multivector exact =
+      cga::toMultivector(field.boostAt(p, 1.0, cga::ExponentialRule::Exact));
+    const Multivector paper =
+      cga::toMultivector(field.boostAt(p, 1.0, cga::ExponentialRule::Paper));
+    exactDefect = std::max(exactDefect, nullDefect(exact, p));
+    paperDefect = std::max(paperDefect, nullDefect(paper, p));
+  }
+  EXPECT_LT(exactDefect, 1e-12);
+  EXPECT_GT(paperDefect, 1e-6); // the paper's K is not a versor for a sum of generators
+}
+
+// With Falloff 0, B is the same at every point, so the filter applies one K to the whole mesh:
+// Exact gives a conformal map, so the angles of a small triangle of size h agree to first order
+// (the difference shrinks with h), while Paper's map changes angles by O(1).
+double largestAngleChange(const std::vector<Generator>& generators, int rule, double h)
+{
+  Random random(13); // the same triangles, scaled by h, for every call
+  vtkNew<vtkPolyData> mesh;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> cells;
+  for (int t = 0; t < 50; ++t)
+  {
+    const Vec3 p = random.vec3(1.5);
+    const Vec3 a = p + h * random.unit(), b = p + h * random.unit();
+    vtkIdType ids[3] = { points->InsertNextPoint(p.x, p.y, p.z),
+      points->InsertNextPoint(a.x, a.y, a.z), points->InsertNextPoint(b.x, b.y, b.z) };
+    cells->InsertNextCell(3, ids);
+  }
+  mesh->SetPoints(points);
+  mesh->SetPolys(cells);
+  vtkNew<vtkPointPairDeformationFilter> filter;
+  filter->SetInputData(mesh);
+  addGenerators(filter, generators);
+  filter->SetFalloff(0.0);
+  filter->SetEpsilon(1.0);
+  filter->SetExponentialRule(rule);
+  filter->Update();
+  vtkPointSet* output = filter->GetOutput();
+  double largest = 0.0;
+  for (vtkIdType t = 0; t < 50; ++t)
+  {
+    for (int corner = 0; corner < 3; ++corner)
+    {
+      const vtkIdType i = 3 * t + corner, j = 3 * t + (corner + 1) % 3, k = 3 * t + (corner + 2) % 3;
+      const double before = angleAt(pointOf(mesh, i), pointOf(mesh, j), pointOf(mesh, k));
+      const double after = angleAt(pointOf(output, i), pointOf(output, j), pointOf(output, k));
+      largest = std::max(largest, std::fabs(after - before));
+    }
+  }
+  return largest;
+}
+
+TEST(PointPairDeformationFilter, ExactKeepsAnglesOfSmallTrianglesPaperDoesNot)
+{
+  Random random(13);
+  const auto generators = randomGenerators(random, 4, 0.6);
+  const double exactCoarse = largestAngleChange(generators, vtkPointPairDeformationFilter::EXACT, 1e-4);
+  const double exactFine = largestAngleChange(generators, vtkPointPairDeformationFilter::EXACT, 1e-5);
+  const double paperCoarse = largestAngleChange(generators, vtkPointPairDeformationFilter::PAPER, 1e-4);
+  const double paperFine = largestAngleChange(generators, vtkPointPairDeformationFilter::PAPER, 1e-5);
+  EXPECT_LT(exactFine, 0.15 * exactCoarse); // first order: ten times smaller for h ten times smaller
+  EXPECT_LT(exactFine, 0.1);
+  // Not conformal: the change stays as h shrinks.
+  EXPECT_GT(paperFine, 1e-4);
+  EXPECT_GT(paperFine, 0.5 * paperCoarse);
+}
+
+// With Falloff > 0 each point has its own K; that K (the one the filter applied to the point) is
+// conformal: a small triangle around the point keeps its angles to first order under it.
+TEST(PointPairDeformationFilter, EachPointsExactBoostKeepsAnglesAroundIt)
+{
+  Random random(14);
+  const auto generators = randomGenerators(random, 5, 0.5);
+  std::vector<cga::PointPairGenerator> kernelGenerators;
+  for (const Generator& g : generators)
+  {
+    kernelGenerators.push_back({ g.location, g.direction, g.weight });
+  }
+  const cga::PointPairField field(kernelGenerators, 1.0, 0.05);
+  auto mesh = randomMesh(random, 20, 1.5);
+  vtkNew<vtkPointPairDeformationFilter> filter;
+  filter->SetInputData(mesh);
+  addGenerators(filter, generators);
+  filter->SetEpsilon(0.05);
+  filter->Update();
+  const double h = 1e-5;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    const Vec3 p = pointOf(mesh, i);
+    const Multivector k = cga::toMultivector(field.boostAt(p, 1.0, cga::ExponentialRule::Exact));
+    EXPECT_LE(cga::norm(image(k, p) - pointOf(filter->GetOutput(), i)), 1e-10);
+    const Vec3 a = p + h * random.unit(), b = p + h * random.unit();
+    const double before = angleAt(p, a, b);
+    const double after = angleAt(image(k, p), image(k, a), image(k, b));
+    EXPECT_LT(std::fabs(after - before), 1e3 * h);
+  }
+}
+
+TEST(PointPairDeformationFilter, OneGeneratorIsTheTranslatedSpecialConformalTransformation)
+{
+  Random random(15);
+  for (int n = 0; n < 20; ++n)
+  {
+    const Vec3 x = random.vec3(1.0), v = random.uniform(0.2, 2.0) * random.unit();
+    const double w = random.uniform(-1.0, 1.0), k = random.uniform(0.0, 2.0);
+    const double eps = random.uniform(0.01, 1.0);
+    auto mesh = randomMesh(random, 5, 2.0);
+    for (int rule : { vtkPointPairDeformationFilter::EXACT, vtkPointPairDeformationFilter::PAPER })
+    {
+      vtkNew<vtkPointPairDeformationFilter> filter;
+      filter->SetInputData(mesh);
+      filter->AddGenerator(x.x, x.y, x.z, v.x, v.y, v.z, w);
+      filter->SetFalloff(k);
+      filter->SetEpsilon(eps);
+      filter->SetExponentialRule(rule);
+      filter->Update();
+      for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+      {
+        const Vec3 p = pointOf(mesh, i), y = p - x;
+        const Vec3 u = (-w / (k * cga::norm2(y) + eps)) * v; // K = 1 + tau(x, u)
+        const Vec3 expected =
+          x + (y + cga::norm2(y) * u) / (1.0 + 2.0 * cga::dot(u, y) + cga::norm2(u) * cga::norm2(y));
+        EXPECT_LE(cga::norm(pointOf(filter->GetOutput(), i) - expected),
+          1e-12 * (1.0 + cga::norm(expected)));
+      }
+    }
+  }
+}
+
+TEST(PointPairDeformationFilter, KeepsCellsAndArraysAddsDisplacementDropsNormals)
+{
+  Random random(16);
+  auto mesh = randomMesh(random, 30, 1.0);
+  vtkNew<vtkPointPairDeformationFilter> filter;
+  filter->SetInputData(mesh);
+  addGenerators(filter, randomGenerators(random, 3, 0.5));
+  filter->Update();
+  auto* output = vtkPolyData::SafeDownCast(filter->GetOutput());
+  ASSERT_NE(output, nullptr);
+  EXPECT_EQ(output->GetNumberOfCells(), mesh->GetNumberOfCells());
+  EXPECT_EQ(output->GetPolys()->GetNumberOfConnectivityIds(),
+    mesh->GetPolys()->GetNumberOfConnectivityIds());
+  EXPECT_NE(output->GetPointData()->GetArray("Scalars"), nullptr);
+  EXPECT_NE(output->GetCellData()->GetArray("CellIds"), nullptr);
+  EXPECT_EQ(output->GetPointData()->GetArray("Normals"), nullptr);
+  EXPECT_EQ(output->GetPointData()->GetNormals(), nullptr);
+  vtkDataArray* displacement = output->GetPointData()->GetArray("Displacement");
+  ASSERT_NE(displacement, nullptr);
+  double moved = 0.0;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    const Vec3 d = pointOf(output, i) - pointOf(mesh, i);
+    double stored[3];
+    displacement->GetTuple(i, stored);
+    EXPECT_EQ(stored[0], d.x);
+    EXPECT_EQ(stored[1], d.y);
+    EXPECT_EQ(stored[2], d.z);
+    moved = std::max(moved, cga::norm(d));
+  }
+  EXPECT_GT(moved, 1e-3);
+}
+
+TEST(PointPairDeformationFilter, OutputPrecisionFollowsTheInputOrTheSetting)
+{
+  Random random(17);
+  auto floatMesh = randomMesh(random, 10, 1.0, VTK_FLOAT);
+  vtkNew<vtkPolyData> doubleMesh;
+  doubleMesh->DeepCopy(floatMesh);
+  vtkNew<vtkPoints> doublePoints;
+  doublePoints->SetDataTypeToDouble();
+  doublePoints->DeepCopy(floatMesh->GetPoints());
+  doubleMesh->SetPoints(doublePoints);
+  const auto generators = randomGenerators(random, 3, 0.5);
+  auto run = [&](vtkPolyData* mesh, int precision) {
+    vtkNew<vtkPointPairDeformationFilter> filter;
+    filter->SetInputData(mesh);
+    addGenerators(filter, generators);
+    filter->SetOutputPointsPrecision(precision);
+    filter->Update();
+    vtkSmartPointer<vtkPointSet> output = filter->GetOutput();
+    return output;
+  };
+  auto sameAsFloat = run(floatMesh, vtkAlgorithm::DEFAULT_PRECISION);
+  auto sameAsDouble = run(doubleMesh, vtkAlgorithm::DEFAULT_PRECISION);
+  auto floatToDouble = run(floatMesh, vtkAlgorithm::DOUBLE_PRECISION);
+  auto doubleToFloat = run(doubleMesh, vtkAlgorithm::SINGLE_PRECISION);
+  EXPECT_EQ(sameAsFloat->GetPoints()->GetDataType(), VTK_FLOAT);
+  EXPECT_EQ(sameAsDouble->GetPoints()->GetDataType(), VTK_DOUBLE);
+  EXPECT_EQ(floatToDouble->GetPoints()->GetDataType(), VTK_DOUBLE);
+  EXPECT_EQ(doubleToFloat->GetPoints()->GetDataType(), VTK_FLOAT);
+  EXPECT_EQ(floatToDouble->GetPointData()->GetArray("Displacement")->GetDataType(), VTK_DOUBLE);
+  EXPECT_EQ(sameAsFloat->GetPointData()->GetArray("Displacement")->GetDataType(), VTK_FLOAT);
+  for (vtkIdType i = 0; i < floatMesh->GetNumberOfPoints(); ++i)
+  {
+    const Vec3 reference = pointOf(sameAsDouble, i); // the same float input values, in double
+    EXPECT_EQ(cga::norm(pointOf(floatToDouble, i) - reference), 0.0);
+    EXPECT_LE(cga::norm(pointOf(sameAsFloat, i) - reference), 1e-6 * (1.0 + cga::norm(reference)));
+    EXPECT_LE(cga::norm(pointOf(doubleToFloat, i) - reference), 1e-6 * (1.0 + cga::norm(reference)));
+  }
+}
+
+TEST(PointPairDeformationFilter, ImageDataBecomesAStructuredGridWithTheSamePoints)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(5, 4, 3);
+  image->SetSpacing(0.5, 0.5, 0.5);
+  image->SetOrigin(-1, -1, -0.5);
+  vtkNew<vtkPointPairDeformationFilter> filter;
+  filter->SetInputData(image);
+  filter->AddGenerator(0, 0, 0, 0, 0, 1, 0.5);
+  filter->Update();
+  auto* grid = vtkStructuredGrid::SafeDownCast(filter->GetOutputDataObject(0));
+  ASSERT_NE(grid, nullptr);
+  EXPECT_EQ(grid->GetNumberOfPoints(), 60);
+  EXPECT_EQ(grid->GetNumberOfCells(), 4 * 3 * 2);
+  int dimensions[3];
+  grid->GetDimensions(dimensions);
+  EXPECT_EQ(dimensions[0], 5);
+  // The same field applied to the image's points as a point cloud.
+  cga::PointPairField field({ { { 0, 0, 0 }, { 0, 0, 1 }, 0.5 } }, 1.0, 0.01);
+  for (vtkIdType i = 0; i < 60; ++i)
+  {
+    double p[3];
+    image->GetPoint(i, p);
+    Vec3 expected;
+    ASSERT_TRUE(field.map({ p[0], p[1], p[2] }, 1.0, cga::ExponentialRule::Exact, expected));
+    EXPECT_LE(cga::norm(pointOf(grid, i) - expected), 1e-14);
+  }
+}
+
+TEST(PointPairDeformationFilter, NoGeneratorsOrZeroStrengthIsTheIdentity)
+{
+  Random random(18);
+  auto mesh = randomMesh(random, 10, 1.0);
+  for (bool withGenerators : { false, true })
+  {
+    vtkNew<vtkPointPairDeformationFilter> filter;
+    filter->SetInputData(mesh);
+    if (withGenerators)
+    {
+      addGenerators(filter, randomGenerators(random, 3, 1.0));
+      filter->SetStrength(0.0);
+    }
+    filter->Update();
+    for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+    {
+      EXPECT_EQ(cga::norm(pointOf(filter->GetOutput(), i) - pointOf(mesh, i)), 0.0);
+    }
+  }
+}
+
+TEST(PointPairDeformationFilter, NonFinitePointsPassThroughWithOneWarning)
+{
+  Random random(19);
+  auto mesh = randomMesh(random, 10, 1.0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  mesh->GetPoints()->SetPoint(2, nan, 0, 0);
+  mesh->GetPoints()->SetPoint(7, 0, inf, 0);
+  mesh->GetPoints()->SetPoint(11, 0, 0, -inf);
+  vtkNew<vtkPointPairDeformationFilter> filter;
+  EventCounter events;
+  events.Watch(filter);
+  filter->SetInputData(mesh);
+  addGenerators(filter, randomGenerators(random, 3, 0.5));
+  filter->Update();
+  EXPECT_EQ(events.warnings, 1);
+  EXPECT_EQ(events.errors, 0);
+  EXPECT_NE(events.lastWarning.find("3 of 30 points"), std::string::npos) << events.lastWarning;
+  vtkPointSet* output = filter->GetOutput();
+  EXPECT_TRUE(std::isnan(pointOf(output, 2).x));
+  EXPECT_EQ(pointOf(output, 7).y, inf);
+  EXPECT_EQ(pointOf(output, 11).z, -inf);
+  vtkDataArray* displacement = output->GetPointData()->GetArray("Displacement");
+  for (vtkIdType i : { 2, 7, 11 })
+  {
+    EXPECT_EQ(displacement->GetTuple3(i)[0], 0.0);
+    EXPECT_EQ(displacement->GetTuple3(i)[1], 0.0);
+    EXPECT_EQ(displacement->GetTuple3(i)[2], 0.0);
+  }
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+  {
+    if (i != 2 && i != 7 && i != 11)
+    {
+      const Vec3 p = pointOf(output, i);
+      EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+    }
+  }
+}
+
+TEST(PointPairDeformationFilter, ZeroDirectionsAreIgnoredWithAWarning)
+{
+  Random random(20);
+  auto mesh = randomMesh(random, 10, 1.0);
+  vtkNew<vtkPointPairDeformationFilter> withZero, without;
+  EventCounter events;
+  events.Watch(withZero);
+  for (vtkPointPairDeformationFilter* filter : { withZero.Get(), without.Get() })
+  {
+    filter->SetInputData(mesh);
+    filter->AddGenerator(0.2, 0.1, 0, 0, 1, 0, 0.7);
+  }
+  withZero->AddGenerator(0.5, 0.5, 0.5, 0, 0, 0, 3.0);
+  withZero->Update();
+  without->Update();
+  EXPECT_EQ(events.warnings, 1);
+  EXPECT_NE(events.lastWarning.find("1 of 2 generators"), std::string::npos) << events.lastWarning;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    EXPECT_EQ(cga::norm(pointOf(withZero->GetOutput(), i) - pointOf(without->GetOutput(), i)), 0.0);
+  }
+}
+
+TEST(PointPairDeformationFilter, AGeneratorOnAMeshPointKeepsItFixedAndFinite)
+{
+  Random random(21);
+  auto mesh = randomMesh(random, 4, 1.0);
+  const Vec3 on = pointOf(mesh, 5);
+  vtkNew<vtkPointPairDeformationFilter> filter;
+  filter->SetInputData(mesh);
+  filter->AddGenerator(on.x, on.y, on.z, 1, 0, 0, 2.0);
+  filter->Update(); // default epsilon 0.01: the generator's location is its fixed point
+  EXPECT_LE(cga::norm(pointOf(filter->GetOutput(), 5) - on), 1e-11);
+  filter->SetEpsilon(0.0); // clamped to the smallest allowed epsilon
+  EXPECT_EQ(filter->GetEpsilon(), 1e-10);
+  filter->Update();
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    const Vec3 p = pointOf(filter->GetOutput(), i);
+    EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+  }
+}
+
+TEST(PointPairDeformationFilter, HugeWeightsGiveFiniteOutput)
+{
+  Random random(22);
+  auto mesh = randomMesh(random, 20, 1.0);
+  for (double weight : { 1e6, 1e12, 1e50, 1e100, 1e200, 1e300, 1.7e308 })
+  {
+    for (int rule : { vtkPointPairDeformationFilter::EXACT, vtkPointPairDeformationFilter::PAPER })
+    {
+      vtkNew<vtkPointPairDeformationFilter> filter;
+      EventCounter events; // a warning about points left in place is allowed
+      events.Watch(filter);
+      filter->SetInputData(mesh);
+      filter->AddGenerator(0.1, 0, 0, 0, 0, 1, weight);
+      filter->AddGenerator(0, 0.3, 0, 1, 0, 0, -weight);
+      filter->SetExponentialRule(rule);
+      filter->Update();
+      vtkPointSet* output = filter->GetOutput();
+      ASSERT_EQ(output->GetNumberOfPoints(), mesh->GetNumberOfPoints());
+      vtkDataArray* displacement = output->GetPointData()->GetArray("Displacement");
+      for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+      {
+        const Vec3 p = pointOf(output, i);
+        ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z))
+          << "weight " << weight << " rule " << rule << " point " << i;
+        for (int c = 0; c < 3; ++c)
+        {
+          ASSERT_TRUE(std::isfinite(displacement->GetComponent(i, c)));
+        }
+      }
+      EXPECT_EQ(events.errors, 0);
+    }
+  }
+}
+
+// A vtkPolyData of generator points with direction and weight arrays.
+vtkNew<vtkPolyData> generatorPoints(const std::vector<Generator>& generators)
+{
+  vtkNew<vtkPolyData> data;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> directions;
+  directions->SetName("Direction");
+  directions->SetNumberOfComponents(3);
+  vtkNew<vtkFloatArray> weights;
+  weights->SetName("Weight");
+  for (const Generator& g : generators)
+  {
+    points->InsertNextPoint(g.location.x, g.location.y, g.location.z);
+    directions->InsertNextTuple3(g.direction.x, g.direction.y, g.direction.z);
+    weights->InsertNextValue(static_cast<float>(g.weight));
+  }
+  data->SetPoints(points);
+  data->GetPointData()->AddArray(directions);
+  data->GetPointData()->AddArray(weights);
+  return data;
+}
+
+TEST(PointPairDeformationFilter, TheGeneratorsPortAddsToTheList)
+{
+  Random random(23);
+  auto mesh = randomMesh(random, 10, 1.0);
+  auto generators = randomGenerators(random, 4, 0.5);
+  for (Generator& g : generators)
+  {
+    g.weight = static_cast<float>(g.weight); // the port's weights are stored as float
+  }
+  const std::vector<Generator> fromList(generators.begin(), generators.begin() + 1);
+  const std::vector<Generator> fromPort(generators.begin() + 1, generators.end());
+  vtkNew<vtkPointPairDeformationFilter> reference, combined, unitWeights, unitReference;
+  for (vtkPointPairDeformationFilter* filter :
+    { reference.Get(), combined.Get(), unitWeights.Get(), unitReference.Get() })
+  {
+    filter->SetInputData(mesh);
+  }
+  addGenerators(reference, generators);
+  addGenerators(combined, fromList);
+  combined->SetGeneratorsData(generatorPoints(fromPort));
+  combined->UseGeneratorWeightArrayOn();
+  unitWeights->SetGeneratorsData(generatorPoints(fromPort));
+  for (Generator g : fromPort)
+  {
+    unitReference->AddGenerator(
+      g.location.x, g.location.y, g.location.z, g.direction.x, g.direction.y, g.direction.z, 1.0);
+  }
+  for (vtkPointPairDeformationFilter* filter :
+    { reference.Get(), combined.Get(), unitWeights.Get(), unitReference.Get() })
+  {
+    filter->Update();
+  }
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    EXPECT_LE(cga::norm(pointOf(combined->GetOutput(), i) - pointOf(reference->GetOutput(), i)), 1e-14);
+    EXPECT_LE(
+      cga::norm(pointOf(unitWeights->GetOutput(), i) - pointOf(unitReference->GetOutput(), i)), 1e-14);
+  }
+}
+
+TEST(PointPairDeformationFilter, BadGeneratorArraysAreErrorsWithEmptyOutput)
+{
+  Random random(24);
+  auto mesh = randomMesh(random, 4, 1.0);
+  auto generators = generatorPoints(randomGenerators(random, 2, 0.5));
+  vtkNew<vtkStringArray> text;
+  text->SetName("Text");
+  text->InsertNextValue("a");
+  text->InsertNextValue("b");
+  generators->GetPointData()->AddArray(text);
+  struct Case
+  {
+    const char* direction;
+    const char* weight;
+    bool useWeights;
+    const char* expectedWords;
+  };
+  for (const Case& c : { Case{ "Missing", "Weight", false, "no point array named 'Missing'" },
+         Case{ "Weight", "Weight", false, "3 components" },
+         Case{ "Text", "Weight", false, "vtkStringArray" },
+         Case{ "Direction", "Absent", true, "no point array named 'Absent'" },
+         Case{ "Direction", "Direction", true, "1 component" } })
+  {
+    vtkNew<vtkPointPairDeformationFilter> filter;
+    EventCounter events;
+    events.Watch(filter);
+    filter->SetInputData(mesh);
+    filter->SetGeneratorsData(generators);
+    filter->SetGeneratorDirectionArrayName(c.direction);
+    filter->SetGeneratorWeightArrayName(c.weight);
+    filter->SetUseGeneratorWeightArray(c.useWeights);
+    filter->Update();
+    EXPECT_EQ(events.errors, 1) << c.expectedWords;
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0) << c.expectedWords;
+  }
+}
+
+TEST(PointPairDeformationFilter, TheSelectedGeneratorTakesTheHandlesLocation)
+{
+  Random random(25);
+  auto mesh = randomMesh(random, 6, 1.0);
+  vtkNew<vtkPointPairDeformationFilter> selected, moved;
+  for (vtkPointPairDeformationFilter* filter : { selected.Get(), moved.Get() })
+  {
+    filter->SetInputData(mesh);
+    filter->AddGenerator(0, 0, 0, 1, 0, 0, 0.4);
+  }
+  selected->AddGenerator(0.5, 0, 0, 0, 1, 0, 0.6);
+  selected->SetSelectedGenerator(1);
+  selected->SetSelectedGeneratorLocation(-0.3, 0.2, 0.1);
+  moved->AddGenerator(-0.3, 0.2, 0.1, 0, 1, 0, 0.6);
+  selected->Update();
+  moved->Update();
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    EXPECT_EQ(cga::norm(pointOf(selected->GetOutput(), i) - pointOf(moved->GetOutput(), i)), 0.0);
+  }
+  double values[7];
+  ASSERT_TRUE(selected->GetGenerator(1, values));
+  EXPECT_EQ(values[0], 0.5); // the list itself is unchanged
+  EXPECT_FALSE(selected->GetGenerator(2, values));
+}
+
+TEST(PointPairDeformationFilter, NonFiniteStrengthIsAnError)
+{
+  Random random(26);
+  auto mesh = randomMesh(random, 4, 1.0);
+  vtkNew<vtkPointPairDeformationFilter> filter;
+  EventCounter events;
+  events.Watch(filter);
+  filter->SetInputData(mesh);
+  filter->AddGenerator(0, 0, 0, 1, 0, 0, 0.4);
+  filter->SetStrength(std::numeric_limits<double>::quiet_NaN());
+  filter->Update();
+  EXPECT_EQ(events.errors, 1);
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+}
+} // namespace
