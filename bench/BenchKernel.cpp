@@ -36,10 +36,12 @@ BENCHMARK_CAPTURE(Kernel, Paper, cga::ExponentialRule::Paper)
   ->ArgsProduct({ generatorCounts(), { 1, 2 } })
   ->ArgNames({ "M", "threads" })
   ->Unit(benchmark::kMillisecond)
-  ->UseRealTime();
+  ->UseRealTime()
+  ->MeasureProcessCPUTime();
 BENCHMARK_CAPTURE(Kernel, Exact, cga::ExponentialRule::Exact)
   ->ArgsProduct({ generatorCounts(), { 1, 2 } })
   ->ArgNames({ "M", "threads" })
   ->Unit(benchmark::kMillisecond)
-  ->UseRealTime();
+  ->UseRealTime()
+  ->MeasureProcessCPUTime();
 } // namespace

@@ -65,5 +65,6 @@ BENCHMARK(Reference)
   ->ArgsProduct({ generatorCounts() })
   ->ArgNames({ "M" })
   ->Unit(benchmark::kMillisecond)
-  ->UseRealTime();
+  ->UseRealTime()
+  ->MeasureProcessCPUTime();
 } // namespace

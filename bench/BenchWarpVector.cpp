@@ -34,5 +34,6 @@ BENCHMARK(WarpVector)
   ->ArgsProduct({ { 1, 2 } })
   ->ArgNames({ "threads" })
   ->Unit(benchmark::kMillisecond)
-  ->UseRealTime();
+  ->UseRealTime()
+  ->MeasureProcessCPUTime();
 } // namespace
