@@ -1,5 +1,5 @@
 // The batch kernel, PointPairField::mapPoints, on the 1,000,000 points of the shared mesh:
-// Kernel/<rule>/M:<generators>/threads:<n>.
+// Kernel/<rule>/M:<generators>/threads:<n> (runOnThreads: chunks of 8192 points).
 #include "BenchSupport.h"
 
 #include <vector>

@@ -5,6 +5,8 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <random>
 #include <thread>
@@ -81,15 +83,23 @@ void runOnThreads(int threads,
                   std::size_t count,
                   const std::function<void(std::size_t, std::size_t)>& work)
 {
+  // Chunks handed out one by one, as vtkSMPTools does: the cost per point varies over the mesh
+  // (near a generator the exponential takes its transcendental branch), so fixed halves would
+  // leave one thread idle.
+  constexpr std::size_t chunk = 8192;
+  std::atomic<std::size_t> next{ 0 };
+  auto worker = [&]() {
+    for (std::size_t first = next.fetch_add(chunk); first < count; first = next.fetch_add(chunk))
+    {
+      work(first, std::min(count, first + chunk));
+    }
+  };
   std::vector<std::thread> others;
-  const std::size_t share = (count + threads - 1) / threads;
   for (int t = 1; t < threads; ++t)
   {
-    const std::size_t first = std::min(count, t * share);
-    const std::size_t last = std::min(count, first + share);
-    others.emplace_back(work, first, last);
+    others.emplace_back(worker);
   }
-  work(0, std::min(count, share));
+  worker();
   for (std::thread& thread : others)
   {
     thread.join();

@@ -47,8 +47,8 @@ constexpr double kStrength = 0.5;
 /// Reports points per second ("points/s") and items per second, over real (wall) time.
 void reportPoints(benchmark::State& state, std::size_t pointsPerIteration);
 
-/// Runs work(first, last) over [0, count) split into `threads` contiguous ranges, one std::thread
-/// each (the calling thread takes the first).
+/// Runs work(first, last) over [0, count) on `threads` threads (the calling thread and
+/// threads - 1 std::threads), which take chunks of 8192 points in turn.
 void runOnThreads(int threads,
                   std::size_t count,
                   const std::function<void(std::size_t, std::size_t)>& work);
