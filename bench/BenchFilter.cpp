@@ -6,7 +6,6 @@
 #include "vtkPointPairDeformationFilter.h"
 
 #include <vtkNew.h>
-#include <vtkSMPTools.h>
 
 namespace
 {
@@ -26,14 +25,7 @@ void Filter(benchmark::State& state, int rule)
   filter->SetEpsilon(kEpsilon);
   filter->SetStrength(kStrength);
   filter->SetExponentialRule(rule);
-  vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, "STDThread", false }, [&]() {
-    for (auto _ : state)
-    {
-      filter->Modified();
-      filter->Update();
-    }
-  });
-  if (filter->GetOutput()->GetNumberOfPoints() != static_cast<vtkIdType>(kMeshPoints))
+  if (updateEachIteration(state, filter, threads) != static_cast<long long>(kMeshPoints))
   {
     state.SkipWithError("the filter produced the wrong number of points");
   }
@@ -42,15 +34,7 @@ void Filter(benchmark::State& state, int rule)
 }
 
 BENCHMARK_CAPTURE(Filter, Paper, vtkPointPairDeformationFilter::PAPER)
-  ->ArgsProduct({ generatorCounts(), { 1, 2 } })
-  ->ArgNames({ "M", "threads" })
-  ->Unit(benchmark::kMillisecond)
-  ->UseRealTime()
-  ->MeasureProcessCPUTime();
+  ->Apply(perGeneratorsAndThreads);
 BENCHMARK_CAPTURE(Filter, Exact, vtkPointPairDeformationFilter::EXACT)
-  ->ArgsProduct({ generatorCounts(), { 1, 2 } })
-  ->ArgNames({ "M", "threads" })
-  ->Unit(benchmark::kMillisecond)
-  ->UseRealTime()
-  ->MeasureProcessCPUTime();
+  ->Apply(perGeneratorsAndThreads);
 } // namespace

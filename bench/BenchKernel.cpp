@@ -33,15 +33,7 @@ void Kernel(benchmark::State& state, cga::ExponentialRule rule)
 }
 
 BENCHMARK_CAPTURE(Kernel, Paper, cga::ExponentialRule::Paper)
-  ->ArgsProduct({ generatorCounts(), { 1, 2 } })
-  ->ArgNames({ "M", "threads" })
-  ->Unit(benchmark::kMillisecond)
-  ->UseRealTime()
-  ->MeasureProcessCPUTime();
+  ->Apply(perGeneratorsAndThreads);
 BENCHMARK_CAPTURE(Kernel, Exact, cga::ExponentialRule::Exact)
-  ->ArgsProduct({ generatorCounts(), { 1, 2 } })
-  ->ArgNames({ "M", "threads" })
-  ->Unit(benchmark::kMillisecond)
-  ->UseRealTime()
-  ->MeasureProcessCPUTime();
+  ->Apply(perGeneratorsAndThreads);
 } // namespace

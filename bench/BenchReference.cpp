@@ -64,7 +64,5 @@ BENCHMARK(Reference)
   ->Name("Reference/Paper")
   ->ArgsProduct({ generatorCounts() })
   ->ArgNames({ "M" })
-  ->Unit(benchmark::kMillisecond)
-  ->UseRealTime()
-  ->MeasureProcessCPUTime();
+  ->Apply(timedPerPoint);
 } // namespace

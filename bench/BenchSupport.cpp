@@ -1,9 +1,12 @@
 #include "BenchSupport.h"
 
+#include <vtkAlgorithm.h>
+#include <vtkDataSet.h>
 #include <vtkDoubleArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkSMPTools.h>
 
 #include <algorithm>
 #include <atomic>
@@ -77,6 +80,30 @@ void reportPoints(benchmark::State& state, std::size_t pointsPerIteration)
   const double points = static_cast<double>(pointsPerIteration) * state.iterations();
   state.counters["points/s"] = benchmark::Counter(points, benchmark::Counter::kIsRate);
   state.SetItemsProcessed(static_cast<int64_t>(points));
+}
+
+void timedPerPoint(benchmark::internal::Benchmark* benchmark)
+{
+  benchmark->Unit(benchmark::kMillisecond)->UseRealTime()->MeasureProcessCPUTime();
+}
+
+void perGeneratorsAndThreads(benchmark::internal::Benchmark* benchmark)
+{
+  benchmark->ArgsProduct({ generatorCounts(), { 1, 2 } })->ArgNames({ "M", "threads" });
+  timedPerPoint(benchmark);
+}
+
+long long updateEachIteration(benchmark::State& state, vtkAlgorithm* algorithm, int threads)
+{
+  vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, "STDThread", false }, [&]() {
+    for (auto _ : state)
+    {
+      algorithm->Modified();
+      algorithm->Update();
+    }
+  });
+  auto* output = vtkDataSet::SafeDownCast(algorithm->GetOutputDataObject(0));
+  return output ? static_cast<long long>(output->GetNumberOfPoints()) : -1;
 }
 
 void runOnThreads(int threads,

@@ -10,6 +10,8 @@
 #include <vtkSmartPointer.h>
 #include <vtkStructuredGrid.h>
 
+class vtkAlgorithm;
+
 #include <benchmark/benchmark.h>
 
 #include <cstddef>
@@ -46,6 +48,18 @@ constexpr double kStrength = 0.5;
 
 /// Reports points per second ("points/s") and items per second, over real (wall) time.
 void reportPoints(benchmark::State& state, std::size_t pointsPerIteration);
+
+/// Registration settings shared by every benchmark (->Apply(...)): milliseconds, wall-clock time
+/// for the rates, the whole process's CPU time.
+void timedPerPoint(benchmark::internal::Benchmark* benchmark);
+
+/// timedPerPoint, over M = generatorCounts() and 1 or 2 threads (arguments "M" and "threads").
+void perGeneratorsAndThreads(benchmark::internal::Benchmark* benchmark);
+
+/// Updates a VTK algorithm once per benchmark iteration (Modified() first) with vtkSMPTools on the
+/// STDThread backend and `threads` threads: Debian's VTK defaults to Sequential, which ignores
+/// threads. Returns the algorithm's output point count.
+long long updateEachIteration(benchmark::State& state, vtkAlgorithm* algorithm, int threads);
 
 /// Runs work(first, last) over [0, count) on `threads` threads (the calling thread and
 /// threads - 1 std::threads), which take chunks of 8192 points in turn.

@@ -3,7 +3,6 @@
 #include "BenchSupport.h"
 
 #include <vtkNew.h>
-#include <vtkSMPTools.h>
 #include <vtkWarpVector.h>
 
 namespace
@@ -16,14 +15,7 @@ void WarpVector(benchmark::State& state)
   vtkNew<vtkWarpVector> warp;
   warp->SetInputData(benchmarkMesh());
   warp->SetScaleFactor(1.0);
-  vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, "STDThread", false }, [&]() {
-    for (auto _ : state)
-    {
-      warp->Modified();
-      warp->Update();
-    }
-  });
-  if (warp->GetOutput()->GetNumberOfPoints() != static_cast<vtkIdType>(kMeshPoints))
+  if (updateEachIteration(state, warp, threads) != static_cast<long long>(kMeshPoints))
   {
     state.SkipWithError("vtkWarpVector produced the wrong number of points");
   }
@@ -33,7 +25,5 @@ void WarpVector(benchmark::State& state)
 BENCHMARK(WarpVector)
   ->ArgsProduct({ { 1, 2 } })
   ->ArgNames({ "threads" })
-  ->Unit(benchmark::kMillisecond)
-  ->UseRealTime()
-  ->MeasureProcessCPUTime();
+  ->Apply(timedPerPoint);
 } // namespace

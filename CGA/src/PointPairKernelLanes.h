@@ -2,19 +2,21 @@
 // PointPairKernel<Isa>.cpp with BOOSTED_KERNEL_ISA set to that file's namespace.
 //
 // It repeats, lane by lane and operation by operation, what PointPairField::map() computes through
-// generatorAt(), expPaper()/expExact() and sandwichPoint(), so that B(p) and K come out bit for bit
-// the same (the kernel files are compiled with -ffp-contract=off: no fused multiply-add may change a
-// rounding, which a large rotation angle would amplify). Only the sandwich differs: for the Paper
-// rule it is the closed form below instead of the sparse product, equal up to rounding.
+// generatorAt(), expPaper()/expExact() (their scalar arithmetic is shared: ExponentialScalars.h)
+// and sandwichPoint(), so that B(p) and K round the same way (the kernel files are compiled with
+// -ffp-contract=off: no fused multiply-add may change a rounding, which a large rotation angle
+// would amplify). Only the sandwich differs: for the Paper rule it is the closed form below
+// instead of the sparse product, equal up to rounding.
 //
 // Everything here has internal linkage and calls only builtins and libm: see PointPairKernel.h.
 #ifndef BOOSTED_KERNEL_ISA
 #error "define BOOSTED_KERNEL_ISA before including PointPairKernelLanes.h"
 #endif
 
+#include "ExponentialScalars.h"
 #include "PointPairKernel.h"
 
-#include <math.h>
+#include "cga/Compact.h" // for the component enumerators only: nothing of it is called here
 
 namespace cga
 {
@@ -26,32 +28,16 @@ namespace
 {
 constexpr int L = kLanes;
 
-// Bivector components (Compact.h): e12 e13 e23, e_i^no, e_i^ni, no^ni.
-enum
-{
-  E12,
-  E13,
-  E23,
-  E1NO,
-  E2NO,
-  E3NO,
-  E1NI,
-  E2NI,
-  E3NI,
-  NONI,
-  BivectorCount
-};
-
-// Conformal vector components (Compact.h): no, e1, e2, e3, ni.
-enum
-{
-  NO,
-  E1,
-  E2,
-  E3,
-  NI,
-  VectorCount
-};
+// Component numbers of Compact.h.
+constexpr int E12 = Bivector::E12, E13 = Bivector::E13, E23 = Bivector::E23;
+constexpr int E1NO = Bivector::E1NO, E2NO = Bivector::E2NO, E3NO = Bivector::E3NO;
+constexpr int E1NI = Bivector::E1NI, E2NI = Bivector::E2NI, E3NI = Bivector::E3NI;
+constexpr int NONI = Bivector::NONI, BivectorCount = Bivector::Count;
+constexpr int NO = ConformalVector::NO, E1 = ConformalVector::E1, E2 = ConformalVector::E2;
+constexpr int E3 = ConformalVector::E3, NI = ConformalVector::NI;
+constexpr int VectorCount = ConformalVector::Count;
+constexpr int QuadvectorCount = Quadvector::Count;
+constexpr int EvenCount = Even::kCount; // scalar, bivector, quadvector (detail::pack order)
 
 using Lanes = double[L];
 
@@ -186,29 +172,6 @@ inline double scalarSquare(const double (*b)[L], int l)
     b[NONI][l] * b[NONI][l];
 }
 
-// planeFunctions() of Exponential.cpp outside its power-series range (x >= 1e-2), one lane.
-void planeTranscendental(double r, double x, double lh, double& c, double& sHat)
-{
-  if (lh > 0.0)
-  {
-    if (x > 20.0) // kExpScalingThreshold: divided by cosh
-    {
-      c = 1.0;
-      sHat = tanh(x) / r;
-    }
-    else
-    {
-      c = cosh(x);
-      sHat = sinh(x) / r;
-    }
-  }
-  else
-  {
-    c = cos(x);
-    sHat = sin(x) / r;
-  }
-}
-
 // y = v _| B for conformal vectors v (five lanes arrays) and a bivector B:
 // v = a no + u + b ni gives y = (u.A + d a) no + (u _| E + b A + a C) + (u.C - d b) ni with
 // B = E + A_i e_i^no + C_i e_i^ni + d no^ni (no.ni = -1).
@@ -314,84 +277,6 @@ void sandwichEven(const KernelArgs& args,
   applyTerms<VectorCount>(args.oddTimesEvenToVector, odd, reversed, r);
 }
 
-constexpr int QuadvectorCount = 5;
-constexpr int EvenCount = 16; // scalar, 10 bivector, 5 quadvector components (detail::pack)
-
-// planeSquares() of Exponential.cpp, one lane.
-void planeSquares(double s, double w2, double& l1, double& l2)
-{
-  const double disc = s * s - w2;
-  if (!(disc > 0.0))
-  {
-    l1 = l2 = 0.5 * s;
-    return;
-  }
-  const double r = __builtin_sqrt(disc);
-  if (s >= 0.0)
-  {
-    l1 = 0.5 * (s + r);
-    l2 = l1 != 0.0 ? 0.25 * w2 / l1 : 0.0;
-  }
-  else
-  {
-    l2 = 0.5 * (s - r);
-    l1 = 0.25 * w2 / l2;
-  }
-}
-
-// planeFunctions() of Exponential.cpp with AvoidOverflow, one lane.
-void planeFunctions(double m, double lh, double& c, double& sHat)
-{
-  const double r = __builtin_sqrt(__builtin_fabs(lh));
-  const double x = m * r;
-  if (x < 1e-2)
-  {
-    const double l = lh >= 0.0 ? x * x : -x * x;
-    c = 1.0 + l / 2.0 * (1.0 + l / 12.0 * (1.0 + l / 30.0 * (1.0 + l / 56.0)));
-    sHat = m * (1.0 + l / 6.0 * (1.0 + l / 20.0 * (1.0 + l / 42.0 * (1.0 + l / 72.0))));
-    return;
-  }
-  planeTranscendental(r, x, lh, c, sHat);
-}
-
-double sinc(double x)
-{
-  return __builtin_fabs(x) < 1e-4 ? 1.0 - x * x / 6.0 : sin(x) / x;
-}
-
-// exp(B) = scalar + quadvector w + bivectorU u + bivectorWU <w u>_2 outside the series range.
-struct ClosedFormCoefficients
-{
-  double scalar, quadvector, bivectorU, bivectorWU;
-};
-
-ClosedFormCoefficients closedFormCoefficients(double m, double l1, double l2, double largest)
-{
-  ClosedFormCoefficients k;
-  if (l1 - l2 >= 0.05 * largest || l1 > 0.0)
-  {
-    double c1, s1, c2, s2;
-    planeFunctions(m, l1, c1, s1);
-    planeFunctions(m, l2, c2, s2);
-    const double d = l1 - l2;
-    k.scalar = c1 * c2;
-    k.quadvector = 0.5 * s1 * s2;
-    k.bivectorU = (l1 * s1 * c2 - l2 * s2 * c1) / d;
-    k.bivectorWU = 0.5 * (c1 * s2 - c2 * s1) / d;
-    return k;
-  }
-  // Two rotations with nearly equal angles (expExact).
-  const double r1 = __builtin_sqrt(-l1), r2 = __builtin_sqrt(-l2);
-  const double t1 = m * r1, t2 = m * r2;
-  const double mSincSum = sin(t1 + t2) / (r1 + r2);
-  const double mSincDiff = m * sinc(t1 - t2);
-  k.scalar = cos(t1) * cos(t2);
-  k.quadvector = 0.5 * (sin(t1) / r1) * (sin(t2) / r2);
-  k.bivectorU = 0.5 * (mSincSum + mSincDiff);
-  k.bivectorWU = 0.25 * (mSincDiff - mSincSum) / (r1 * r2);
-  return k;
-}
-
 // seriesExp() of Exponential.cpp on every lane of b, into k (detail::pack order).
 void seriesExponential(const KernelArgs& args, const double (*b)[L], double (*k)[L])
 {
@@ -401,29 +286,17 @@ void seriesExponential(const KernelArgs& args, const double (*b)[L], double (*k)
   applyTerms<1>(args.quadvectorSquare, w, w, w2);
   alignas(64) double wb[BivectorCount][L];
   applyTerms<BivectorCount>(args.rightContraction, w, b, wb);
-  alignas(64) Lanes s, alpha, beta, a0, a4, b0, b4;
+  alignas(64) Lanes s, a0, a4, b0, b4;
   for (int l = 0; l < L; ++l)
   {
     s[l] = scalarSquare(b, l);
-    alpha[l] = 1.0;
-    beta[l] = a0[l] = a4[l] = b0[l] = b4[l] = 0.0;
   }
-  double evenFactorial = 1.0;
-  for (int n = 0; n < 16; ++n)
-  {
-    const double oddFactorial = evenFactorial / (2 * n + 1);
-    for (int l = 0; l < L; ++l)
-    {
-      a0[l] += alpha[l] * evenFactorial;
-      a4[l] += beta[l] * evenFactorial;
-      b0[l] += alpha[l] * oddFactorial;
-      b4[l] += beta[l] * oddFactorial;
-      const double nextAlpha = s[l] * alpha[l] + w2[0][l] * beta[l];
-      beta[l] = alpha[l] + s[l] * beta[l];
-      alpha[l] = nextAlpha;
-    }
-    evenFactorial = oddFactorial / (2 * n + 2);
-  }
+  const detail::SeriesCoefficients<LaneVector> c =
+    detail::seriesCoefficients(loadLanes(s), loadLanes(w2[0]));
+  storeLanes(a0, c.a0);
+  storeLanes(a4, c.a4);
+  storeLanes(b0, c.b0);
+  storeLanes(b4, c.b4);
   for (int l = 0; l < L; ++l)
   {
     k[0][l] = a0[l];
@@ -457,16 +330,14 @@ void exactExponential(const KernelArgs& args, const double (*b)[L], double (*k)[
   alignas(64) double w2[1][L];
   applyTerms<1>(args.quadvectorSquare, w, w, w2);
   // Which lanes take the power series (seriesExp of B itself) and which the closed form.
-  alignas(64) Lanes l1, l2, largest;
+  alignas(64) Lanes l1, l2;
   bool series[L], closed[L];
   bool anySeries = false, anyClosed = false;
   for (int l = 0; l < L; ++l)
   {
-    planeSquares(scalarSquare(u, l), w2[0][l], l1[l], l2[l]);
-    const double a1 = __builtin_fabs(l1[l]), a2 = __builtin_fabs(l2[l]);
-    largest[l] = a1 < a2 ? a2 : a1; // std::max
+    detail::planeSquares(scalarSquare(u, l), w2[0][l], l1[l], l2[l]);
     const bool usable = m[l] != 0.0 && __builtin_isfinite(m[l]);
-    series[l] = usable && (largest[l] == 0.0 || m[l] * largest[l] * m[l] <= 1.0);
+    series[l] = usable && detail::exactUsesSeries(m[l], l1[l], l2[l]);
     closed[l] = usable && !series[l];
     anySeries = anySeries || series[l];
     anyClosed = anyClosed || closed[l];
@@ -485,11 +356,11 @@ void exactExponential(const KernelArgs& args, const double (*b)[L], double (*k)[
     {
       if (closed[l])
       {
-        const ClosedFormCoefficients c = closedFormCoefficients(m[l], l1[l], l2[l], largest[l]);
+        const detail::ExactCoefficients c = detail::exactCoefficients(m[l], l1[l], l2[l], true);
         coefficients[0][l] = c.scalar;
         coefficients[1][l] = c.quadvector;
-        coefficients[2][l] = c.bivectorU;
-        coefficients[3][l] = c.bivectorWU;
+        coefficients[2][l] = c.bivector;
+        coefficients[3][l] = c.bivectorW;
       }
     }
   }
@@ -543,16 +414,14 @@ void paperExponential(double (*b)[L], double* c)
   alignas(64) Lanes sHat;
   for (int l = 0; l < L; ++l)
   {
-    // The power series in l of both functions (x < 1e-2), computed for every lane.
-    const double q = lh[l] >= 0.0 ? x[l] * x[l] : -x[l] * x[l];
-    c[l] = 1.0 + q / 2.0 * (1.0 + q / 12.0 * (1.0 + q / 30.0 * (1.0 + q / 56.0)));
-    sHat[l] = m[l] * (1.0 + q / 6.0 * (1.0 + q / 20.0 * (1.0 + q / 42.0 * (1.0 + q / 72.0))));
+    // The power series of planeFunctions, computed for every lane (it vectorizes).
+    detail::planeSeries(m[l], lh[l], x[l], c[l], sHat[l]);
   }
   for (int l = 0; l < L; ++l)
   {
-    if (!(x[l] < 1e-2) && m[l] != 0.0 && __builtin_isfinite(m[l]))
+    if (!(x[l] < detail::kPlaneSeriesLimit) && m[l] != 0.0 && __builtin_isfinite(m[l]))
     {
-      planeTranscendental(r[l], x[l], lh[l], c[l], sHat[l]);
+      detail::planeTranscendental(lh[l], r[l], x[l], true, c[l], sHat[l]);
     }
   }
   const double nan = __builtin_nan("");
