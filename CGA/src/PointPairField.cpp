@@ -24,8 +24,10 @@ PointPairField::PointPairField(const PointPairGenerator* generators,
   : Falloff(falloff)
   , Epsilon(epsilon)
 {
+  static_assert(kernel::kGeneratorStride == 3 + Bivector::Count, "location, then the pair");
   this->Locations.reserve(count);
   this->WeightedPairs.reserve(count);
+  this->PackedGenerators.reserve(count * kernel::kGeneratorStride);
   for (std::size_t i = 0; i < count; ++i)
   {
     const PointPairGenerator& g = generators[i];

@@ -342,12 +342,12 @@ void exactExponential(const KernelArgs& args, const double (*b)[L], double (*k)[
     anySeries = anySeries || series[l];
     anyClosed = anyClosed || closed[l];
   }
-  alignas(64) double fromSeries[EvenCount][L];
+  alignas(64) double fromSeries[EvenCount][L] = {};
   if (anySeries)
   {
     seriesExponential(args, b, fromSeries);
   }
-  alignas(64) double wu[BivectorCount][L];
+  alignas(64) double wu[BivectorCount][L] = {};
   alignas(64) double coefficients[4][L] = {};
   if (anyClosed)
   {
