@@ -359,9 +359,11 @@ int vtkPointPairDeformationFilter::RequestData(
     source = toStructuredGrid(grid, grid->GetExtent());
   }
 
-  if (!std::isfinite(this->Strength))
+  // The clamp macros let NaN through.
+  if (!std::isfinite(this->Strength) || std::isnan(this->Falloff) || std::isnan(this->Epsilon))
   {
-    vtkErrorMacro(<< "Strength must be finite, it is " << this->Strength);
+    vtkErrorMacro(<< "Strength must be finite and Falloff and Epsilon numbers; they are "
+                  << this->Strength << ", " << this->Falloff << " and " << this->Epsilon);
     return 1; // the output stays empty
   }
 

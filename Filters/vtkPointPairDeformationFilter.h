@@ -29,7 +29,7 @@
  * counted in one warning; so are points whose image would be at infinity. Generators with a zero
  * or non-finite direction, location or weight are ignored with one warning. No generators (or
  * Strength 0) is the identity. A missing or wrongly typed array on the Generators port, or a
- * non-finite Strength, is an error and gives an empty output.
+ * non-finite Strength, or a NaN Falloff or Epsilon, is an error and gives an empty output.
  *
  * The per-point work runs in vtkSMPTools. Note that Debian's VTK uses the Sequential backend
  * unless the environment sets VTK_SMP_BACKEND_IN_USE=STDThread; the filter does not change the

@@ -750,18 +750,33 @@ TEST(PointPairDeformationFilter, TheSelectedGeneratorTakesTheHandlesLocation)
   EXPECT_FALSE(selected->GetGenerator(2, values));
 }
 
-TEST(PointPairDeformationFilter, NonFiniteStrengthIsAnError)
+TEST(PointPairDeformationFilter, NonFiniteStrengthOrNaNParametersAreErrors)
 {
   Random random(26);
   auto mesh = randomMesh(random, 4, 1.0);
-  vtkNew<vtkPointPairDeformationFilter> filter;
-  EventCounter events;
-  events.Watch(filter);
-  filter->SetInputData(mesh);
-  filter->AddGenerator(0, 0, 0, 1, 0, 0, 0.4);
-  filter->SetStrength(std::numeric_limits<double>::quiet_NaN());
-  filter->Update();
-  EXPECT_EQ(events.errors, 1);
-  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int which = 0; which < 3; ++which)
+  {
+    vtkNew<vtkPointPairDeformationFilter> filter;
+    EventCounter events;
+    events.Watch(filter);
+    filter->SetInputData(mesh);
+    filter->AddGenerator(0, 0, 0, 1, 0, 0, 0.4);
+    if (which == 0)
+    {
+      filter->SetStrength(std::numeric_limits<double>::infinity());
+    }
+    else if (which == 1)
+    {
+      filter->SetFalloff(nan);
+    }
+    else
+    {
+      filter->SetEpsilon(nan);
+    }
+    filter->Update();
+    EXPECT_EQ(events.errors, 1) << which;
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0) << which;
+  }
 }
 } // namespace
