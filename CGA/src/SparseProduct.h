@@ -67,6 +67,7 @@ public:
   }
 
   int size() const { return Size; }
+  const ProductTerm& term(int i) const { return Terms[i]; }
 
 private:
   // 16 x 16 slot pairs with at most two terms each.

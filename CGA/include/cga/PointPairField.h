@@ -11,6 +11,7 @@
 #include "cga/Vec3.h"
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace cga
@@ -70,6 +71,9 @@ public:
   /// xyz interleaved, from `in` to `out` (which may be the same array when the types match).
   /// A point that is not finite, or whose image is not finite, is copied unchanged; the return
   /// value counts them. `out` is written for every point. No heap allocation.
+  /// The points go through a vectorized block kernel (B(p) and K bit for bit as map() computes
+  /// them, the sandwich equal up to rounding), compiled for several instruction sets and chosen
+  /// for the running CPU: see mapPointsInstructionSets().
   std::size_t mapPoints(
     const double* in, double* out, std::size_t count, double strength, ExponentialRule rule) const;
   std::size_t mapPoints(
@@ -82,8 +86,21 @@ public:
 private:
   std::vector<Vec3> Locations;
   std::vector<Bivector> WeightedPairs; // w_i tau(x_i, v_i)
+  std::vector<double> PackedGenerators; // per generator: location, then WeightedPairs (13 doubles)
   double Falloff = 1.0;
   double Epsilon = 1e-2;
   std::size_t Skipped = 0;
 };
+
+/// The instruction sets of mapPoints()' block kernel that this build holds and this CPU runs,
+/// narrowest first: "baseline" (the build's default target), and on x86-64 "avx2", "avx512".
+std::vector<std::string> mapPointsInstructionSets();
+
+/// The one mapPoints() uses: the widest available, or the one the environment variable
+/// BOOSTEDSURFACES_KERNEL_ISA names when it is available.
+std::string mapPointsInstructionSet();
+
+/// Makes mapPoints() use the named instruction set (for tests and benchmarks, process-wide).
+/// Returns false, changing nothing, when it is not available.
+bool useMapPointsInstructionSet(const std::string& name);
 } // namespace cga

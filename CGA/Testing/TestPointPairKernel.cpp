@@ -1,0 +1,281 @@
+// The vectorized block kernel behind PointPairField::mapPoints (src/PointPairKernel.h) against the
+// pointwise map(), on every instruction set this CPU runs: random fields of 1 to 64 generators,
+// both rules, points on generators, NaN and infinite points, huge weights, strength 0.
+#include "TestSupport.h"
+
+#include "cga/PointPairField.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace
+{
+using namespace cga;
+using cgatest::Random;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Restores the instruction set chosen at start-up when a test ends.
+class InstructionSetScope
+{
+public:
+  InstructionSetScope()
+    : Saved(mapPointsInstructionSet())
+  {
+  }
+  ~InstructionSetScope() { useMapPointsInstructionSet(this->Saved); }
+
+private:
+  std::string Saved;
+};
+
+struct Case
+{
+  std::vector<PointPairGenerator> generators;
+  double falloff = 1.0, epsilon = 0.05, strength = 1.0;
+  std::vector<double> points; // xyz interleaved
+};
+
+Case randomCase(Random& random, int generatorCount, double maxWeight, int pointCount)
+{
+  Case c;
+  for (int i = 0; i < generatorCount; ++i)
+  {
+    c.generators.push_back(
+      { random.vec3(1.5), random.uniform(0.2, 2.0) * random.unit(), random.uniform(-maxWeight, maxWeight) });
+  }
+  c.falloff = random.uniform(0.0, 3.0);
+  c.epsilon = random.uniform(1e-3, 0.5);
+  c.strength = random.uniform(-2.0, 2.0);
+  for (int i = 0; i < pointCount; ++i)
+  {
+    const Vec3 p = random.vec3(3.0);
+    c.points.insert(c.points.end(), { p.x, p.y, p.z });
+  }
+  // Points exactly on the first generators, and points that are not finite.
+  for (std::size_t g = 0; g < c.generators.size() && g < 3; ++g)
+  {
+    const Vec3 x = c.generators[g].location;
+    c.points.insert(c.points.end(), { x.x, x.y, x.z });
+  }
+  c.points.insert(c.points.end(), { kNaN, 0.5, 0.5, 0.1, kInf, 0.2, -kInf, kNaN, kInf });
+  return c;
+}
+
+// mapPoints against map() point by point: images within 1e-12 relative, the same points left
+// unchanged, and the count of those returned.
+void expectBatchEqualsPointwise(const Case& c, ExponentialRule rule, const char* label)
+{
+  const PointPairField field(c.generators, c.falloff, c.epsilon);
+  const std::size_t count = c.points.size() / 3;
+  std::vector<double> out(c.points.size(), kNaN);
+  const std::size_t unchanged =
+    field.mapPoints(c.points.data(), out.data(), count, c.strength, rule);
+  std::size_t expectedUnchanged = 0;
+  double worst = 0.0;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const Vec3 p{ c.points[3 * i], c.points[3 * i + 1], c.points[3 * i + 2] };
+    Vec3 expected = p;
+    if (!field.map(p, c.strength, rule, expected) || !isFinite(expected))
+    {
+      expected = p;
+      ++expectedUnchanged;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const double e = (&expected.x)[k], o = out[3 * i + k];
+      if (!std::isfinite(e))
+      {
+        EXPECT_TRUE(std::isnan(e) ? std::isnan(o) : o == e) << label << " point " << i;
+        continue;
+      }
+      const double error = std::fabs(o - e) / std::max(1.0, std::fabs(e));
+      worst = std::max(worst, std::isnan(error) ? kInf : error);
+    }
+  }
+  EXPECT_LE(worst, 1e-12) << label;
+  EXPECT_EQ(unchanged, expectedUnchanged) << label;
+}
+
+TEST(PointPairKernel, EveryInstructionSetMatchesThePointwiseMap)
+{
+  InstructionSetScope scope;
+  const std::vector<std::string> sets = mapPointsInstructionSets();
+  ASSERT_FALSE(sets.empty());
+  EXPECT_EQ(sets.front(), "baseline");
+  for (const std::string& set : sets)
+  {
+    ASSERT_TRUE(useMapPointsInstructionSet(set));
+    Random random(81);
+    for (int generators : { 1, 2, 3, 4, 7, 16, 64 })
+    {
+      for (double maxWeight : { 0.01, 0.3, 2.0 })
+      {
+        const Case c = randomCase(random, generators, maxWeight, 501);
+        for (ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
+        {
+          const std::string label = set + (rule == ExponentialRule::Exact ? " Exact" : " Paper") +
+            " M=" + std::to_string(generators) + " w=" + std::to_string(maxWeight);
+          expectBatchEqualsPointwise(c, rule, label.c_str());
+        }
+      }
+    }
+  }
+}
+
+TEST(PointPairKernel, IllConditionedFieldsAreAsAccurateAsThePointwiseMap)
+{
+  // A strong generator close to the point: the image is a quotient of large, nearly cancelling
+  // terms, and both the batch kernel and map() lose digits. Against the closed form of one
+  // generator (x + SCT(p - x), as in TestPointPairField) the kernel must do as well as map().
+  InstructionSetScope scope;
+  for (const std::string& set : mapPointsInstructionSets())
+  {
+    ASSERT_TRUE(useMapPointsInstructionSet(set));
+    Random random(86);
+    double worstRatio = 0.0;
+    for (int n = 0; n < 3000; ++n)
+    {
+      const Vec3 x = random.vec3(1.5), v = random.uniform(0.2, 2.0) * random.unit();
+      const double w = random.uniform(-100.0, 100.0), strength = random.uniform(-2.0, 2.0);
+      const double k = n % 2 ? random.uniform(0.0, 3.0) : 0.0;
+      const double eps = random.uniform(1e-3, 0.05);
+      const PointPairField field({ { x, v, w } }, k, eps);
+      const Vec3 p = random.vec3(3.0);
+      const Vec3 u = (-strength * w / (k * norm2(p - x) + eps)) * v;
+      const Vec3 y = p - x;
+      const Vec3 expected =
+        x + (y + norm2(y) * u) / (1.0 + 2.0 * dot(u, y) + norm2(u) * norm2(y));
+      for (ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
+      {
+        Vec3 pointwise;
+        ASSERT_TRUE(field.map(p, strength, rule, pointwise));
+        double batch[3];
+        const double in[3] = { p.x, p.y, p.z };
+        ASSERT_EQ(field.mapPoints(in, batch, 1, strength, rule), 0u);
+        const double scale = std::max(1.0, norm(expected));
+        const double pointwiseError = norm(pointwise - expected) / scale;
+        const double batchError = norm(Vec3{ batch[0], batch[1], batch[2] } - expected) / scale;
+        worstRatio = std::max(worstRatio, batchError / (pointwiseError + 1e-14));
+      }
+    }
+    EXPECT_LE(worstRatio, 2.0) << set;
+  }
+}
+
+TEST(PointPairKernel, InstructionSetsGiveIdenticalBits)
+{
+  // Compiled without fused multiply-add, every instruction set rounds alike.
+  InstructionSetScope scope;
+  Random random(82);
+  const Case c = randomCase(random, 9, 1.0, 999);
+  const PointPairField field(c.generators, c.falloff, c.epsilon);
+  const std::size_t count = c.points.size() / 3;
+  for (ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
+  {
+    std::vector<double> reference;
+    for (const std::string& set : mapPointsInstructionSets())
+    {
+      ASSERT_TRUE(useMapPointsInstructionSet(set));
+      std::vector<double> out(c.points.size());
+      field.mapPoints(c.points.data(), out.data(), count, c.strength, rule);
+      if (reference.empty())
+      {
+        reference = out;
+        continue;
+      }
+      for (std::size_t i = 0; i < out.size(); ++i)
+      {
+        const bool same = std::isnan(out[i]) ? std::isnan(reference[i]) : out[i] == reference[i];
+        ASSERT_TRUE(same) << set << " value " << i;
+      }
+    }
+  }
+}
+
+TEST(PointPairKernel, HugeWeightsGiveFiniteImagesEqualToThePointwiseMap)
+{
+  InstructionSetScope scope;
+  for (const std::string& set : mapPointsInstructionSets())
+  {
+    ASSERT_TRUE(useMapPointsInstructionSet(set));
+    Random random(83);
+    for (double weight : { 1e3, 1e8, 1e30, 1e150, 1e300 })
+    {
+      Case c = randomCase(random, 4, 1.0, 200);
+      for (PointPairGenerator& g : c.generators)
+      {
+        g.weight *= weight;
+      }
+      for (ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
+      {
+        const std::string label = set + " weight " + std::to_string(weight);
+        expectBatchEqualsPointwise(c, rule, label.c_str());
+        const PointPairField field(c.generators, c.falloff, c.epsilon);
+        std::vector<double> out(c.points.size());
+        field.mapPoints(c.points.data(), out.data(), c.points.size() / 3, c.strength, rule);
+        for (std::size_t i = 0; i + 9 < out.size(); ++i) // all but the three non-finite points
+        {
+          ASSERT_TRUE(std::isfinite(out[i])) << label << " value " << i;
+        }
+      }
+    }
+  }
+}
+
+TEST(PointPairKernel, NoGeneratorsOrZeroStrengthCopyThePoints)
+{
+  Random random(84);
+  Case c = randomCase(random, 3, 1.0, 20);
+  const PointPairField field(c.generators, c.falloff, c.epsilon);
+  const PointPairField empty(std::vector<PointPairGenerator>{}, 1.0, 0.1);
+  const PointPairField zeroOnly({ { { 0, 0, 0 }, { 0, 0, 0 }, 1.0 } }, 1.0, 0.1);
+  const std::size_t count = c.points.size() / 3;
+  for (ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
+  {
+    for (const PointPairField* f : { &empty, &zeroOnly, &field })
+    {
+      const double strength = f == &field ? 0.0 : 1.0;
+      std::vector<float> out(c.points.size());
+      EXPECT_EQ(f->mapPoints(c.points.data(), out.data(), count, strength, rule), 3u);
+      for (std::size_t i = 0; i < out.size(); ++i)
+      {
+        const float p = static_cast<float>(c.points[i]);
+        EXPECT_TRUE(std::isnan(p) ? std::isnan(out[i]) : out[i] == p) << i;
+      }
+    }
+  }
+}
+
+TEST(PointPairKernel, InPlaceMapEqualsSeparateOutput)
+{
+  Random random(85);
+  const Case c = randomCase(random, 5, 1.0, 77);
+  const PointPairField field(c.generators, c.falloff, c.epsilon);
+  const std::size_t count = c.points.size() / 3;
+  for (ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
+  {
+    std::vector<double> separate(c.points.size());
+    std::vector<double> inPlace = c.points;
+    const std::size_t a = field.mapPoints(c.points.data(), separate.data(), count, c.strength, rule);
+    const std::size_t b = field.mapPoints(inPlace.data(), inPlace.data(), count, c.strength, rule);
+    EXPECT_EQ(a, b);
+    for (std::size_t i = 0; i < separate.size(); ++i)
+    {
+      EXPECT_TRUE(std::isnan(separate[i]) ? std::isnan(inPlace[i]) : separate[i] == inPlace[i]);
+    }
+  }
+}
+
+TEST(PointPairKernel, UnknownInstructionSetIsRefused)
+{
+  InstructionSetScope scope;
+  const std::string before = mapPointsInstructionSet();
+  EXPECT_FALSE(useMapPointsInstructionSet("no-such-isa"));
+  EXPECT_EQ(mapPointsInstructionSet(), before);
+}
+} // namespace

@@ -1,0 +1,124 @@
+// Picks the block kernel for the running CPU: the widest instruction set it supports among those
+// compiled (PointPairKernel.h), unless BOOSTEDSURFACES_KERNEL_ISA names another available one.
+#include "PointPairKernelDispatch.h"
+
+#include <atomic>
+#include <cstdlib>
+#include <cstring>
+
+namespace cga
+{
+namespace kernel
+{
+namespace
+{
+struct Candidate
+{
+  const char* name;
+  MapBlock block;
+  bool (*supported)();
+};
+
+bool always()
+{
+  return true;
+}
+
+#ifdef BOOSTED_KERNEL_X86_DISPATCH
+bool hasAvx2()
+{
+  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+}
+
+bool hasAvx512()
+{
+  return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+    __builtin_cpu_supports("avx512vl");
+}
+#endif
+
+// Narrowest first.
+const Candidate kCandidates[] = {
+  { "baseline", &baseline::mapBlock, &always },
+#ifdef BOOSTED_KERNEL_X86_DISPATCH
+  { "avx2", &avx2::mapBlock, &hasAvx2 },
+  { "avx512", &avx512::mapBlock, &hasAvx512 },
+#endif
+};
+constexpr int kCandidateCount = sizeof(kCandidates) / sizeof(kCandidates[0]);
+
+int findAvailable(const char* name)
+{
+  for (int i = 0; i < kCandidateCount; ++i)
+  {
+    if (std::strcmp(kCandidates[i].name, name) == 0 && kCandidates[i].supported())
+    {
+      return i;
+    }
+  }
+  return -1;
+}
+
+int defaultChoice()
+{
+  if (const char* requested = std::getenv("BOOSTEDSURFACES_KERNEL_ISA"))
+  {
+    const int i = findAvailable(requested);
+    if (i >= 0)
+    {
+      return i;
+    }
+  }
+  int best = 0;
+  for (int i = 0; i < kCandidateCount; ++i)
+  {
+    if (kCandidates[i].supported())
+    {
+      best = i;
+    }
+  }
+  return best;
+}
+
+std::atomic<int>& choice()
+{
+  static std::atomic<int> chosen{ defaultChoice() };
+  return chosen;
+}
+} // namespace
+
+MapBlock activeMapBlock()
+{
+  return kCandidates[choice().load(std::memory_order_relaxed)].block;
+}
+
+std::vector<std::string> availableInstructionSets()
+{
+  std::vector<std::string> names;
+  for (const Candidate& candidate : kCandidates)
+  {
+    if (candidate.supported())
+    {
+      names.emplace_back(candidate.name);
+    }
+  }
+  return names;
+}
+
+std::string activeInstructionSet()
+{
+  return kCandidates[choice().load()].name;
+}
+
+bool useInstructionSet(const std::string& name)
+{
+  const int i = findAvailable(name.c_str());
+  if (i < 0)
+  {
+    return false;
+  }
+  choice().store(i);
+  return true;
+}
+} // namespace kernel
+} // namespace cga

@@ -1,0 +1,18 @@
+// Internal: the block kernel chosen for the running CPU (PointPairKernelDispatch.cpp).
+#pragma once
+
+#include "PointPairKernel.h"
+
+#include <string>
+#include <vector>
+
+namespace cga
+{
+namespace kernel
+{
+MapBlock activeMapBlock();
+std::vector<std::string> availableInstructionSets();
+std::string activeInstructionSet();
+bool useInstructionSet(const std::string& name);
+} // namespace kernel
+} // namespace cga
