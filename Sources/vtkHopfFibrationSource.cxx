@@ -1,9 +1,11 @@
 #include "vtkHopfFibrationSource.h"
 
 #include "vtkBoostedGridBuilder.h"
+#include "vtkBoostedSphereClip.h"
 #include "vtkBoostedSurfacesAbort.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
@@ -23,6 +25,10 @@ namespace
 {
 constexpr double kHalfPi = 1.5707963267948966;
 constexpr double kTwoPi = 6.283185307179586;
+// The grid keeps samples out to this multiple of the clip radius; the cells reaching beyond the
+// clip sphere are then cut exactly on it. Cells with a sample farther out (near the north pole
+// fibers run off towards infinity) are left out before the cut.
+constexpr double kSampleRadiusFactor = 4.0;
 
 bool finite2(const double v[2])
 {
@@ -299,7 +305,8 @@ int vtkHopfFibrationSource::RequestData(
   // ---- the fibers ----
   const int columns = this->FiberResolution + 1; // the last column repeats the first (seam)
   vtkBoostedGridBuilder grid(rows, columns, true);
-  grid.SetClipSphere(this->CircleCenter, this->ClipRadius * this->CircleRadius);
+  const double clipRadius = this->ClipRadius * this->CircleRadius;
+  grid.SetClipSphere(this->CircleCenter, kSampleRadiusFactor * clipRadius);
   if (mesh && base.rowsPerStrip > 0)
   {
     grid.SetRowsPerBlock(base.rowsPerStrip);
@@ -354,15 +361,17 @@ int vtkHopfFibrationSource::RequestData(
   grid.AddRowParameter("theta", base.theta);
   grid.AddRowParameter("phi", base.phi);
   grid.AddRowIntegerParameter("FiberId", fiberIds);
+  vtkNew<vtkPolyData> sampled;
   if (mesh)
   {
     grid.AddRowIntegerParameter("StripId", base.stripId);
-    grid.BuildSurface(output, firstRow, lastRow, this->OutputPointsPrecision);
+    grid.BuildSurface(sampled, firstRow, lastRow, this->OutputPointsPrecision);
   }
   else
   {
-    grid.BuildCurves(output, firstRow, lastRow, this->OutputPointsPrecision);
+    grid.BuildCurves(sampled, firstRow, lastRow, this->OutputPointsPrecision);
   }
+  vtkBoostedSphereClip::Clip(sampled, this->CircleCenter, clipRadius, output);
   return 1;
 }
 

@@ -1,0 +1,193 @@
+#include "vtkBoostedSphereClip.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include "cga/SegmentSphere.h"
+
+#include <cmath>
+#include <map>
+#include <utility>
+#include <vector>
+
+void vtkBoostedSphereClip::Clip(
+  vtkPolyData* input, const double center[3], double radius, vtkPolyData* output)
+{
+  const vtkIdType count = input->GetNumberOfPoints();
+  vtkPoints* inPoints = input->GetPoints();
+  vtkNew<vtkPoints> points;
+  points->SetDataType(inPoints ? inPoints->GetDataType() : VTK_DOUBLE);
+  vtkPointData* inPD = input->GetPointData();
+  vtkPointData* outPD = output->GetPointData();
+  outPD->InterpolateAllocate(inPD, count);
+
+  const cga::Vec3 c{ center[0], center[1], center[2] };
+  auto point = [inPoints](vtkIdType id) {
+    double p[3];
+    inPoints->GetPoint(id, p);
+    return cga::Vec3{ p[0], p[1], p[2] };
+  };
+  std::vector<char> inside(count, 0);
+  std::vector<vtkIdType> kept(count, -1);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    const cga::Vec3 p = point(i);
+    inside[i] = cga::isFinite(p) && cga::norm2(p - c) <= radius * radius;
+    if (inside[i])
+    {
+      kept[i] = points->InsertNextPoint(p.x, p.y, p.z);
+      outPD->CopyData(inPD, i, kept[i]);
+    }
+  }
+
+  // The crossing on the edge from an inside to an outside point, made once per edge.
+  std::map<std::pair<vtkIdType, vtkIdType>, vtkIdType> crossings;
+  vtkDataArray* normals = outPD->GetNormals();
+  auto crossing = [&](vtkIdType in, vtkIdType out) -> vtkIdType {
+    const auto found = crossings.find({ in, out });
+    if (found != crossings.end())
+    {
+      return found->second;
+    }
+    const cga::Vec3 a = point(in), b = point(out);
+    vtkIdType id = kept[in];
+    if (cga::isFinite(b))
+    {
+      const double s = cga::segmentSphereExit(a, b, c, radius);
+      if (s > 0.0)
+      {
+        const cga::Vec3 p = cga::segmentSphereExitPoint(a, b, c, radius);
+        id = points->InsertNextPoint(p.x, p.y, p.z);
+        outPD->InterpolateEdge(inPD, id, in, out, s);
+        if (normals && normals->GetNumberOfComponents() == 3)
+        {
+          double n[3];
+          normals->GetTuple(id, n);
+          if (vtkMath::Normalize(n) > 0.0)
+          {
+            normals->SetTuple(id, n);
+          }
+        }
+      }
+    }
+    crossings.emplace(std::make_pair(in, out), id);
+    return id;
+  };
+  // The edge a -> b: the crossing when exactly one end is inside, otherwise -1.
+  auto edgeCrossing = [&](vtkIdType a, vtkIdType b) -> vtkIdType {
+    if (inside[a] == inside[b])
+    {
+      return -1;
+    }
+    return inside[a] ? crossing(a, b) : crossing(b, a);
+  };
+  auto pushDistinct = [](std::vector<vtkIdType>& ids, vtkIdType id) {
+    if (ids.empty() || ids.back() != id)
+    {
+      ids.push_back(id);
+    }
+  };
+
+  vtkNew<vtkCellArray> lines;
+  std::vector<vtkIdType> run, walk;
+  vtkIdType npts;
+  const vtkIdType* ids;
+  vtkCellArray* inLines = input->GetLines();
+  for (inLines->InitTraversal(); inLines->GetNextCell(npts, ids);)
+  {
+    // A closed polyline partly outside is walked from an outside point, so that its inside
+    // arcs are not split at the seam.
+    walk.assign(ids, ids + npts);
+    const bool closed = npts > 2 && ids[0] == ids[npts - 1];
+    if (closed)
+    {
+      vtkIdType start = -1;
+      for (vtkIdType k = 0; k + 1 < npts && start < 0; ++k)
+      {
+        start = inside[ids[k]] ? -1 : k;
+      }
+      if (start >= 0)
+      {
+        walk.clear();
+        for (vtkIdType k = 0; k < npts; ++k)
+        {
+          walk.push_back(ids[(start + k) % (npts - 1)]);
+        }
+      }
+    }
+    run.clear();
+    auto flush = [&]() {
+      if (run.size() >= 2)
+      {
+        lines->InsertNextCell(static_cast<vtkIdType>(run.size()), run.data());
+      }
+      run.clear();
+    };
+    for (size_t k = 0; k < walk.size(); ++k)
+    {
+      if (k > 0)
+      {
+        const vtkIdType x = edgeCrossing(walk[k - 1], walk[k]);
+        if (x >= 0)
+        {
+          pushDistinct(run, x);
+          if (inside[walk[k - 1]])
+          {
+            flush(); // leaving the ball
+          }
+        }
+      }
+      if (inside[walk[k]])
+      {
+        pushDistinct(run, kept[walk[k]]);
+      }
+    }
+    flush();
+  }
+
+  vtkNew<vtkCellArray> polys;
+  std::vector<vtkIdType> polygon;
+  vtkCellArray* inPolys = input->GetPolys();
+  for (inPolys->InitTraversal(); inPolys->GetNextCell(npts, ids);)
+  {
+    polygon.clear();
+    for (vtkIdType k = 0; k < npts; ++k)
+    {
+      const vtkIdType a = ids[k], b = ids[(k + 1) % npts];
+      if (inside[a])
+      {
+        pushDistinct(polygon, kept[a]);
+      }
+      const vtkIdType x = edgeCrossing(a, b);
+      if (x >= 0)
+      {
+        pushDistinct(polygon, x);
+      }
+    }
+    while (polygon.size() > 1 && polygon.front() == polygon.back())
+    {
+      polygon.pop_back();
+    }
+    if (polygon.size() >= 3)
+    {
+      polys->InsertNextCell(static_cast<vtkIdType>(polygon.size()), polygon.data());
+    }
+  }
+
+  points->Squeeze();
+  outPD->Squeeze();
+  output->SetPoints(points);
+  if (lines->GetNumberOfCells() > 0 || inLines->GetNumberOfCells() > 0)
+  {
+    output->SetLines(lines);
+  }
+  if (polys->GetNumberOfCells() > 0 || inPolys->GetNumberOfCells() > 0)
+  {
+    output->SetPolys(polys);
+  }
+}

@@ -1,0 +1,25 @@
+/**
+ * @class   vtkBoostedSphereClip
+ * @brief   cuts sampled curves and meshes exactly at a sphere
+ *
+ * Keeps the points of a vtkPolyData that lie inside a ball (distance to the center <= radius) and
+ * cuts every polyline segment and polygon edge that crosses the sphere at the crossing itself
+ * (cga::segmentSphereExitPoint), so the cut boundary lies on the sphere to round-off instead of
+ * following the sampling grid. New points get the point data interpolated along their edge
+ * (normals renormalized); crossings are shared by the cells meeting at an edge. Polygons are cut
+ * vertex by vertex (Sutherland-Hodgman); a segment whose both ends lie outside is dropped even if
+ * it passes through the ball (the samples are assumed fine enough). Only lines and polygons are
+ * handled (what vtkBoostedGridBuilder writes); points that are not finite count as outside.
+ */
+#ifndef vtkBoostedSphereClip_h
+#define vtkBoostedSphereClip_h
+
+class vtkPolyData;
+
+class vtkBoostedSphereClip
+{
+public:
+  static void Clip(vtkPolyData* input, const double center[3], double radius, vtkPolyData* output);
+};
+
+#endif
