@@ -25,10 +25,6 @@ namespace
 {
 constexpr double kHalfPi = 1.5707963267948966;
 constexpr double kTwoPi = 6.283185307179586;
-// The grid keeps samples out to this multiple of the clip radius; the cells reaching beyond the
-// clip sphere are then cut exactly on it. Cells with a sample farther out (near the north pole
-// fibers run off towards infinity) are left out before the cut.
-constexpr double kSampleRadiusFactor = 4.0;
 
 bool finite2(const double v[2])
 {
@@ -305,8 +301,10 @@ int vtkHopfFibrationSource::RequestData(
   // ---- the fibers ----
   const int columns = this->FiberResolution + 1; // the last column repeats the first (seam)
   vtkBoostedGridBuilder grid(rows, columns, true);
+  // No clip sphere on the grid: it keeps every finite sample (however far) so that the cells
+  // reaching beyond the clip sphere can be cut exactly on it below; only the samples at infinity
+  // (NaN from the kernel) take their cells with them.
   const double clipRadius = this->ClipRadius * this->CircleRadius;
-  grid.SetClipSphere(this->CircleCenter, kSampleRadiusFactor * clipRadius);
   if (mesh && base.rowsPerStrip > 0)
   {
     grid.SetRowsPerBlock(base.rowsPerStrip);

@@ -22,6 +22,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <string>
 #include <vector>
 
 namespace
@@ -422,5 +423,106 @@ TEST(HopfFibrationSource, SinglePrecisionPoints)
   source->SetOutputPointsPrecision(vtkAlgorithm::SINGLE_PRECISION);
   source->Update();
   EXPECT_EQ(source->GetOutput()->GetPoints()->GetDataType(), VTK_FLOAT);
+}
+// Distance from the clip sphere, relative to its radius (negative inside).
+double relativeSphereExcess(const double p[3], const double center[3], double radius)
+{
+  return std::sqrt(vtkMath::Distance2BetweenPoints(p, center)) / radius - 1.0;
+}
+
+TEST(HopfFibrationSource, ClippedOutputEndsExactlyOnTheClipSphere)
+{
+  const double center[3] = { 0.3, -0.2, 0.1 };
+  const double circleRadius = 1.3, clipRadius = 2.5;
+  const double sphereRadius = clipRadius * circleRadius;
+  const double phiRange[2] = { -1.2, kPi / 2 };
+  for (int mode : { vtkHopfFibrationSource::PAPER, vtkHopfFibrationSource::CLASSICAL })
+  {
+    for (int type : { vtkHopfFibrationSource::FIBERS, vtkHopfFibrationSource::TWISTOR_MESH })
+    {
+      vtkNew<vtkHopfFibrationSource> source;
+      source->SetMode(mode);
+      source->SetOutputType(type);
+      source->SetCircleCenter(center[0], center[1], center[2]);
+      source->SetCircleNormal(0.2, -0.4, 1.0);
+      source->SetCircleRadius(circleRadius);
+      source->SetClipRadius(clipRadius);
+      source->SetThetaResolution(6);
+      source->SetPhiRange(phiRange[0], phiRange[1]);
+      source->SetPhiResolution(24);
+      source->SetFiberResolution(48);
+      source->Update();
+      vtkPolyData* output = source->GetOutput();
+      ASSERT_GT(output->GetNumberOfCells(), 0);
+      const std::string what = std::string(mode == vtkHopfFibrationSource::PAPER ? "paper" : "classical") +
+        (type == vtkHopfFibrationSource::FIBERS ? " fibers" : " mesh");
+
+      // Nothing outside the sphere.
+      for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+      {
+        double p[3];
+        output->GetPoint(i, p);
+        EXPECT_LE(relativeSphereExcess(p, center, sphereRadius), 1e-9) << what;
+      }
+
+      // The cut: the ends of open fibers, and the mesh edges used by one quad that are not the
+      // strip's own border (its first and last fiber, the texture seam u = 0 or 1).
+      std::vector<vtkIdType> boundary;
+      if (type == vtkHopfFibrationSource::FIBERS)
+      {
+        vtkCellArray* lines = output->GetLines();
+        vtkIdType npts;
+        const vtkIdType* ids;
+        for (lines->InitTraversal(); lines->GetNextCell(npts, ids);)
+        {
+          if (ids[0] != ids[npts - 1])
+          {
+            boundary.push_back(ids[0]);
+            boundary.push_back(ids[npts - 1]);
+          }
+        }
+      }
+      else
+      {
+        vtkDataArray* phi = output->GetPointData()->GetArray("phi");
+        vtkDataArray* tcoords = output->GetPointData()->GetTCoords();
+        auto onStripBorder = [&](vtkIdType i) {
+          const double u = tcoords->GetComponent(i, 0);
+          return std::fabs(phi->GetTuple1(i) - phiRange[0]) < 1e-9 ||
+            std::fabs(phi->GetTuple1(i) - phiRange[1]) < 1e-9 || u < 1e-6 || u > 1.0 - 1e-6;
+        };
+        std::map<std::pair<vtkIdType, vtkIdType>, int> edgeUses;
+        vtkCellArray* polys = output->GetPolys();
+        vtkIdType npts;
+        const vtkIdType* ids;
+        for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
+        {
+          for (vtkIdType k = 0; k < npts; ++k)
+          {
+            const vtkIdType a = ids[k], b = ids[(k + 1) % npts];
+            ++edgeUses[{ std::min(a, b), std::max(a, b) }];
+          }
+        }
+        for (const auto& edge : edgeUses)
+        {
+          const vtkIdType a = edge.first.first, b = edge.first.second;
+          if (edge.second == 1 && !(onStripBorder(a) && onStripBorder(b)))
+          {
+            boundary.push_back(a);
+            boundary.push_back(b);
+          }
+        }
+      }
+      EXPECT_GT(boundary.size(), 20u) << what << ": the sphere cuts this output";
+      for (vtkIdType i : boundary)
+      {
+        double p[3];
+        output->GetPoint(i, p);
+        EXPECT_LE(std::fabs(relativeSphereExcess(p, center, sphereRadius)), 1e-9)
+          << what << ": boundary point " << i << " at (" << p[0] << ", " << p[1] << ", " << p[2]
+          << ")";
+      }
+    }
+  }
 }
 } // namespace
