@@ -25,7 +25,7 @@
  *   so the points need not lie exactly on a sphere. The whole input is used on every rank.
  *
  * Output (OutputType):
- * - FIBERS: one closed polyline of FiberResolution points per fiber (split where clipped), point
+ * - FIBERS: one closed polyline of FiberResolution points per fiber (cut where clipped), point
  *   arrays "theta", "phi", "FiberId" (the index of the base point).
  * - TWISTOR_MESH: the surface swept by the fibers (Fig 4d, Fig 5): with GRID and MeshSweep
  *   MERIDIANS one strip per theta sample through its phi samples; with LATITUDES one strip per phi
@@ -33,9 +33,12 @@
  *   BASE_POINTS or INPUT_POINTS one strip through the points in their order. Quads with "Normals",
  *   "TextureCoordinates", "theta", "phi", "FiberId" and "StripId".
  *
- * Clipping: fibers near phi = +pi/2 are huge and the north-pole fiber is a line; samples farther
- * than ClipRadius * CircleRadius from CircleCenter (ClipRadius is relative to the circle radius)
- * are dropped with the cells that use them.
+ * Clipping: fibers near phi = +pi/2 are huge and the north-pole fiber is a line. The output is cut
+ * at the sphere of radius ClipRadius * CircleRadius about CircleCenter (ClipRadius is relative to
+ * the circle radius): every finite sample is computed, and each fiber segment or quad edge crossing
+ * the sphere is cut exactly at the crossing (vtkBoostedSphereClip), so the cut lies on the sphere;
+ * cut quads become polygons of 3 to 6 points. Only samples at infinity drop their cells before the
+ * cut.
  *
  * Pieces: fibers (FIBERS) or rows of quads (TWISTOR_MESH) are divided among the requested pieces.
  *
@@ -143,8 +146,8 @@ public:
   ///@}
 
   ///@{
-  /// Samples farther than ClipRadius * CircleRadius from CircleCenter are cut away (relative to
-  /// the circle radius). Default 10.
+  /// The output is cut exactly at the sphere of radius ClipRadius * CircleRadius about
+  /// CircleCenter (relative to the circle radius). Default 10.
   vtkSetClampMacro(ClipRadius, double, 1e-6, 1e6);
   vtkGetMacro(ClipRadius, double);
   ///@}
