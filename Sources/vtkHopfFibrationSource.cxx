@@ -112,6 +112,12 @@ int vtkHopfFibrationSource::RequestUpdateExtent(
   return 1;
 }
 
+long long vtkHopfFibrationSource::GridRows() const
+{
+  const bool latitudes = this->OutputType == TWISTOR_MESH && this->MeshSweep == LATITUDES;
+  return static_cast<long long>(this->ThetaResolution + (latitudes ? 1 : 0)) * this->PhiResolution;
+}
+
 int vtkHopfFibrationSource::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -130,6 +136,10 @@ int vtkHopfFibrationSource::RequestData(
   if (problem.empty() && this->FiberResolution < 3)
   {
     problem = "FiberResolution must be at least 3";
+  }
+  if (problem.empty() && std::isnan(this->ClipRadius)) // the clamp macro lets NaN through
+  {
+    problem = "ClipRadius must be a number";
   }
   const bool mesh = this->OutputType == TWISTOR_MESH;
 
@@ -157,6 +167,11 @@ int vtkHopfFibrationSource::RequestData(
     else if (this->PhiRange[0] < -kHalfPi - 1e-12 || this->PhiRange[1] > kHalfPi + 1e-12)
     {
       problem = "PhiRange must lie within [-pi/2, pi/2]";
+    }
+    else if (!vtkBoostedGridBuilder::SizeProblem(this->GridRows(), this->FiberResolution + 1LL).empty())
+    {
+      // Checked before sampling: the base points alone could exhaust memory.
+      problem = vtkBoostedGridBuilder::SizeProblem(this->GridRows(), this->FiberResolution + 1LL);
     }
     else
     {
@@ -254,6 +269,11 @@ int vtkHopfFibrationSource::RequestData(
     {
       base.phi[r] = std::max(-kHalfPi, std::min(kHalfPi, base.phi[r]));
     }
+  }
+  if (problem.empty())
+  {
+    problem = vtkBoostedGridBuilder::SizeProblem(
+      static_cast<long long>(base.theta.size()), this->FiberResolution + 1LL);
   }
   if (!problem.empty())
   {

@@ -175,6 +175,8 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// Rows (fibers) of the Grid sampling, computed without overflow for the size check.
+  long long GridRows() const;
 
   int Mode = PAPER;
   double CircleCenter[3] = { 0.0, 0.0, 0.0 };

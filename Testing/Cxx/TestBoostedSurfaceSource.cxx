@@ -311,6 +311,12 @@ TEST(BoostedSurfaceSource, BadParametersGiveAnErrorAndAnEmptyOutput)
       s->SetBoostAtCircleCenter(false);
       s->SetBoostLocation(std::numeric_limits<double>::infinity(), 0, 0);
     },
+    [nan](vtkBoostedSurfaceSource* s) { s->SetClipRadius(nan); },
+    // 1e10 samples: refused before anything is allocated
+    [](vtkBoostedSurfaceSource* s) {
+      s->SetLambdaResolution(100000);
+      s->SetThetaResolution(100000);
+    },
   };
   ExpectOneErrorEach(breakers, EmptyOutput::NoPointsNoCells);
 }

@@ -270,6 +270,12 @@ TEST(CurvaturePatchSource, BadParametersGiveAnErrorAndAnEmptyOutput)
       s->SetMethodToBilinear();
       s->SetCorner3Direction(nan, 0, 1);
     },
+    [nan](vtkCurvaturePatchSource* s) { s->SetClipRadius(nan); },
+    // 1e10 samples: refused before anything is allocated
+    [](vtkCurvaturePatchSource* s) {
+      s->SetUResolution(100000);
+      s->SetVResolution(100000);
+    },
   };
   ExpectOneErrorEach(breakers, EmptyOutput::NoPoints);
 }

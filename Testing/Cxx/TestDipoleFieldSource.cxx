@@ -293,6 +293,7 @@ TEST(DipoleFieldSource, BadInputGivesAnErrorAndAnEmptyOutput)
     NaNGenerator,
     NaNEpsilon,
     NaNTranslation,
+    HugeDimensions,
     Cases
   };
   for (int which = 0; which < Cases; ++which)
@@ -309,6 +310,8 @@ TEST(DipoleFieldSource, BadInputGivesAnErrorAndAnEmptyOutput)
       case NaNGenerator: source->AddGenerator(1, 1, 0, nan, 0, 0, 1); break;
       case NaNEpsilon: source->SetEpsilon(nan); break;
       case NaNTranslation: source->SetGeneratorsTranslation(0, 0, nan); break;
+      // 8e27 points (their count overflows vtkIdType): refused before anything is allocated
+      case HugeDimensions: source->SetDimensions(2000000000, 2000000000, 2000000000); break;
     }
     source->Update();
     EXPECT_EQ(counter.errors, 1) << "case " << which;

@@ -412,6 +412,17 @@ TEST(HopfFibrationSource, BadInputGivesAnErrorAndAnEmptyOutput)
       s->SetSamplingModeToInputPoints();
       s->SetInputData(nanPoints);
     },
+    [nan](vtkHopfFibrationSource* s) { s->SetClipRadius(nan); },
+    // 1e10 fibers, and 1e6 fibers of 1e6 points: refused before anything is allocated
+    [](vtkHopfFibrationSource* s) {
+      s->SetThetaResolution(100000);
+      s->SetPhiResolution(100000);
+    },
+    [](vtkHopfFibrationSource* s) {
+      s->SetThetaResolution(1000);
+      s->SetPhiResolution(1000);
+      s->SetFiberResolution(1000000);
+    },
   };
   ExpectOneErrorEach(breakers, EmptyOutput::NoPointsNoCells);
 }
