@@ -4,6 +4,7 @@
 #include "vtkCurvaturePatchSource.h"
 
 #include "BadParameterCases.h"
+#include "ProgressLog.h"
 #include "vtkDataArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -278,4 +279,28 @@ TEST(CurvaturePatchSource, BadParametersGiveAnErrorAndAnEmptyOutput)
     },
   };
   ExpectOneErrorEach(breakers, EmptyOutput::NoPoints);
+}
+
+TEST(CurvaturePatchSource, ReportsProgressAndAnAbortedUpdateIsEmpty)
+{
+  for (bool abort : { false, true })
+  {
+    vtkNew<vtkCurvaturePatchSource> source;
+    source->SetVResolution(100); // 101 rows: 7 blocks of 16
+    ProgressLog log;
+    log.abortAfterFirstStep = abort; // after the first block: a part of the patch is computed
+    log.Observe(source);
+    source->Update();
+    if (!abort)
+    {
+      EXPECT_GE(log.Steps().size(), 7u);
+      EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 33 * 101);
+    }
+    else
+    {
+      EXPECT_LT(log.Steps().size(), 7u);
+      EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
+      EXPECT_EQ(source->GetOutput()->GetNumberOfCells(), 0);
+    }
+  }
 }

@@ -3,6 +3,7 @@
 #include "vtkDipoleFieldSource.h"
 
 #include "EventCounter.h"
+#include "ProgressLog.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
@@ -338,24 +339,6 @@ TEST(DipoleFieldSource, PointSentToInfinityGivesAWarningAndZero)
   ASSERT_EQ(a->GetNumberOfTuples(), 3);
   EXPECT_EQ(a->GetComponent(2, 0), 0.0);
   EXPECT_NE(a->GetComponent(1, 0), 0.0); // its neighbour moves
-}
-
-namespace
-{
-struct ProgressLog
-{
-  std::vector<double> values;
-  bool abortOnFirst = false;
-  static void Callback(vtkObject* caller, unsigned long, void* clientData, void* callData)
-  {
-    auto* log = static_cast<ProgressLog*>(clientData);
-    log->values.push_back(*static_cast<double*>(callData));
-    if (log->abortOnFirst)
-    {
-      static_cast<vtkAlgorithm*>(caller)->AbortExecuteOn();
-    }
-  }
-};
 }
 
 TEST(DipoleFieldSource, ReportsProgressAndStopsWithAnEmptyOutputWhenAborted)

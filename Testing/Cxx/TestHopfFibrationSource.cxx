@@ -4,6 +4,7 @@
 #include "vtkHopfFibrationSource.h"
 
 #include "BadParameterCases.h"
+#include "ProgressLog.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkMath.h"
@@ -435,3 +436,28 @@ TEST(HopfFibrationSource, SinglePrecisionPoints)
   EXPECT_EQ(source->GetOutput()->GetPoints()->GetDataType(), VTK_FLOAT);
 }
 } // namespace
+
+TEST(HopfFibrationSource, ReportsProgressAndAnAbortedUpdateIsEmpty)
+{
+  for (bool abort : { false, true })
+  {
+    vtkNew<vtkHopfFibrationSource> source;
+    source->SetThetaResolution(10);
+    source->SetPhiResolution(20); // 200 fibers: 4 chunks of 64
+    ProgressLog log;
+    log.abortAfterFirstStep = abort; // after the first chunk: some fibers are computed
+    log.Observe(source);
+    source->Update();
+    if (!abort)
+    {
+      EXPECT_GE(log.Steps().size(), 4u);
+      EXPECT_GT(source->GetOutput()->GetNumberOfLines(), 190);
+    }
+    else
+    {
+      EXPECT_LT(log.Steps().size(), 4u);
+      EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
+      EXPECT_EQ(source->GetOutput()->GetNumberOfCells(), 0);
+    }
+  }
+}

@@ -4,6 +4,7 @@
 #include "vtkPointPairDeformationFilter.h"
 
 #include "EventCounter.h"
+#include "ProgressLog.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -746,3 +747,38 @@ TEST(PointPairDeformationFilter, NonFiniteStrengthOrNaNParametersAreErrors)
   }
 }
 } // namespace
+
+TEST(PointPairDeformationFilter, ReportsProgressAndAnAbortedUpdateIsEmpty)
+{
+  // 200000 points: 4 steps of 65536 points.
+  vtkNew<vtkPoints> points;
+  points->SetNumberOfPoints(200000);
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    points->SetPoint(i, 1e-5 * i, 0.5, 0.0);
+  }
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(points);
+  for (bool abort : { false, true })
+  {
+    vtkNew<vtkPointPairDeformationFilter> filter;
+    filter->SetInputData(mesh);
+    filter->AddGenerator(0, 0, 0, 0, 0, 1, 0.5);
+    ProgressLog log;
+    log.abortAfterFirstStep = abort; // after the first step: a part of the mesh is moved
+    log.Observe(filter);
+    filter->Update();
+    vtkPointSet* output = vtkPointSet::SafeDownCast(filter->GetOutputDataObject(0));
+    if (!abort)
+    {
+      EXPECT_GE(log.Steps().size(), 4u);
+      EXPECT_EQ(output->GetNumberOfPoints(), 200000);
+      EXPECT_NE(output->GetPointData()->GetArray("Displacement"), nullptr);
+    }
+    else
+    {
+      EXPECT_LT(log.Steps().size(), 4u);
+      EXPECT_EQ(output->GetNumberOfPoints(), 0);
+    }
+  }
+}
