@@ -23,6 +23,9 @@ namespace
 {
 constexpr double kHalfPi = 1.5707963267948966;
 constexpr double kTwoPi = 6.283185307179586;
+// The longest list SetBasePoint and SetNumberOfBasePoints grow (a wrong index must not allocate
+// gigabytes); longer samplings come through the Sphere Points input.
+constexpr int kMaximumBasePoints = 1000000;
 
 bool finite2(const double v[2])
 {
@@ -68,6 +71,12 @@ void vtkHopfFibrationSource::RemoveAllBasePoints()
 
 void vtkHopfFibrationSource::SetNumberOfBasePoints(int count)
 {
+  if (count > kMaximumBasePoints)
+  {
+    vtkErrorMacro(<< "SetNumberOfBasePoints: " << count << " is more than the "
+                  << kMaximumBasePoints << " base points a list may hold");
+    return;
+  }
   count = std::max(0, count);
   if (static_cast<size_t>(2 * count) != this->BasePoints.size())
   {
@@ -78,8 +87,11 @@ void vtkHopfFibrationSource::SetNumberOfBasePoints(int count)
 
 void vtkHopfFibrationSource::SetBasePoint(int index, double theta, double phi)
 {
-  if (index < 0)
+  if (index < 0 || index >= kMaximumBasePoints)
   {
+    // (2 index + 2 would also overflow an int)
+    vtkErrorMacro(<< "SetBasePoint: index " << index << " is outside [0, " << kMaximumBasePoints
+                  << ")");
     return;
   }
   if (static_cast<size_t>(2 * index + 2) > this->BasePoints.size())

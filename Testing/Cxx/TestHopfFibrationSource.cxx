@@ -461,3 +461,14 @@ TEST(HopfFibrationSource, ReportsProgressAndAnAbortedUpdateIsEmpty)
     }
   }
 }
+
+TEST(HopfFibrationSource, HugeBasePointIndexOrCountIsAnErrorAndChangesNothing)
+{
+  vtkNew<vtkHopfFibrationSource> source;
+  EventCounter events(source);
+  source->AddBasePoint(0.5, 0.25);
+  source->SetBasePoint(2000000000, 0.0, 0.0); // 2 index + 2 overflows an int
+  source->SetNumberOfBasePoints(2000000000);  // 32 GB of pairs
+  EXPECT_EQ(events.errors, 2);
+  EXPECT_EQ(source->GetNumberOfBasePoints(), 1);
+}

@@ -782,3 +782,13 @@ TEST(PointPairDeformationFilter, ReportsProgressAndAnAbortedUpdateIsEmpty)
     }
   }
 }
+
+TEST(PointPairDeformationFilter, HugeGeneratorCountIsAnErrorAndChangesNothing)
+{
+  vtkNew<vtkPointPairDeformationFilter> filter;
+  EventCounter events(filter);
+  filter->AddGenerator(0, 0, 0, 0, 0, 1, 0.5);
+  filter->SetNumberOfGenerators(2000000000); // 112 GB of generators
+  EXPECT_EQ(events.errors, 1);
+  EXPECT_EQ(filter->GetNumberOfGenerators(), 1);
+}
