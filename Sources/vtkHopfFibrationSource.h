@@ -41,7 +41,9 @@
  *
  * Invalid parameters (zero normal, radius <= 0, NaN or infinite values, a resolution of 0, a
  * FiberResolution below 3, inverted ranges, phi outside [-pi/2, pi/2], INPUT_POINTS without an
- * input or with a NaN input point) produce an error and an empty output.
+ * input or with a NaN input point, a NaN ClipRadius, more than
+ * vtkBoostedGridBuilder::MaximumSamples fibers x (FiberResolution + 1) points) produce an error
+ * and an empty output.
  */
 #ifndef vtkHopfFibrationSource_h
 #define vtkHopfFibrationSource_h
