@@ -297,6 +297,13 @@ int vtkHopfFibrationSource::RequestData(
   {
     return 1; // no base points: an empty output
   }
+  if (mesh && (base.rowsPerStrip > 0 ? base.rowsPerStrip : rows) < 2)
+  {
+    // A strip of one fiber has no quads: say so rather than hand on points without cells.
+    vtkWarningMacro(<< "TwistorMesh needs at least two base points per strip (PhiResolution >= 2 "
+                       "with Meridians, or two base or input points): the output is empty");
+    return 1;
+  }
 
   // ---- this piece's rows ----
   const int piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());

@@ -472,3 +472,28 @@ TEST(HopfFibrationSource, HugeBasePointIndexOrCountIsAnErrorAndChangesNothing)
   EXPECT_EQ(events.errors, 2);
   EXPECT_EQ(source->GetNumberOfBasePoints(), 1);
 }
+
+TEST(HopfFibrationSource, TwistorMeshOfOneFiberPerStripWarnsAndIsEmpty)
+{
+  // Meridian strips of one latitude, and one base point: no quads can be made (the points came
+  // out without cells before).
+  const std::vector<std::function<void(vtkHopfFibrationSource*)>> cases = {
+    [](vtkHopfFibrationSource* s) { s->SetPhiResolution(1); },
+    [](vtkHopfFibrationSource* s) {
+      s->SetSamplingModeToBasePoints();
+      s->AddBasePoint(0.5, 0.25);
+    },
+  };
+  for (std::size_t k = 0; k < cases.size(); ++k)
+  {
+    vtkNew<vtkHopfFibrationSource> source;
+    source->SetOutputTypeToTwistorMesh();
+    cases[k](source);
+    EventCounter events(source);
+    source->Update();
+    EXPECT_EQ(events.errors, 0) << "case " << k;
+    EXPECT_EQ(events.warnings, 1) << "case " << k;
+    EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0) << "case " << k;
+    EXPECT_EQ(source->GetOutput()->GetNumberOfCells(), 0) << "case " << k;
+  }
+}
