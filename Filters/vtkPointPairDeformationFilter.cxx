@@ -32,6 +32,10 @@ namespace
 {
 constexpr int ValuesPerGenerator = 7;
 
+// The longest generator list SetNumberOfGenerators makes (a wrong count must not allocate
+// gigabytes); more generators come through the Generators input.
+constexpr int MaximumListGenerators = 1000000;
+
 // Points handed to vtkSMPTools per progress step: large enough that the scheduling cost vanishes,
 // small enough that progress and abort are seen often on big meshes.
 constexpr vtkIdType PointsPerStep = 1 << 16;
@@ -219,6 +223,13 @@ vtkPointPairDeformationFilter::~vtkPointPairDeformationFilter()
 
 void vtkPointPairDeformationFilter::SetNumberOfGenerators(int count)
 {
+  if (count > MaximumListGenerators)
+  {
+    vtkErrorMacro(<< "SetNumberOfGenerators: " << count << " is more than the "
+                  << MaximumListGenerators
+                  << " generators the list may hold (use the Generators input for more)");
+    return;
+  }
   const std::size_t size = static_cast<std::size_t>(std::max(0, count)) * ValuesPerGenerator;
   if (size != this->Generators.size())
   {

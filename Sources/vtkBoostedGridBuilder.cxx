@@ -336,3 +336,14 @@ bool vtkBoostedGridBuilder::PieceRows(
   lastRow = static_cast<int>(static_cast<long long>(piece + 1) * rows / pieces) - 1;
   return firstRow <= lastRow;
 }
+
+std::string vtkBoostedGridBuilder::SizeProblem(long long rows, long long columns)
+{
+  // Compared in double: rows x columns itself may overflow.
+  if (static_cast<double>(rows) * static_cast<double>(columns) <= MaximumSamples)
+  {
+    return {};
+  }
+  return "the resolutions ask for " + std::to_string(rows) + " x " + std::to_string(columns) +
+    " samples, more than the " + std::to_string(MaximumSamples) + " a grid may hold";
+}

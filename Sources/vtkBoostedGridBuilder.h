@@ -57,6 +57,12 @@ public:
   /// (neighbouring bands share their boundary row of points), otherwise whole rows of points.
   /// Returns false when the piece is empty (more pieces than rows).
   static bool PieceRows(int rows, bool surface, int piece, int pieces, int& firstRow, int& lastRow);
+  /// The most samples (rows x columns) a grid may hold: beyond it the builder's arrays and the
+  /// output would need tens of gigabytes, and its int indices would overflow.
+  static constexpr long long MaximumSamples = 100000000;
+  /// An error message when rows x columns exceeds MaximumSamples (empty when it does not): the
+  /// sources check it before building, so huge resolutions are an error rather than a crash.
+  static std::string SizeProblem(long long rows, long long columns);
 
 private:
   struct Parameter

@@ -61,6 +61,15 @@ int vtkBoostedSurfaceSource::RequestData(
   {
     problem = "LambdaRange must be finite";
   }
+  if (problem.empty() && std::isnan(this->ClipRadius)) // the clamp macro lets NaN through
+  {
+    problem = "ClipRadius must be a number";
+  }
+  if (problem.empty())
+  {
+    problem = vtkBoostedGridBuilder::SizeProblem(
+      this->LambdaResolution + 1LL, this->ThetaResolution + 1LL);
+  }
   if (!problem.empty())
   {
     vtkErrorMacro(<< problem);

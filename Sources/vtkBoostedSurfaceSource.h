@@ -82,6 +82,7 @@ public:
 
   ///@{
   /// Number of intervals along lambda (rows of quads) and around the circle. Defaults 64 and 64.
+  /// More than vtkBoostedGridBuilder::MaximumSamples samples (both + 1, multiplied) is an error.
   vtkSetClampMacro(LambdaResolution, int, 1, 100000);
   vtkGetMacro(LambdaResolution, int);
   vtkSetClampMacro(ThetaResolution, int, 3, 100000);

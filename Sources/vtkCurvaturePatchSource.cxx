@@ -123,7 +123,16 @@ int vtkCurvaturePatchSource::RequestData(
   {
     patch.corners[i] = { toVec3(directions[i]), this->CornerWeights[i] };
   }
-  const std::string problem = patch.validate();
+  std::string problem = patch.validate();
+  if (problem.empty() && std::isnan(this->ClipRadius)) // the clamp macro lets NaN through
+  {
+    problem = "ClipRadius must be a number";
+  }
+  if (problem.empty())
+  {
+    problem = vtkBoostedGridBuilder::SizeProblem(
+      patch.sizeV > 0.0 ? this->VResolution + 1LL : 1LL, this->UResolution + 1LL);
+  }
   if (!problem.empty())
   {
     vtkErrorMacro(<< problem);

@@ -111,7 +111,8 @@ public:
   ///@}
 
   ///@{
-  /// Intervals along u and v (defaults 32, 32).
+  /// Intervals along u and v (defaults 32, 32). More than vtkBoostedGridBuilder::MaximumSamples
+  /// samples (UResolution + 1) x (VResolution + 1) is an error.
   vtkSetClampMacro(UResolution, int, 1, 100000);
   vtkGetMacro(UResolution, int);
   vtkSetClampMacro(VResolution, int, 1, 100000);

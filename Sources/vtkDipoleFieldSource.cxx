@@ -27,6 +27,10 @@ namespace
 {
 constexpr int ValuesPerGenerator = 7;
 
+// The most points one update computes (its five arrays take 88 bytes a point in double): a larger
+// request is an error instead of a failed allocation; a larger grid can be streamed in pieces.
+constexpr double MaximumPointsPerUpdate = 1e8;
+
 vtkSmartPointer<vtkDataArray> newArray(int precision, const char* name, int components, vtkIdType n)
 {
   vtkSmartPointer<vtkDataArray> array;
@@ -235,6 +239,16 @@ int vtkDipoleFieldSource::RequestData(
     {
       return 1; // an empty request
     }
+  }
+  // Counted in double: the product of three int dimensions may overflow vtkIdType.
+  const double requested = (extent[1] - extent[0] + 1.0) * (extent[3] - extent[2] + 1.0) *
+    (extent[5] - extent[4] + 1.0);
+  if (requested > MaximumPointsPerUpdate)
+  {
+    vtkErrorMacro(<< "the requested extent holds " << requested << " points, more than the "
+                  << MaximumPointsPerUpdate
+                  << " one update computes: lower Dimensions or request smaller pieces");
+    return 1; // the output stays empty
   }
   output->SetExtent(extent);
   output->SetOrigin(this->Origin);

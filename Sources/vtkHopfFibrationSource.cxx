@@ -25,6 +25,9 @@ namespace
 {
 constexpr double kHalfPi = 1.5707963267948966;
 constexpr double kTwoPi = 6.283185307179586;
+// The longest list SetBasePoint and SetNumberOfBasePoints grow (a wrong index must not allocate
+// gigabytes); longer samplings come through the Sphere Points input.
+constexpr int kMaximumBasePoints = 1000000;
 
 bool finite2(const double v[2])
 {
@@ -70,6 +73,12 @@ void vtkHopfFibrationSource::RemoveAllBasePoints()
 
 void vtkHopfFibrationSource::SetNumberOfBasePoints(int count)
 {
+  if (count > kMaximumBasePoints)
+  {
+    vtkErrorMacro(<< "SetNumberOfBasePoints: " << count << " is more than the "
+                  << kMaximumBasePoints << " base points a list may hold");
+    return;
+  }
   count = std::max(0, count);
   if (static_cast<size_t>(2 * count) != this->BasePoints.size())
   {
@@ -80,8 +89,11 @@ void vtkHopfFibrationSource::SetNumberOfBasePoints(int count)
 
 void vtkHopfFibrationSource::SetBasePoint(int index, double theta, double phi)
 {
-  if (index < 0)
+  if (index < 0 || index >= kMaximumBasePoints)
   {
+    // (2 index + 2 would also overflow an int)
+    vtkErrorMacro(<< "SetBasePoint: index " << index << " is outside [0, " << kMaximumBasePoints
+                  << ")");
     return;
   }
   if (static_cast<size_t>(2 * index + 2) > this->BasePoints.size())
@@ -114,6 +126,12 @@ int vtkHopfFibrationSource::RequestUpdateExtent(
   return 1;
 }
 
+long long vtkHopfFibrationSource::GridRows() const
+{
+  const bool latitudes = this->OutputType == TWISTOR_MESH && this->MeshSweep == LATITUDES;
+  return static_cast<long long>(this->ThetaResolution + (latitudes ? 1 : 0)) * this->PhiResolution;
+}
+
 int vtkHopfFibrationSource::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -132,6 +150,10 @@ int vtkHopfFibrationSource::RequestData(
   if (problem.empty() && this->FiberResolution < 3)
   {
     problem = "FiberResolution must be at least 3";
+  }
+  if (problem.empty() && std::isnan(this->ClipRadius)) // the clamp macro lets NaN through
+  {
+    problem = "ClipRadius must be a number";
   }
   const bool mesh = this->OutputType == TWISTOR_MESH;
 
@@ -159,6 +181,11 @@ int vtkHopfFibrationSource::RequestData(
     else if (this->PhiRange[0] < -kHalfPi - 1e-12 || this->PhiRange[1] > kHalfPi + 1e-12)
     {
       problem = "PhiRange must lie within [-pi/2, pi/2]";
+    }
+    else if (!vtkBoostedGridBuilder::SizeProblem(this->GridRows(), this->FiberResolution + 1LL).empty())
+    {
+      // Checked before sampling: the base points alone could exhaust memory.
+      problem = vtkBoostedGridBuilder::SizeProblem(this->GridRows(), this->FiberResolution + 1LL);
     }
     else
     {
@@ -257,6 +284,11 @@ int vtkHopfFibrationSource::RequestData(
       base.phi[r] = std::max(-kHalfPi, std::min(kHalfPi, base.phi[r]));
     }
   }
+  if (problem.empty())
+  {
+    problem = vtkBoostedGridBuilder::SizeProblem(
+      static_cast<long long>(base.theta.size()), this->FiberResolution + 1LL);
+  }
   if (!problem.empty())
   {
     vtkErrorMacro(<< problem);
@@ -266,6 +298,13 @@ int vtkHopfFibrationSource::RequestData(
   if (rows == 0)
   {
     return 1; // no base points: an empty output
+  }
+  if (mesh && (base.rowsPerStrip > 0 ? base.rowsPerStrip : rows) < 2)
+  {
+    // A strip of one fiber has no quads: say so rather than hand on points without cells.
+    vtkWarningMacro(<< "TwistorMesh needs at least two base points per strip (PhiResolution >= 2 "
+                       "with Meridians, or two base or input points): the output is empty");
+    return 1;
   }
 
   // ---- this piece's rows ----

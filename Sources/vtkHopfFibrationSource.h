@@ -44,7 +44,9 @@
  *
  * Invalid parameters (zero normal, radius <= 0, NaN or infinite values, a resolution of 0, a
  * FiberResolution below 3, inverted ranges, phi outside [-pi/2, pi/2], INPUT_POINTS without an
- * input or with a NaN input point) produce an error and an empty output.
+ * input or with a NaN input point, a NaN ClipRadius, more than
+ * vtkBoostedGridBuilder::MaximumSamples fibers x (FiberResolution + 1) points) produce an error
+ * and an empty output.
  */
 #ifndef vtkHopfFibrationSource_h
 #define vtkHopfFibrationSource_h
@@ -178,6 +180,8 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// Rows (fibers) of the Grid sampling, computed without overflow for the size check.
+  long long GridRows() const;
 
   int Mode = PAPER;
   double CircleCenter[3] = { 0.0, 0.0, 0.0 };

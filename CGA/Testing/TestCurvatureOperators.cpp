@@ -414,6 +414,55 @@ TEST(CurvatureOperators, BilinearPaperAgainstExact)
   EXPECT_GT(largest, 1e-4);
 }
 
+// Curvatures so small that 1/kappa^2 overflows, and control points so far that |p - x|^2 does,
+// weigh (next to) nothing: |W| <= |kappa|/eps since d^2 >= 0, and the patch stays the flat plane
+// instead of every sample becoming NaN (which dropped the whole patch).
+TEST(CurvatureOperators, TinyCurvaturesAndFarControlPointsLeaveThePatchFlat)
+{
+  const double epsilon = 0.5;
+  for (double kappa : { 1e-200, -1e-200, 1e-300, std::numeric_limits<double>::denorm_min() })
+  {
+    CurvatureControlPoint c;
+    c.kappaU = kappa;
+    c.kappaV = -kappa;
+    ASSERT_TRUE(c.normalize().empty());
+    for (const Vec3 p : { Vec3{ 0.3, -1.2, 0.0 }, Vec3{ 1.0, 1.0, 0.5 }, Vec3{ 0.0, 0.0, 0.0 } })
+    {
+      const double w = osculatingTerm(c, c.uDirection, kappa, p, epsilon);
+      EXPECT_TRUE(std::isfinite(w)) << kappa;
+      EXPECT_LE(std::fabs(w), std::fabs(kappa) / epsilon) << kappa;
+    }
+    for (CurvatureMethod method : { CurvatureMethod::OsculatingCircles, CurvatureMethod::ControlPoints })
+    {
+      CurvaturePatch patch;
+      patch.method = method;
+      patch.kappaU = kappa;
+      patch.kappaV = kappa;
+      patch.epsilon = epsilon;
+      patch.controlPoints = { c };
+      ASSERT_TRUE(patch.validate().empty());
+      for (double a = -2.0; a <= 2.0; a += 0.5)
+      {
+        EXPECT_TRUE(pointsNear(mapWith(patch, a, 0.25 * a), patch.frame.at(a, 0.25 * a), 1e-12))
+          << kappa;
+      }
+    }
+  }
+  CurvatureControlPoint far;
+  far.location = { 1e200, 0.0, 0.0 };
+  far.kappaU = 0.5;
+  far.kappaV = 0.5;
+  ASSERT_TRUE(far.normalize().empty());
+  CurvaturePatch patch;
+  patch.method = CurvatureMethod::ControlPoints;
+  patch.controlPoints = { far };
+  ASSERT_TRUE(patch.validate().empty());
+  for (double a = -2.0; a <= 2.0; a += 0.5)
+  {
+    EXPECT_TRUE(pointsNear(mapWith(patch, a, -0.5 * a), patch.frame.at(a, -0.5 * a), 1e-12));
+  }
+}
+
 TEST(CurvatureOperators, BadInputIsReported)
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();

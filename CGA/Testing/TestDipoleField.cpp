@@ -282,6 +282,30 @@ TEST(DipoleField, BatchSamplingEqualsPointwiseSampling)
   }
 }
 
+// Weights and directions near the largest doubles: the potential's terms w (v.r)/(|r|^2 + eps)
+// overflowed (inf, or inf - inf = NaN for opposite weights); it is finite, saturating at
+// +-DBL_MAX, and exact where the true value is representable.
+TEST(DipoleField, PotentialStaysFiniteForHugeWeights)
+{
+  const double largest = std::numeric_limits<double>::max();
+  const Vec3 p{ 1.0, 0.0, 0.0 };
+  // one generator: 1e300 * 1e10 * 1 / 1.1 exceeds DBL_MAX
+  const DipoleField one({ PointPairGenerator{ { 0, 0, 0 }, { 1e10, 0, 0 }, 1e300 } }, 1.0, 0.1);
+  EXPECT_EQ(one.potential(p, 1.0), largest);
+  // opposite weights at one location cancel exactly
+  const DipoleField opposite({ PointPairGenerator{ { 0, 0, 0 }, { 1, 0, 0 }, 1e308 },
+                               PointPairGenerator{ { 0, 0, 0 }, { 1, 0, 0 }, -1e308 } },
+    1.0, 0.1);
+  EXPECT_EQ(opposite.potential(p, 1.0), 0.0);
+  // two large weights whose sum is representable: 1e308 (1/1.1 - 0.5/1.1), to rounding
+  const DipoleField two({ PointPairGenerator{ { 0, 0, 0 }, { 1, 0, 0 }, 1e308 },
+                          PointPairGenerator{ { 2, 0, 0 }, { 0.5, 0, 0 }, 1e308 } },
+    1.0, 0.1);
+  const double expected = 1e308 * (1.0 / 1.1 - 0.5 / 1.1);
+  EXPECT_NEAR(two.potential(p, 1.0), expected, 1e-14 * expected);
+  EXPECT_NEAR(two.potential(p, 0.25), 0.25 * expected, 1e-14 * expected);
+}
+
 TEST(DipoleField, BadInputGivesFiniteDocumentedValues)
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -1,6 +1,8 @@
 #include "cga/DipoleField.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace cga
@@ -68,13 +70,30 @@ double DipoleField::potential(Vec3 p, double weightScale) const
   {
     return 0.0;
   }
+  // Weights relative to the largest, and r/(|r|^2 + eps), at most 1/(2 sqrt(eps)) long: huge
+  // weights (up to 1e308), directions or distances cannot overflow a term (w v.r did: inf, or
+  // inf - inf = NaN with opposite weights). The result saturates at +-DBL_MAX.
+  double largestWeight = 0.0;
+  for (const PointPairGenerator& g : this->Generators)
+  {
+    largestWeight = std::max(largestWeight, std::fabs(g.weight));
+  }
+  if (largestWeight == 0.0 || weightScale == 0.0)
+  {
+    return 0.0;
+  }
   double phi = 0.0;
   for (const PointPairGenerator& g : this->Generators)
   {
     const Vec3 r = p - g.location;
-    phi += g.weight * dot(g.direction, r) / (norm2(r) + this->Epsilon);
+    phi += (g.weight / largestWeight) * dot(g.direction, r / (norm2(r) + this->Epsilon));
   }
-  return weightScale * phi;
+  const double value = (weightScale * largestWeight) * phi;
+  if (std::isnan(value))
+  {
+    return 0.0; // opposite terms of directions near 1e308 overflowed: no usable value
+  }
+  return std::max(-std::numeric_limits<double>::max(), std::min(std::numeric_limits<double>::max(), value));
 }
 
 bool DipoleField::sample(Vec3 p, double weightScale, DipoleSample& out) const

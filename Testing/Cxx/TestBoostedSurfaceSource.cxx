@@ -2,6 +2,7 @@
 #include "vtkBoostedSurfaceSource.h"
 
 #include "BadParameterCases.h"
+#include "ProgressLog.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkMath.h"
@@ -311,6 +312,35 @@ TEST(BoostedSurfaceSource, BadParametersGiveAnErrorAndAnEmptyOutput)
       s->SetBoostAtCircleCenter(false);
       s->SetBoostLocation(std::numeric_limits<double>::infinity(), 0, 0);
     },
+    [nan](vtkBoostedSurfaceSource* s) { s->SetClipRadius(nan); },
+    // 1e10 samples: refused before anything is allocated
+    [](vtkBoostedSurfaceSource* s) {
+      s->SetLambdaResolution(100000);
+      s->SetThetaResolution(100000);
+    },
   };
   ExpectOneErrorEach(breakers, EmptyOutput::NoPointsNoCells);
+}
+
+TEST(BoostedSurfaceSource, ReportsProgressAndAnAbortedUpdateIsEmpty)
+{
+  for (bool abort : { false, true })
+  {
+    vtkNew<vtkBoostedSurfaceSource> source; // 65 rows, one progress step each
+    ProgressLog log;
+    log.abortAfterFirstStep = abort; // after the first row
+    log.Observe(source);
+    source->Update();
+    if (!abort)
+    {
+      EXPECT_GE(log.Steps().size(), 65u);
+      EXPECT_GT(source->GetOutput()->GetNumberOfPolys(), 0);
+    }
+    else
+    {
+      EXPECT_LT(log.Steps().size(), 65u);
+      EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
+      EXPECT_EQ(source->GetOutput()->GetNumberOfCells(), 0);
+    }
+  }
 }

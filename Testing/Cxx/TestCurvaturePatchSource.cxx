@@ -4,6 +4,7 @@
 #include "vtkCurvaturePatchSource.h"
 
 #include "BadParameterCases.h"
+#include "ProgressLog.h"
 #include "vtkDataArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -270,6 +271,36 @@ TEST(CurvaturePatchSource, BadParametersGiveAnErrorAndAnEmptyOutput)
       s->SetMethodToBilinear();
       s->SetCorner3Direction(nan, 0, 1);
     },
+    [nan](vtkCurvaturePatchSource* s) { s->SetClipRadius(nan); },
+    // 1e10 samples: refused before anything is allocated
+    [](vtkCurvaturePatchSource* s) {
+      s->SetUResolution(100000);
+      s->SetVResolution(100000);
+    },
   };
   ExpectOneErrorEach(breakers, EmptyOutput::NoPoints);
+}
+
+TEST(CurvaturePatchSource, ReportsProgressAndAnAbortedUpdateIsEmpty)
+{
+  for (bool abort : { false, true })
+  {
+    vtkNew<vtkCurvaturePatchSource> source;
+    source->SetVResolution(100); // 101 rows: 7 blocks of 16
+    ProgressLog log;
+    log.abortAfterFirstStep = abort; // after the first block: a part of the patch is computed
+    log.Observe(source);
+    source->Update();
+    if (!abort)
+    {
+      EXPECT_GE(log.Steps().size(), 7u);
+      EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 33 * 101);
+    }
+    else
+    {
+      EXPECT_LT(log.Steps().size(), 7u);
+      EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
+      EXPECT_EQ(source->GetOutput()->GetNumberOfCells(), 0);
+    }
+  }
 }

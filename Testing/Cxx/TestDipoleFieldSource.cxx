@@ -3,6 +3,7 @@
 #include "vtkDipoleFieldSource.h"
 
 #include "EventCounter.h"
+#include "ProgressLog.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
@@ -293,6 +294,7 @@ TEST(DipoleFieldSource, BadInputGivesAnErrorAndAnEmptyOutput)
     NaNGenerator,
     NaNEpsilon,
     NaNTranslation,
+    HugeDimensions,
     Cases
   };
   for (int which = 0; which < Cases; ++which)
@@ -309,6 +311,8 @@ TEST(DipoleFieldSource, BadInputGivesAnErrorAndAnEmptyOutput)
       case NaNGenerator: source->AddGenerator(1, 1, 0, nan, 0, 0, 1); break;
       case NaNEpsilon: source->SetEpsilon(nan); break;
       case NaNTranslation: source->SetGeneratorsTranslation(0, 0, nan); break;
+      // 8e27 points (their count overflows vtkIdType): refused before anything is allocated
+      case HugeDimensions: source->SetDimensions(2000000000, 2000000000, 2000000000); break;
     }
     source->Update();
     EXPECT_EQ(counter.errors, 1) << "case " << which;
@@ -335,24 +339,6 @@ TEST(DipoleFieldSource, PointSentToInfinityGivesAWarningAndZero)
   ASSERT_EQ(a->GetNumberOfTuples(), 3);
   EXPECT_EQ(a->GetComponent(2, 0), 0.0);
   EXPECT_NE(a->GetComponent(1, 0), 0.0); // its neighbour moves
-}
-
-namespace
-{
-struct ProgressLog
-{
-  std::vector<double> values;
-  bool abortOnFirst = false;
-  static void Callback(vtkObject* caller, unsigned long, void* clientData, void* callData)
-  {
-    auto* log = static_cast<ProgressLog*>(clientData);
-    log->values.push_back(*static_cast<double*>(callData));
-    if (log->abortOnFirst)
-    {
-      static_cast<vtkAlgorithm*>(caller)->AbortExecuteOn();
-    }
-  }
-};
 }
 
 TEST(DipoleFieldSource, ReportsProgressAndStopsWithAnEmptyOutputWhenAborted)
@@ -411,6 +397,60 @@ TEST(DipoleFieldSource, GeneratorsTranslationMovesEveryGenerator)
       for (int c = 0; c < a->GetNumberOfComponents(); ++c)
       {
         EXPECT_NEAR(a->GetComponent(id, c), b->GetComponent(id, c), 1e-13) << name;
+      }
+    }
+  }
+}
+
+// The README's DipolePotential, phi(p) = s sum_i w_i (v_i . (p - x_i)) / (|p - x_i|^2 + eps),
+// written out at every grid point: with the translation, a time step's weight scale, and the
+// same values whatever the falloff, the method and the exponential rule.
+TEST(DipoleFieldSource, PotentialIsTheClosedFormSumOfDipolePotentials)
+{
+  const double generators[3][7] = { { -1, 0, 0, 0, 1, 0, 0.35 }, { 1, 0, 0, 1, 0, 0, 0.35 },
+    { 0.2, 0.7, 0.1, 0.5, -2.0, 1.0, -1.25 } };
+  const double translation[3] = { 0.3, -0.4, 0.1 };
+  const double eps = 0.07, s = 0.5;
+  for (int rule : { vtkDipoleFieldSource::EXACT, vtkDipoleFieldSource::PAPER })
+  {
+    for (double falloff : { 0.0, 2.5 })
+    {
+      vtkNew<vtkDipoleFieldSource> source;
+      source->RemoveAllGenerators();
+      for (const auto& g : generators)
+      {
+        source->AddGenerator(g[0], g[1], g[2], g[3], g[4], g[5], g[6]);
+      }
+      source->SetGeneratorsTranslation(translation[0], translation[1], translation[2]);
+      source->SetEpsilon(eps);
+      source->SetFalloff(falloff);
+      source->SetExponentialRule(rule);
+      source->SetDimensions(9, 7, 3);
+      source->SetSpacing(0.5, 0.5, 0.5);
+      source->SetOrigin(-2, -1.5, -0.5);
+      source->SetNumberOfTimeSteps(3); // t = 0, 0.5, 1
+      source->UpdateTimeStep(s);
+      vtkImageData* output = source->GetOutput();
+      vtkDataArray* phi = output->GetPointData()->GetArray("DipolePotential");
+      ASSERT_NE(phi, nullptr);
+      ASSERT_EQ(phi->GetNumberOfTuples(), 9 * 7 * 3);
+      for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+      {
+        double p[3];
+        output->GetPoint(i, p);
+        double expected = 0.0, size = 0.0;
+        for (const auto& g : generators)
+        {
+          double r[3];
+          for (int c = 0; c < 3; ++c)
+          {
+            r[c] = p[c] - (g[c] + translation[c]);
+          }
+          const double term = s * g[6] * vtkMath::Dot(g + 3, r) / (vtkMath::Dot(r, r) + eps);
+          expected += term;
+          size += std::fabs(term);
+        }
+        EXPECT_NEAR(phi->GetTuple1(i), expected, 1e-13 * (1.0 + size)) << "point " << i;
       }
     }
   }

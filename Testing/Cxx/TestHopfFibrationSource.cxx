@@ -4,6 +4,7 @@
 #include "vtkHopfFibrationSource.h"
 
 #include "BadParameterCases.h"
+#include "ProgressLog.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkMath.h"
@@ -413,6 +414,17 @@ TEST(HopfFibrationSource, BadInputGivesAnErrorAndAnEmptyOutput)
       s->SetSamplingModeToInputPoints();
       s->SetInputData(nanPoints);
     },
+    [nan](vtkHopfFibrationSource* s) { s->SetClipRadius(nan); },
+    // 1e10 fibers, and 1e6 fibers of 1e6 points: refused before anything is allocated
+    [](vtkHopfFibrationSource* s) {
+      s->SetThetaResolution(100000);
+      s->SetPhiResolution(100000);
+    },
+    [](vtkHopfFibrationSource* s) {
+      s->SetThetaResolution(1000);
+      s->SetPhiResolution(1000);
+      s->SetFiberResolution(1000000);
+    },
   };
   ExpectOneErrorEach(breakers, EmptyOutput::NoPointsNoCells);
 }
@@ -526,3 +538,64 @@ TEST(HopfFibrationSource, ClippedOutputEndsExactlyOnTheClipSphere)
   }
 }
 } // namespace
+
+TEST(HopfFibrationSource, ReportsProgressAndAnAbortedUpdateIsEmpty)
+{
+  for (bool abort : { false, true })
+  {
+    vtkNew<vtkHopfFibrationSource> source;
+    source->SetThetaResolution(10);
+    source->SetPhiResolution(20); // 200 fibers: 4 chunks of 64
+    ProgressLog log;
+    log.abortAfterFirstStep = abort; // after the first chunk: some fibers are computed
+    log.Observe(source);
+    source->Update();
+    if (!abort)
+    {
+      EXPECT_GE(log.Steps().size(), 4u);
+      EXPECT_GT(source->GetOutput()->GetNumberOfLines(), 190);
+    }
+    else
+    {
+      EXPECT_LT(log.Steps().size(), 4u);
+      EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
+      EXPECT_EQ(source->GetOutput()->GetNumberOfCells(), 0);
+    }
+  }
+}
+
+TEST(HopfFibrationSource, HugeBasePointIndexOrCountIsAnErrorAndChangesNothing)
+{
+  vtkNew<vtkHopfFibrationSource> source;
+  EventCounter events(source);
+  source->AddBasePoint(0.5, 0.25);
+  source->SetBasePoint(2000000000, 0.0, 0.0); // 2 index + 2 overflows an int
+  source->SetNumberOfBasePoints(2000000000);  // 32 GB of pairs
+  EXPECT_EQ(events.errors, 2);
+  EXPECT_EQ(source->GetNumberOfBasePoints(), 1);
+}
+
+TEST(HopfFibrationSource, TwistorMeshOfOneFiberPerStripWarnsAndIsEmpty)
+{
+  // Meridian strips of one latitude, and one base point: no quads can be made (the points came
+  // out without cells before).
+  const std::vector<std::function<void(vtkHopfFibrationSource*)>> cases = {
+    [](vtkHopfFibrationSource* s) { s->SetPhiResolution(1); },
+    [](vtkHopfFibrationSource* s) {
+      s->SetSamplingModeToBasePoints();
+      s->AddBasePoint(0.5, 0.25);
+    },
+  };
+  for (std::size_t k = 0; k < cases.size(); ++k)
+  {
+    vtkNew<vtkHopfFibrationSource> source;
+    source->SetOutputTypeToTwistorMesh();
+    cases[k](source);
+    EventCounter events(source);
+    source->Update();
+    EXPECT_EQ(events.errors, 0) << "case " << k;
+    EXPECT_EQ(events.warnings, 1) << "case " << k;
+    EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0) << "case " << k;
+    EXPECT_EQ(source->GetOutput()->GetNumberOfCells(), 0) << "case " << k;
+  }
+}

@@ -1,5 +1,6 @@
 """Run under `mpiexec -np N pvbatch`: the Curvature Patch source split over N ranks gives the same
-geometry as one process (each rank generates only its band of v rows)."""
+geometry as one process (each rank generates only its band of v rows): the gathered points are
+those of one process, bit for bit."""
 import os
 import sys
 
@@ -8,6 +9,7 @@ import plugin_test_common as common  # noqa: E402
 
 arguments = common.parse_arguments()
 common.load_plugin(arguments.plugin, globals())  # defines CurvaturePatch()
+from paraview import servermanager  # noqa: E402
 
 failures = []
 ranks = common.mpi_ranks(failures)
@@ -18,10 +20,17 @@ for output_type in ("Surface", "Lines"):
     source = CurvaturePatch(**parameters)  # noqa: F821
     source.UpdatePipeline()
     distributed = source.GetDataInformation()  # summed over the ranks
+    gathered = servermanager.Fetch(source)  # all pieces appended, on this (root) process
 
     single = common.whole_in_one_process(CurvaturePatch(**parameters))  # noqa: F821
 
-    common.compare_cell_counts(output_type, ranks, distributed, single, failures)
+    common.compare_cell_counts(output_type, ranks, distributed, single, failures, gathered)
+    # Surface bands repeat their shared row: every point of one process appears, and only those.
+    have = {gathered.GetPoint(i) for i in range(gathered.GetNumberOfPoints())}
+    wanted = {single.GetPoint(i) for i in range(single.GetNumberOfPoints())}
+    if have != wanted:
+        failures.append("%s: %d points differ between the ranks and one process"
+                        % (output_type, len(have ^ wanted)))
     if output_type == "Lines" and distributed.GetNumberOfPoints() != single.GetNumberOfPoints():
         failures.append("Lines: %d points over the ranks, %d in one process"
                         % (distributed.GetNumberOfPoints(), single.GetNumberOfPoints()))

@@ -51,6 +51,11 @@ source.ControlPoints = [-1, 0, 0, 0, 0, 1, 1, 0, 0, 0.5, 0.5]
 source.UpdatePipeline()
 if source.GetDataInformation().GetBounds() == two_rows:
     failures.append("the second control point row changed nothing")
+# The table's 11 columns are named in the GUI (as the other tables are).
+hints = source.GetProperty("ControlPoints").SMProperty.GetHints()
+labels = hints.FindNestedElementByName("ShowComponentLabels") if hints else None
+if labels is None or labels.GetNumberOfNestedElements() != 11:
+    failures.append("the Control Points table does not name its 11 columns")
 source.ControlPoints = []  # no control point: an error and an empty output
 source.UpdatePipeline()
 if source.GetDataInformation().GetNumberOfPoints() != 0:

@@ -60,7 +60,8 @@ public:
   /// r_i = p - x_i. For one generator and eps -> 0 the first-order displacement of both methods
   /// is -s w |r|^4 / (k |r|^2 + eps) grad((v . r) / |r|^2): antiparallel to grad phi, so the
   /// level sets of phi cross the field at right angles (the equipotential lines of Fig 14).
-  /// For several generators it is the sum of their potentials. Zero for a non-finite p.
+  /// For several generators it is the sum of their potentials. Zero for a non-finite p; it
+  /// saturates at +-DBL_MAX where huge weights would overflow it.
   double potential(Vec3 p, double weightScale) const;
 
   /// Both methods and the potential at p. Returns false if either method failed (see above).

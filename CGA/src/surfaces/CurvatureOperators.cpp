@@ -85,10 +85,13 @@ double osculatingTerm(const CurvatureControlPoint& c, Vec3 along, double kappa, 
   {
     return 0.0; // the line stays a line: no bending in this direction
   }
-  const Vec3 center = c.location - c.normal / kappa;
-  const double radius = 1.0 / std::fabs(kappa);
-  const Vec3 planeNormal = cross(along, c.normal);
-  return kappa / (squaredCircleDistance(p, center, radius, planeNormal) + epsilon);
+  // squaredCircleDistance(p, x - n/kappa, 1/|kappa|, along x n) written in q = p - x, where the
+  // r^2 of |p - center|^2 - r^2 cancels exactly: for |kappa| below ~1e-154 r^2 overflows and the
+  // direct form gives inf - inf = NaN instead of a weight near 0.
+  const Vec3 q = p - c.location;
+  const double sphere = 0.5 * norm2(q) + dot(q, c.normal) / kappa;
+  const double plane = dot(q, cross(along, c.normal)) / kappa;
+  return kappa / (sphere * sphere + plane * plane + epsilon);
 }
 
 CurvatureGenerator osculatingCircles(const CurvatureControlPoint& c, Vec3 p, double epsilon)
@@ -97,7 +100,10 @@ CurvatureGenerator osculatingCircles(const CurvatureControlPoint& c, Vec3 p, dou
   CurvatureGenerator g;
   g.weight = osculatingTerm(c, c.uDirection, c.kappaU, p, epsilon) +
     osculatingTerm(c, v, c.kappaV, p, epsilon);
-  g.exponent = nullPointPairCompact(c.location, c.normal) * (-g.weight);
+  if (g.weight != 0.0) // else zero: tau of a far-away location may not be finite (0 * inf)
+  {
+    g.exponent = nullPointPairCompact(c.location, c.normal) * (-g.weight);
+  }
   return g;
 }
 
