@@ -311,31 +311,14 @@ int vtkHopfFibrationSource::RequestData(
   const int piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
   const int pieces =
     std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
-  int firstRow, lastRow, sampleFirst, sampleLast;
-  if (mesh)
+  int firstRow, lastRow;
+  if (!vtkBoostedGridBuilder::PieceRows(rows, mesh, piece, pieces, firstRow, lastRow))
   {
-    const int cellRows = rows - 1;
-    firstRow = static_cast<int>(static_cast<long long>(piece) * cellRows / pieces);
-    lastRow = static_cast<int>(static_cast<long long>(piece + 1) * cellRows / pieces);
-    if (firstRow == lastRow)
-    {
-      return 1; // more pieces than rows of quads (or a single row): nothing here
-    }
-    // Normals at a band's edge need the neighbouring rows.
-    sampleFirst = std::max(0, firstRow - 1);
-    sampleLast = std::min(rows - 1, lastRow + 1);
+    return 1; // more pieces than rows (of quads): nothing here
   }
-  else
-  {
-    firstRow = static_cast<int>(static_cast<long long>(piece) * rows / pieces);
-    lastRow = static_cast<int>(static_cast<long long>(piece + 1) * rows / pieces) - 1;
-    if (lastRow < firstRow)
-    {
-      return 1;
-    }
-    sampleFirst = firstRow;
-    sampleLast = lastRow;
-  }
+  // Normals at a band's edge need the neighbouring rows.
+  const int sampleFirst = mesh ? std::max(0, firstRow - 1) : firstRow;
+  const int sampleLast = mesh ? std::min(rows - 1, lastRow + 1) : lastRow;
 
   // ---- the fibers ----
   const int columns = this->FiberResolution + 1; // the last column repeats the first (seam)
