@@ -156,6 +156,16 @@ def compare_cell_counts(label, ranks, distributed, single, failures, gathered=No
                         % (label, gathered.GetNumberOfCells(), single.GetNumberOfCells()))
 
 
+def compare_point_sets(label, gathered, single, failures):
+    """The points gathered from the ranks must be exactly those of one process, bit for bit (bands
+    may repeat their shared row, so the comparison is of sets)."""
+    have = {gathered.GetPoint(i) for i in range(gathered.GetNumberOfPoints())}
+    wanted = {single.GetPoint(i) for i in range(single.GetNumberOfPoints())}
+    if have != wanted:
+        failures.append("%s: %d points differ between the ranks and one process"
+                        % (label, len(have ^ wanted)))
+
+
 def compare_bounds(label, distributed, single, failures):
     """The bounds over the ranks must be those of one process (to 1e-12)."""
     for got, expected in zip(distributed.GetBounds(), single.GetBounds()):

@@ -26,11 +26,7 @@ for output_type in ("Surface", "Lines"):
 
     common.compare_cell_counts(output_type, ranks, distributed, single, failures, gathered)
     # Surface bands repeat their shared row: every point of one process appears, and only those.
-    have = {gathered.GetPoint(i) for i in range(gathered.GetNumberOfPoints())}
-    wanted = {single.GetPoint(i) for i in range(single.GetNumberOfPoints())}
-    if have != wanted:
-        failures.append("%s: %d points differ between the ranks and one process"
-                        % (output_type, len(have ^ wanted)))
+    common.compare_point_sets(output_type, gathered, single, failures)
     if output_type == "Lines" and distributed.GetNumberOfPoints() != single.GetNumberOfPoints():
         failures.append("Lines: %d points over the ranks, %d in one process"
                         % (distributed.GetNumberOfPoints(), single.GetNumberOfPoints()))

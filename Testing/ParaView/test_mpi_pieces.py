@@ -52,6 +52,7 @@ for output_type in ("Surface", "Circles"):
                             % (cleaned_point_count(gathered), cleaned_point_count(single)))
         if distributed.GetNumberOfPoints() <= single.GetNumberOfPoints() - 1:
             failures.append("Surface: points were lost over the ranks")
+    common.compare_point_sets(output_type, gathered, single, failures)
     common.compare_bounds(output_type, distributed, single, failures)
 
 common.report(failures, "Boosted Surface over MPI ranks")
