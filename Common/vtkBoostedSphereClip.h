@@ -14,9 +14,11 @@
 #ifndef vtkBoostedSphereClip_h
 #define vtkBoostedSphereClip_h
 
+#include "BoostedSurfacesCommonModule.h" // for export macro
+
 class vtkPolyData;
 
-class vtkBoostedSphereClip
+class BOOSTEDSURFACESCOMMON_EXPORT vtkBoostedSphereClip
 {
 public:
   static void Clip(vtkPolyData* input, const double center[3], double radius, vtkPolyData* output);

@@ -13,13 +13,15 @@
 #ifndef vtkBoostedGridBuilder_h
 #define vtkBoostedGridBuilder_h
 
+#include "BoostedSurfacesCommonModule.h" // for export macro
+
 #include <string>
 #include <utility>
 #include <vector>
 
 class vtkPolyData;
 
-class vtkBoostedGridBuilder
+class BOOSTEDSURFACESCOMMON_EXPORT vtkBoostedGridBuilder
 {
 public:
   /// `periodicColumns`: the last column repeats the first (a closed curve with a texture seam).
