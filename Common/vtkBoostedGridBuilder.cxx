@@ -1,5 +1,7 @@
 #include "vtkBoostedGridBuilder.h"
 
+#include "vtkBoostedPolylineRuns.h"
+
 #include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -22,15 +24,6 @@ vtkBoostedGridBuilder::vtkBoostedGridBuilder(int rows, int columns, bool periodi
   , Points(3 * static_cast<size_t>(rows) * columns, std::numeric_limits<double>::quiet_NaN())
   , FallbackNormals(3 * static_cast<size_t>(rows), 0.0)
 {
-}
-
-void vtkBoostedGridBuilder::SetClipSphere(const double center[3], double radius)
-{
-  for (int i = 0; i < 3; ++i)
-  {
-    this->ClipCenter[i] = center[i];
-  }
-  this->ClipRadius = radius;
 }
 
 void vtkBoostedGridBuilder::SetPoint(int row, int column, const double point[3])
@@ -70,25 +63,7 @@ void vtkBoostedGridBuilder::AddPointParameter(
 bool vtkBoostedGridBuilder::Usable(int row, int column) const
 {
   const double* p = &this->Points[3 * this->Index(row, column)];
-  if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-  {
-    return false;
-  }
-  return this->ClipRadius < 0.0 ||
-    vtkMath::Distance2BetweenPoints(p, this->ClipCenter) <= this->ClipRadius * this->ClipRadius;
-}
-
-int vtkBoostedGridBuilder::CountUnusable() const
-{
-  int count = 0;
-  for (int r = 0; r < this->Rows; ++r)
-  {
-    for (int c = 0; c < this->Columns; ++c)
-    {
-      count += this->Usable(r, c) ? 0 : 1;
-    }
-  }
-  return count;
+  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
 }
 
 void vtkBoostedGridBuilder::ComputeNormal(int row, int column, double normal[3]) const
@@ -265,47 +240,26 @@ void vtkBoostedGridBuilder::BuildCurves(
 {
   const std::vector<long long> ids =
     this->WritePoints(output, firstRow, lastRow, outputPointsPrecision, false);
-  // With periodic columns the last column repeats the first: walk the distinct columns and close
-  // the loop when every sample of the row is usable.
+  // With periodic columns the last column repeats the first: each row is a closed polyline of
+  // grid indices.
   const int distinct = this->PeriodicColumns ? this->Columns - 1 : this->Columns;
   vtkNew<vtkCellArray> lines;
-  std::vector<vtkIdType> run;
+  vtkBoostedPolylineRuns runs;
+  std::vector<vtkIdType> row(this->PeriodicColumns ? distinct + 1 : distinct);
   for (int r = firstRow; r <= lastRow; ++r)
   {
-    int start = 0;
-    bool allUsable = true;
     for (int c = 0; c < distinct; ++c)
     {
-      if (ids[this->Index(r, c)] < 0)
-      {
-        allUsable = false;
-        start = c; // start a walk at a gap so that runs are not cut at the seam
-      }
+      row[c] = this->Index(r, c);
     }
-    run.clear();
-    auto flush = [&]() {
-      if (run.size() >= 2)
-      {
-        lines->InsertNextCell(static_cast<vtkIdType>(run.size()), run.data());
-      }
-      run.clear();
-    };
-    for (int k = 0; k < distinct; ++k)
+    if (this->PeriodicColumns)
     {
-      const int c = this->PeriodicColumns ? (start + k) % distinct : k;
-      const long long id = ids[this->Index(r, c)];
-      if (id < 0)
-      {
-        flush();
-        continue;
-      }
-      run.push_back(static_cast<vtkIdType>(id));
+      row[distinct] = row[0];
     }
-    if (allUsable && this->PeriodicColumns && !run.empty())
-    {
-      run.push_back(run.front());
-    }
-    flush();
+    runs.Walk(
+      row.data(), static_cast<vtkIdType>(row.size()), [&ids](vtkIdType i) { return ids[i] >= 0; },
+      [&ids](vtkIdType i) { return static_cast<vtkIdType>(ids[i]); },
+      [](vtkIdType, vtkIdType) { return vtkIdType(-1); }, lines);
   }
   output->SetLines(lines);
 }
@@ -325,15 +279,23 @@ bool vtkBoostedGridBuilder::PieceRows(
   int rows, bool surface, int piece, int pieces, int& firstRow, int& lastRow)
 {
   pieces = pieces < 1 ? 1 : pieces;
+  firstRow = 0;
+  lastRow = -1;
+  if (piece < 0 || piece >= pieces)
+  {
+    return false;
+  }
+  // In long long: piece + 1 and the products overflow an int.
+  const long long begin = piece, end = static_cast<long long>(piece) + 1;
   if (surface)
   {
-    const int cellRows = rows - 1;
-    firstRow = static_cast<int>(static_cast<long long>(piece) * cellRows / pieces);
-    lastRow = static_cast<int>(static_cast<long long>(piece + 1) * cellRows / pieces);
+    const long long cellRows = rows - 1;
+    firstRow = static_cast<int>(begin * cellRows / pieces);
+    lastRow = static_cast<int>(end * cellRows / pieces);
     return firstRow < lastRow;
   }
-  firstRow = static_cast<int>(static_cast<long long>(piece) * rows / pieces);
-  lastRow = static_cast<int>(static_cast<long long>(piece + 1) * rows / pieces) - 1;
+  firstRow = static_cast<int>(begin * rows / pieces);
+  lastRow = static_cast<int>(end * rows / pieces) - 1;
   return firstRow <= lastRow;
 }
 

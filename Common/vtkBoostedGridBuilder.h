@@ -6,9 +6,10 @@
  * sweep parameter, columns the curve parameter), mark which samples are usable, and let this class
  * emit either quads with point normals and texture coordinates, or one polyline per row.
  *
- * A sample is unusable when it is not finite or lies farther than the clip radius from the clip
- * center; cells touching an unusable sample are left out, so the surface is cut there rather than
- * stretched to infinity. Only the points that are used are written.
+ * A sample is unusable when it is not finite (a point sent to infinity); cells touching an
+ * unusable sample are left out, so the surface is cut there rather than stretched to infinity.
+ * Only the points that are used are written. The cut at a clip sphere is vtkBoostedSphereClip's,
+ * applied to this class's output (vtkBoostedGridDriver does both).
  */
 #ifndef vtkBoostedGridBuilder_h
 #define vtkBoostedGridBuilder_h
@@ -27,11 +28,6 @@ public:
   /// `periodicColumns`: the last column repeats the first (a closed curve with a texture seam).
   vtkBoostedGridBuilder(int rows, int columns, bool periodicColumns);
 
-  void SetClipSphere(const double center[3], double radius);
-
-  int GetRows() const { return this->Rows; }
-  int GetColumns() const { return this->Columns; }
-
   void SetPoint(int row, int column, const double point[3]);
   /// Used where the grid gives no normal (a degenerate neighbourhood): e.g. the plane of the row's curve.
   void SetRowFallbackNormal(int row, const double normal[3]);
@@ -46,9 +42,6 @@ public:
   /// One polyline per row in [firstRow, lastRow], split where samples are unusable.
   void BuildCurves(vtkPolyData* output, int firstRow, int lastRow, int outputPointsPrecision) const;
 
-  /// Number of samples that were unusable (for a warning).
-  int CountUnusable() const;
-
   /// Splits the rows into consecutive blocks of `rowsPerBlock` rows, each its own strip: no quad
   /// and no normal difference crosses from one block to the next, and the texture coordinate v
   /// runs from 0 to 1 within each block. Default: one block of all rows.
@@ -57,7 +50,8 @@ public:
   void AddRowIntegerParameter(const std::string& name, const std::vector<int>& valuePerRow);
   /// The rows [firstRow, lastRow] of piece `piece` of `pieces`: for a surface whole rows of quads
   /// (neighbouring bands share their boundary row of points), otherwise whole rows of points.
-  /// Returns false when the piece is empty (more pieces than rows).
+  /// Returns false when the piece is empty: more pieces than rows, or a piece outside
+  /// [0, pieces) (VTK's sources give an empty piece then; pieces < 1 counts as 1).
   static bool PieceRows(int rows, bool surface, int piece, int pieces, int& firstRow, int& lastRow);
   /// The most samples (rows x columns) a grid may hold: beyond it the builder's arrays and the
   /// output would need tens of gigabytes, and its int indices would overflow.
@@ -85,8 +79,6 @@ private:
   int Rows;
   int Columns;
   bool PeriodicColumns;
-  double ClipCenter[3] = { 0, 0, 0 };
-  double ClipRadius = -1.0; // negative: no clipping
   std::vector<double> Points;
   std::vector<double> FallbackNormals;
   std::vector<Parameter> Parameters;

@@ -1,7 +1,10 @@
 #include "vtkBoostedSphereClip.h"
 
+#include "vtkBoostedPolylineRuns.h"
+
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
+#include "vtkIdList.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -20,12 +23,6 @@ void vtkBoostedSphereClip::Clip(
 {
   const vtkIdType count = input->GetNumberOfPoints();
   vtkPoints* inPoints = input->GetPoints();
-  vtkNew<vtkPoints> points;
-  points->SetDataType(inPoints ? inPoints->GetDataType() : VTK_DOUBLE);
-  vtkPointData* inPD = input->GetPointData();
-  vtkPointData* outPD = output->GetPointData();
-  outPD->InterpolateAllocate(inPD, count);
-
   const cga::Vec3 c{ center[0], center[1], center[2] };
   auto point = [inPoints](vtkIdType id) {
     double p[3];
@@ -33,17 +30,44 @@ void vtkBoostedSphereClip::Clip(
     return cga::Vec3{ p[0], p[1], p[2] };
   };
   std::vector<char> inside(count, 0);
-  std::vector<vtkIdType> kept(count, -1);
+  vtkIdType insideCount = 0;
   for (vtkIdType i = 0; i < count; ++i)
   {
     const cga::Vec3 p = point(i);
     inside[i] = cga::isFinite(p) && cga::norm2(p - c) <= radius * radius;
+    insideCount += inside[i];
+  }
+  if (insideCount == count)
+  {
+    output->ShallowCopy(input); // nothing to cut
+    return;
+  }
+
+  // The kept points first, in their order, with their point data.
+  std::vector<vtkIdType> kept(count, -1);
+  vtkNew<vtkIdList> from, to;
+  from->Allocate(insideCount);
+  to->Allocate(insideCount);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
     if (inside[i])
     {
-      kept[i] = points->InsertNextPoint(p.x, p.y, p.z);
-      outPD->CopyData(inPD, i, kept[i]);
+      kept[i] = to->GetNumberOfIds();
+      from->InsertNextId(i);
+      to->InsertNextId(kept[i]);
     }
   }
+  vtkNew<vtkPoints> points;
+  points->SetDataType(inPoints ? inPoints->GetDataType() : VTK_DOUBLE);
+  points->Allocate(insideCount);
+  if (insideCount > 0)
+  {
+    points->InsertPoints(to, from, inPoints);
+  }
+  vtkPointData* inPD = input->GetPointData();
+  vtkPointData* outPD = output->GetPointData();
+  outPD->InterpolateAllocate(inPD, count);
+  outPD->CopyData(inPD, from, to);
 
   // The crossing on the edge from an inside to an outside point, made once per edge.
   std::map<std::pair<vtkIdType, vtkIdType>, vtkIdType> crossings;
@@ -94,60 +118,15 @@ void vtkBoostedSphereClip::Clip(
   };
 
   vtkNew<vtkCellArray> lines;
-  std::vector<vtkIdType> run, walk;
+  vtkBoostedPolylineRuns runs;
   vtkIdType npts;
   const vtkIdType* ids;
   vtkCellArray* inLines = input->GetLines();
   for (inLines->InitTraversal(); inLines->GetNextCell(npts, ids);)
   {
-    // A closed polyline partly outside is walked from an outside point, so that its inside
-    // arcs are not split at the seam.
-    walk.assign(ids, ids + npts);
-    const bool closed = npts > 2 && ids[0] == ids[npts - 1];
-    if (closed)
-    {
-      vtkIdType start = -1;
-      for (vtkIdType k = 0; k + 1 < npts && start < 0; ++k)
-      {
-        start = inside[ids[k]] ? -1 : k;
-      }
-      if (start >= 0)
-      {
-        walk.clear();
-        for (vtkIdType k = 0; k < npts; ++k)
-        {
-          walk.push_back(ids[(start + k) % (npts - 1)]);
-        }
-      }
-    }
-    run.clear();
-    auto flush = [&]() {
-      if (run.size() >= 2)
-      {
-        lines->InsertNextCell(static_cast<vtkIdType>(run.size()), run.data());
-      }
-      run.clear();
-    };
-    for (size_t k = 0; k < walk.size(); ++k)
-    {
-      if (k > 0)
-      {
-        const vtkIdType x = edgeCrossing(walk[k - 1], walk[k]);
-        if (x >= 0)
-        {
-          pushDistinct(run, x);
-          if (inside[walk[k - 1]])
-          {
-            flush(); // leaving the ball
-          }
-        }
-      }
-      if (inside[walk[k]])
-      {
-        pushDistinct(run, kept[walk[k]]);
-      }
-    }
-    flush();
+    runs.Walk(
+      ids, npts, [&](vtkIdType v) { return inside[v] != 0; }, [&](vtkIdType v) { return kept[v]; },
+      crossing, lines);
   }
 
   vtkNew<vtkCellArray> polys;

@@ -1,13 +1,11 @@
 #include "vtkBoostedSurfaceSource.h"
 
-#include "vtkBoostedGridBuilder.h"
-#include "vtkBoostedSurfacesAbort.h"
+#include "vtkBoostedGridDriver.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include "cga/Conformal.h"
 #include "cga/PointSandwich.h"
@@ -43,7 +41,6 @@ int vtkBoostedSurfaceSource::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkPolyData* output = vtkPolyData::GetData(outInfo);
 
   cga::BoostedCircle family;
   family.center = toVec3(this->CircleCenter);
@@ -61,63 +58,31 @@ int vtkBoostedSurfaceSource::RequestData(
   {
     problem = "LambdaRange must be finite";
   }
-  if (problem.empty() && std::isnan(this->ClipRadius)) // the clamp macro lets NaN through
+  const long long rows = this->LambdaResolution + 1LL;
+  const long long columns = this->ThetaResolution + 1LL; // the last column repeats the first (seam)
+  vtkBoostedGridDriver driver(
+    this, outInfo, this->CircleCenter, this->ClipRadius, this->OutputPointsPrecision);
+  if (!driver.Prepare(problem, rows, columns, true, this->OutputType == SURFACE))
   {
-    problem = "ClipRadius must be a number";
-  }
-  if (problem.empty())
-  {
-    problem = vtkBoostedGridBuilder::SizeProblem(
-      this->LambdaResolution + 1LL, this->ThetaResolution + 1LL);
-  }
-  if (!problem.empty())
-  {
-    vtkErrorMacro(<< problem);
-    return 1; // the output stays empty
+    return 1; // an error, or an empty piece
   }
 
-  const int rows = this->LambdaResolution + 1;
-  const int columns = this->ThetaResolution + 1; // the last column repeats the first (seam)
-
-  // This piece's rows: whole rows of quads (SURFACE) or whole circles (CIRCLES).
-  const int piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
-  const int pieces =
-    std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
-  int firstRow, lastRow;
-  if (!vtkBoostedGridBuilder::PieceRows(
-        rows, this->OutputType == SURFACE, piece, pieces, firstRow, lastRow))
-  {
-    return 1; // more pieces than rows: this one is empty
-  }
-
-  vtkBoostedGridBuilder grid(rows, columns, true);
-  grid.SetClipSphere(this->CircleCenter, this->ClipRadius);
   std::vector<double> lambdas(rows), thetas(columns);
   for (int r = 0; r < rows; ++r)
   {
     const double t = rows > 1 ? static_cast<double>(r) / (rows - 1) : 0.0;
     lambdas[r] = (1.0 - t) * this->LambdaRange[0] + t * this->LambdaRange[1];
   }
-  for (int c = 0; c < columns; ++c)
-  {
-    thetas[c] = 2.0 * vtkMath::Pi() * c / this->ThetaResolution;
-  }
   std::vector<cga::Vec3> circlePoints(columns);
   for (int c = 0; c < columns; ++c)
   {
+    thetas[c] = 2.0 * vtkMath::Pi() * c / this->ThetaResolution;
     circlePoints[c] = family.circlePoint(thetas[c]);
   }
   circlePoints[columns - 1] = circlePoints[0]; // exactly the same point at the seam
 
-  // Normals at a band's edge need the neighbouring rows, so sample one row more on each side.
-  const int sampleFirst = std::max(0, firstRow - 1);
-  const int sampleLast = std::min(rows - 1, lastRow + 1);
-  for (int r = sampleFirst; r <= sampleLast; ++r)
-  {
-    if (vtkBoostedSurfacesCheckAbort(this))
-    {
-      break;
-    }
+  vtkBoostedGridBuilder& grid = driver.Grid();
+  driver.SampleRows([&](int r) {
     // One 5x5 matrix per lambda row: the sandwich K up(p) ~K is linear in up(p).
     const cga::PointMap boost(family.boostCompact(lambdas[r]));
     for (int c = 0; c < columns; ++c)
@@ -132,19 +97,10 @@ int vtkBoostedSurfaceSource::RequestData(
     const cga::RoundInfo image = cga::readCircle(family.imageBlade(lambdas[r]), 1e-12);
     const double fallback[3] = { image.normal.x, image.normal.y, image.normal.z };
     grid.SetRowFallbackNormal(r, fallback);
-    this->UpdateProgress(static_cast<double>(r - sampleFirst + 1) / (sampleLast - sampleFirst + 1));
-  }
+  });
   grid.AddRowParameter("lambda", lambdas);
   grid.AddColumnParameter("theta", thetas);
-
-  if (this->OutputType == SURFACE)
-  {
-    grid.BuildSurface(output, firstRow, lastRow, this->OutputPointsPrecision);
-  }
-  else
-  {
-    grid.BuildCurves(output, firstRow, lastRow, this->OutputPointsPrecision);
-  }
+  driver.Build(vtkPolyData::GetData(outInfo));
   return 1;
 }
 

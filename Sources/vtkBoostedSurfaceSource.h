@@ -14,8 +14,8 @@
  *
  * A boost sends one point, BoostLocation - BoostDirection / (lambda |BoostDirection|^2), to
  * infinity; a circle through that point becomes a line (Fig 1 at lambda = +-1). The output never
- * contains infinite or huge points: samples farther than ClipRadius from the circle's center are
- * dropped together with the cells that use them, so the surface is cut open there.
+ * contains infinite or huge points: it is cut exactly at the clip sphere, radius ClipRadius about
+ * the circle's center (vtkBoostedGridDriver), so the circles and the surface end on that sphere.
  *
  * Output (OutputType):
  * - SURFACE: quads, with point normals, texture coordinates (u along the circle, v along lambda)
@@ -90,7 +90,7 @@ public:
   ///@}
 
   ///@{
-  /// Samples farther than this from the circle's center are cut away. Default 20.
+  /// The radius of the clip sphere about the circle's center, where the output is cut. Default 20.
   vtkSetClampMacro(ClipRadius, double, 1e-6, 1e12);
   vtkGetMacro(ClipRadius, double);
   ///@}

@@ -1,13 +1,10 @@
 #include "vtkCurvaturePatchSource.h"
 
-#include "vtkBoostedGridBuilder.h"
-#include "vtkBoostedSurfacesAbort.h"
+#include "vtkBoostedGridDriver.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include "cga/surfaces/CurvaturePatch.h"
 
@@ -22,9 +19,6 @@ cga::Vec3 toVec3(const double v[3])
 {
   return { v[0], v[1], v[2] };
 }
-
-// Rows mapped between two abort checks and progress updates.
-constexpr int kRowsPerBlock = 16;
 }
 
 vtkCurvaturePatchSource::vtkCurvaturePatchSource()
@@ -90,7 +84,6 @@ int vtkCurvaturePatchSource::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkPolyData* output = vtkPolyData::GetData(outInfo);
 
   cga::CurvaturePatch patch;
   patch.method = static_cast<cga::CurvatureMethod>(this->Method);
@@ -123,97 +116,46 @@ int vtkCurvaturePatchSource::RequestData(
   {
     patch.corners[i] = { toVec3(directions[i]), this->CornerWeights[i] };
   }
-  std::string problem = patch.validate();
-  if (problem.empty() && std::isnan(this->ClipRadius)) // the clamp macro lets NaN through
+  const long long rows = patch.sizeV > 0.0 ? this->VResolution + 1LL : 1LL;
+  const long long columns = this->UResolution + 1LL;
+  vtkBoostedGridDriver driver(
+    this, outInfo, this->Origin, this->ClipRadius, this->OutputPointsPrecision);
+  if (!driver.Prepare(patch.validate(), rows, columns, false, this->OutputType == SURFACE && rows > 1))
   {
-    problem = "ClipRadius must be a number";
-  }
-  if (problem.empty())
-  {
-    problem = vtkBoostedGridBuilder::SizeProblem(
-      patch.sizeV > 0.0 ? this->VResolution + 1LL : 1LL, this->UResolution + 1LL);
-  }
-  if (!problem.empty())
-  {
-    vtkErrorMacro(<< problem);
-    return 1; // the output stays empty
-  }
-
-  const int rows = patch.sizeV > 0.0 ? this->VResolution + 1 : 1;
-  const int columns = this->UResolution + 1;
-  const bool surface = this->OutputType == SURFACE && rows > 1;
-
-  // This piece's rows: whole rows of quads (surface) or whole rows of points (lines).
-  const int piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
-  const int pieces =
-    std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
-  int firstRow, lastRow;
-  if (!vtkBoostedGridBuilder::PieceRows(rows, surface, piece, pieces, firstRow, lastRow))
-  {
-    return 1; // more pieces than rows: this one is empty
+    return 1; // an error, or an empty piece
   }
 
   std::vector<double> us(columns), vs(rows);
   for (int c = 0; c < columns; ++c)
   {
-    us[c] = patch.a(c, columns);
+    us[c] = patch.a(c, static_cast<int>(columns));
   }
   for (int r = 0; r < rows; ++r)
   {
-    vs[r] = patch.b(r, rows);
+    vs[r] = patch.b(r, static_cast<int>(rows));
   }
-
-  vtkBoostedGridBuilder grid(rows, columns, false);
-  grid.SetClipSphere(this->Origin, this->ClipRadius);
+  vtkBoostedGridBuilder& grid = driver.Grid();
   std::vector<double> weights(static_cast<size_t>(rows) * columns, 0.0);
   const double fallback[3] = { patch.frame.normal.x, patch.frame.normal.y, patch.frame.normal.z };
-
-  // Normals at a band's edge need the neighbouring rows, so sample one row more on each side.
-  const int sampleFirst = std::max(0, firstRow - 1);
-  const int sampleLast = std::min(rows - 1, lastRow + 1);
-  for (int blockFirst = sampleFirst; blockFirst <= sampleLast; blockFirst += kRowsPerBlock)
-  {
-    if (vtkBoostedSurfacesCheckAbort(this))
+  // Every sample writes only its own grid slot: the builder's points and `weights`.
+  driver.SampleGrid([&](int r, int c) {
+    cga::Vec3 image;
+    double weight = 0.0;
+    if (patch.map(us[c], vs[r], image, weight)) // false: at infinity; left NaN and dropped
     {
-      break;
+      const double point[3] = { image.x, image.y, image.z };
+      grid.SetPoint(r, c, point);
+      weights[static_cast<size_t>(r) * columns + c] = weight;
     }
-    const int blockLast = std::min(sampleLast, blockFirst + kRowsPerBlock - 1);
-    const vtkIdType begin = static_cast<vtkIdType>(blockFirst) * columns;
-    const vtkIdType end = static_cast<vtkIdType>(blockLast + 1) * columns;
-    // Every sample writes only its own grid slot: the builder's points and `weights`.
-    vtkSMPTools::For(begin, end, [&](vtkIdType first, vtkIdType last) {
-      for (vtkIdType i = first; i < last; ++i)
-      {
-        const int r = static_cast<int>(i / columns);
-        const int c = static_cast<int>(i % columns);
-        cga::Vec3 image;
-        double weight = 0.0;
-        if (patch.map(us[c], vs[r], image, weight)) // false: at infinity; left NaN and dropped
-        {
-          const double point[3] = { image.x, image.y, image.z };
-          grid.SetPoint(r, c, point);
-          weights[i] = weight;
-        }
-      }
-    });
-    for (int r = blockFirst; r <= blockLast; ++r)
+    if (c == 0)
     {
       grid.SetRowFallbackNormal(r, fallback);
     }
-    this->UpdateProgress(static_cast<double>(blockLast - sampleFirst + 1) / (sampleLast - sampleFirst + 1));
-  }
+  });
   grid.AddColumnParameter("u", us);
   grid.AddRowParameter("v", vs);
   grid.AddPointParameter("GeneratorWeight", weights);
-
-  if (surface)
-  {
-    grid.BuildSurface(output, firstRow, lastRow, this->OutputPointsPrecision);
-  }
-  else
-  {
-    grid.BuildCurves(output, firstRow, lastRow, this->OutputPointsPrecision);
-  }
+  driver.Build(vtkPolyData::GetData(outInfo));
   return 1;
 }
 

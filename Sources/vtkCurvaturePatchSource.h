@@ -26,7 +26,8 @@
  * Output: quads (SURFACE) or one polyline per u row (LINES; also whenever Size[1] = 0), with point
  * normals, texture coordinates and the point arrays "u" (a), "v" (b) and "GeneratorWeight"
  * (sum of w_i in E = -sum_i w_i tau_i, tau_i of unit direction). Samples whose image is at
- * infinity, or farther than ClipRadius from Origin, are dropped with their cells.
+ * infinity are dropped with their cells; the output is cut exactly at the clip sphere, radius
+ * ClipRadius about Origin (vtkBoostedGridDriver).
  *
  * Pieces: the rows are divided among the requested pieces (neighbouring bands repeat their shared
  * row of points; cells are never repeated; LINES partitions the points exactly).
@@ -178,7 +179,7 @@ public:
   ///@}
 
   ///@{
-  /// Samples farther than this from Origin are cut away (default 100).
+  /// The radius of the clip sphere about Origin, where the output is cut (default 100).
   vtkSetClampMacro(ClipRadius, double, 1e-6, 1e12);
   vtkGetMacro(ClipRadius, double);
   ///@}

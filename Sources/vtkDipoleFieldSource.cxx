@@ -1,6 +1,6 @@
 #include "vtkDipoleFieldSource.h"
 
-#include "vtkBoostedSurfacesAbort.h"
+#include "vtkBoostedBlockLoop.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -9,7 +9,6 @@
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
@@ -287,17 +286,10 @@ int vtkDipoleFieldSource::RequestData(
   std::copy_n(this->Origin, 3, functor.Origin);
   std::copy_n(this->Spacing, 3, functor.Spacing);
 
-  // Blocks of points run in parallel; between blocks: progress and abort (from this thread only).
-  const vtkIdType blocks = std::min<vtkIdType>(20, std::max<vtkIdType>(1, n / 1024));
-  for (vtkIdType block = 0; block < blocks; ++block)
+  if (!vtkBoostedBlockLoop::For(this, 0, n, 1, functor))
   {
-    if (vtkBoostedSurfacesCheckAbort(this))
-    {
-      output->Initialize(); // never hand on half-filled arrays
-      return 1;
-    }
-    vtkSMPTools::For(block * n / blocks, (block + 1) * n / blocks, functor);
-    this->UpdateProgress(static_cast<double>(block + 1) / blocks);
+    output->Initialize(); // aborted: never hand on half-filled arrays
+    return 1;
   }
   if (failures > 0)
   {

@@ -26,8 +26,8 @@
  *
  * It is an image source in VTK's manner: WHOLE_EXTENT, CAN_PRODUCE_SUB_EXTENT, and only the
  * requested update extent is computed, so it streams and runs distributed. The points are
- * computed in parallel (vtkSMPTools) in up to 20 blocks; progress is reported and an abort
- * checked after each block (an aborted update leaves the output empty).
+ * computed in parallel in vtkBoostedBlockLoop's blocks, with progress and abort (an aborted update
+ * leaves the output empty).
  *
  * Bad input (a dimension < 1, a zero, negative or non-finite spacing, a non-finite origin,
  * GeneratorsTranslation, Falloff or Epsilon, a non-finite generator value) gives an error and an

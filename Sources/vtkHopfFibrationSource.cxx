@@ -1,21 +1,21 @@
 #include "vtkHopfFibrationSource.h"
 
-#include "vtkBoostedGridBuilder.h"
-#include "vtkBoostedSphereClip.h"
-#include "vtkBoostedSurfacesAbort.h"
+#include "vtkBoostedGridDriver.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include "cga/surfaces/HopfFibration.h"
+#include "cga/surfaces/HopfSampling.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -23,25 +23,25 @@ vtkStandardNewMacro(vtkHopfFibrationSource);
 
 namespace
 {
-constexpr double kHalfPi = 1.5707963267948966;
-constexpr double kTwoPi = 6.283185307179586;
 // The longest list SetBasePoint and SetNumberOfBasePoints grow (a wrong index must not allocate
 // gigabytes); longer samplings come through the Sphere Points input.
 constexpr int kMaximumBasePoints = 1000000;
 
-bool finite2(const double v[2])
+/// The normal of the fiber's plane (Newell's sum over its finite segments), for the normals
+/// where the mesh gives none.
+cga::Vec3 fiberPlaneNormal(const std::vector<cga::Vec3>& points, cga::Vec3 center)
 {
-  return std::isfinite(v[0]) && std::isfinite(v[1]);
+  cga::Vec3 newell{ 0, 0, 0 };
+  for (size_t c = 1; c < points.size(); ++c)
+  {
+    if (cga::isFinite(points[c]) && cga::isFinite(points[c - 1]))
+    {
+      newell = newell + cga::cross(points[c - 1] - center, points[c] - center);
+    }
+  }
+  return cga::normalized(newell);
 }
-
-/// The base points of the output's rows and how they group into strips.
-struct BaseSampling
-{
-  std::vector<double> theta, phi;
-  std::vector<int> stripId;
-  int rowsPerStrip = 0; // 0: one strip of all rows
-};
-}
+} // namespace
 
 vtkHopfFibrationSource::vtkHopfFibrationSource()
 {
@@ -126,273 +126,121 @@ int vtkHopfFibrationSource::RequestUpdateExtent(
   return 1;
 }
 
-long long vtkHopfFibrationSource::GridRows() const
-{
-  const bool latitudes = this->OutputType == TWISTOR_MESH && this->MeshSweep == LATITUDES;
-  return static_cast<long long>(this->ThetaResolution + (latitudes ? 1 : 0)) * this->PhiResolution;
-}
-
 int vtkHopfFibrationSource::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkPolyData* output = vtkPolyData::GetData(outInfo);
   vtkPointSet* input = inputVector[0]->GetNumberOfInformationObjects() > 0
     ? vtkPointSet::GetData(inputVector[0]->GetInformationObject(0))
     : nullptr;
+  const bool mesh = this->OutputType == TWISTOR_MESH;
 
   cga::HopfFibration hopf;
   hopf.center = { this->CircleCenter[0], this->CircleCenter[1], this->CircleCenter[2] };
   hopf.normal = { this->CircleNormal[0], this->CircleNormal[1], this->CircleNormal[2] };
   hopf.radius = this->CircleRadius;
   hopf.mode = this->Mode == CLASSICAL ? cga::HopfMode::Classical : cga::HopfMode::Paper;
+  const cga::HopfSampling sampling = this->Sampling(input);
+  const long long columns = this->FiberResolution + 1LL; // the last column repeats the first (seam)
   std::string problem = hopf.validate();
   if (problem.empty() && this->FiberResolution < 3)
   {
     problem = "FiberResolution must be at least 3";
   }
-  if (problem.empty() && std::isnan(this->ClipRadius)) // the clamp macro lets NaN through
+  if (problem.empty()) // before sampling: the base points alone could exhaust memory
   {
-    problem = "ClipRadius must be a number";
+    problem = vtkBoostedGridBuilder::SizeProblem(sampling.rowCount(), columns);
   }
-  const bool mesh = this->OutputType == TWISTOR_MESH;
-
-  // ---- the base points of the rows ----
-  BaseSampling base;
-  auto addRow = [&base](double theta, double phi, int strip) {
-    base.theta.push_back(theta);
-    base.phi.push_back(phi);
-    base.stripId.push_back(strip);
-  };
-  if (problem.empty() && this->SamplingMode == GRID)
-  {
-    if (this->ThetaResolution < 1 || this->PhiResolution < 1)
-    {
-      problem = "ThetaResolution and PhiResolution must be at least 1";
-    }
-    else if (!finite2(this->ThetaRange) || !finite2(this->PhiRange))
-    {
-      problem = "ThetaRange and PhiRange must be finite";
-    }
-    else if (this->ThetaRange[0] > this->ThetaRange[1] || this->PhiRange[0] > this->PhiRange[1])
-    {
-      problem = "ThetaRange and PhiRange must have minimum <= maximum";
-    }
-    else if (this->PhiRange[0] < -kHalfPi - 1e-12 || this->PhiRange[1] > kHalfPi + 1e-12)
-    {
-      problem = "PhiRange must lie within [-pi/2, pi/2]";
-    }
-    else if (!vtkBoostedGridBuilder::SizeProblem(this->GridRows(), this->FiberResolution + 1LL).empty())
-    {
-      // Checked before sampling: the base points alone could exhaust memory.
-      problem = vtkBoostedGridBuilder::SizeProblem(this->GridRows(), this->FiberResolution + 1LL);
-    }
-    else
-    {
-      const int nTheta = this->ThetaResolution, nPhi = this->PhiResolution;
-      auto thetaAt = [this, nTheta](int i) {
-        return this->ThetaRange[0] + (this->ThetaRange[1] - this->ThetaRange[0]) * i / nTheta;
-      };
-      auto phiAt = [this, nPhi](int j) {
-        const double phi = nPhi > 1
-          ? this->PhiRange[0] + (this->PhiRange[1] - this->PhiRange[0]) * j / (nPhi - 1)
-          : this->PhiRange[0];
-        return std::max(-kHalfPi, std::min(kHalfPi, phi));
-      };
-      if (mesh && this->MeshSweep == LATITUDES)
-      {
-        base.rowsPerStrip = nTheta + 1; // theta0 .. theta1 inclusive
-        for (int j = 0; j < nPhi; ++j)
-        {
-          for (int i = 0; i <= nTheta; ++i)
-          {
-            addRow(thetaAt(i), phiAt(j), j);
-          }
-        }
-      }
-      else
-      {
-        base.rowsPerStrip = nPhi;
-        for (int i = 0; i < nTheta; ++i)
-        {
-          for (int j = 0; j < nPhi; ++j)
-          {
-            addRow(thetaAt(i), phiAt(j), i);
-          }
-        }
-      }
-    }
-  }
-  else if (problem.empty() && this->SamplingMode == BASE_POINTS)
-  {
-    for (size_t k = 0; k + 1 < this->BasePoints.size(); k += 2)
-    {
-      addRow(this->BasePoints[k], this->BasePoints[k + 1], 0);
-    }
-  }
-  else if (problem.empty() && this->SamplingMode == INPUT_POINTS)
-  {
-    if (!input)
-    {
-      problem = "SamplingMode INPUT_POINTS needs an input of points";
-    }
-    else if (!std::isfinite(this->SphereCenter[0]) || !std::isfinite(this->SphereCenter[1]) ||
-      !std::isfinite(this->SphereCenter[2]))
-    {
-      problem = "SphereCenter must be finite";
-    }
-    else
-    {
-      int atCenter = 0;
-      for (vtkIdType i = 0; i < input->GetNumberOfPoints() && problem.empty(); ++i)
-      {
-        double p[3];
-        input->GetPoint(i, p);
-        const double d[3] = { p[0] - this->SphereCenter[0], p[1] - this->SphereCenter[1],
-          p[2] - this->SphereCenter[2] };
-        if (!std::isfinite(d[0]) || !std::isfinite(d[1]) || !std::isfinite(d[2]))
-        {
-          problem = "the input points must be finite (a NaN or an infinity was given)";
-        }
-        else if (d[0] == 0.0 && d[1] == 0.0 && d[2] == 0.0)
-        {
-          ++atCenter; // no direction: skipped
-        }
-        else
-        {
-          addRow(std::atan2(d[1], d[0]), std::atan2(d[2], std::hypot(d[0], d[1])), 0);
-        }
-      }
-      if (problem.empty() && atCenter > 0)
-      {
-        vtkWarningMacro(<< atCenter << " input point(s) at SphereCenter have no direction and were skipped");
-      }
-    }
-  }
-  for (size_t r = 0; problem.empty() && r < base.theta.size(); ++r)
-  {
-    if (!std::isfinite(base.theta[r]) || !std::isfinite(base.phi[r]))
-    {
-      problem = "base points must be finite (a NaN or an infinity was given)";
-    }
-    else if (base.phi[r] < -kHalfPi - 1e-12 || base.phi[r] > kHalfPi + 1e-12)
-    {
-      problem = "the latitude phi of a base point must lie within [-pi/2, pi/2]";
-    }
-    else
-    {
-      base.phi[r] = std::max(-kHalfPi, std::min(kHalfPi, base.phi[r]));
-    }
-  }
+  cga::HopfRows base;
   if (problem.empty())
   {
-    problem = vtkBoostedGridBuilder::SizeProblem(
-      static_cast<long long>(base.theta.size()), this->FiberResolution + 1LL);
+    problem = sampling.sample(base);
   }
-  if (!problem.empty())
+  if (problem.empty() && base.skipped > 0)
   {
-    vtkErrorMacro(<< problem);
-    return 1; // the output stays empty
+    vtkWarningMacro(<< base.skipped
+                    << " input point(s) at SphereCenter have no direction and were skipped");
   }
-  const int rows = static_cast<int>(base.theta.size());
-  if (rows == 0)
+  if (problem.empty() && base.size() == 0)
   {
     return 1; // no base points: an empty output
   }
-  if (mesh && (base.rowsPerStrip > 0 ? base.rowsPerStrip : rows) < 2)
+  if (problem.empty() && mesh && base.stripLength() < 2)
   {
     // A strip of one fiber has no quads: say so rather than hand on points without cells.
     vtkWarningMacro(<< "TwistorMesh needs at least two base points per strip (PhiResolution >= 2 "
                        "with Meridians, or two base or input points): the output is empty");
     return 1;
   }
-
-  // ---- this piece's rows ----
-  const int piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
-  const int pieces =
-    std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
-  int firstRow, lastRow;
-  if (!vtkBoostedGridBuilder::PieceRows(rows, mesh, piece, pieces, firstRow, lastRow))
+  vtkBoostedGridDriver driver(
+    this, outInfo, this->CircleCenter, this->ClipRadius, this->OutputPointsPrecision);
+  if (!driver.Prepare(problem, static_cast<long long>(base.size()), columns, true, mesh,
+        mesh ? base.rowsPerStrip : 0))
   {
-    return 1; // more pieces than rows (of quads): nothing here
+    return 1; // an error, or an empty piece
   }
-  // Normals at a band's edge need the neighbouring rows.
-  const int sampleFirst = mesh ? std::max(0, firstRow - 1) : firstRow;
-  const int sampleLast = mesh ? std::min(rows - 1, lastRow + 1) : lastRow;
 
-  // ---- the fibers ----
-  const int columns = this->FiberResolution + 1; // the last column repeats the first (seam)
-  vtkBoostedGridBuilder grid(rows, columns, true);
-  // No clip sphere on the grid: it keeps every finite sample (however far) so that the cells
-  // reaching beyond the clip sphere can be cut exactly on it below; only the samples at infinity
-  // (NaN from the kernel) take their cells with them.
-  const double clipRadius = this->ClipRadius * this->CircleRadius;
-  if (mesh && base.rowsPerStrip > 0)
-  {
-    grid.SetRowsPerBlock(base.rowsPerStrip);
-  }
-  std::vector<unsigned char> failed(rows, 0);
-  const int chunk = 64;
-  for (int start = sampleFirst; start <= sampleLast; start += chunk)
-  {
-    if (vtkBoostedSurfacesCheckAbort(this))
+  vtkBoostedGridBuilder& grid = driver.Grid();
+  std::atomic<int> failures{ 0 };
+  driver.SampleRows([&](int r) {
+    std::vector<cga::Vec3> points;
+    if (!hopf.fiberPoints(base.theta[r], base.phi[r], this->FiberResolution, points))
     {
-      break;
+      ++failures;
+      return;
     }
-    const int end = std::min(sampleLast + 1, start + chunk);
-    vtkSMPTools::For(start, end, [&](int begin, int finish) {
-      std::vector<cga::Vec3> points;
-      for (int r = begin; r < finish; ++r)
-      {
-        if (!hopf.fiberPoints(base.theta[r], base.phi[r], this->FiberResolution, points))
-        {
-          failed[r] = 1;
-          continue;
-        }
-        points.push_back(points.front()); // the seam column
-        cga::Vec3 newell{ 0, 0, 0 };
-        for (int c = 0; c < columns; ++c)
-        {
-          const double p[3] = { points[c].x, points[c].y, points[c].z };
-          grid.SetPoint(r, c, p);
-          if (c > 0 && cga::isFinite(points[c]) && cga::isFinite(points[c - 1]))
-          {
-            newell = newell + cga::cross(points[c - 1] - hopf.center, points[c] - hopf.center);
-          }
-        }
-        const cga::Vec3 n = cga::normalized(newell);
-        const double fallback[3] = { n.x, n.y, n.z };
-        grid.SetRowFallbackNormal(r, fallback);
-      }
-    });
-    this->UpdateProgress(static_cast<double>(end - sampleFirst) / (sampleLast - sampleFirst + 1));
-  }
-  const int failures = static_cast<int>(std::count(failed.begin(), failed.end(), 1));
+    points.push_back(points.front()); // the seam column
+    for (int c = 0; c < columns; ++c)
+    {
+      const double p[3] = { points[c].x, points[c].y, points[c].z };
+      grid.SetPoint(r, c, p);
+    }
+    const cga::Vec3 n = fiberPlaneNormal(points, hopf.center);
+    const double fallback[3] = { n.x, n.y, n.z };
+    grid.SetRowFallbackNormal(r, fallback);
+  });
   if (failures > 0)
   {
     vtkWarningMacro(<< failures << " fiber(s) could not be computed (motor logarithm failed) and were left out");
   }
 
-  std::vector<int> fiberIds(rows);
-  for (int r = 0; r < rows; ++r)
-  {
-    fiberIds[r] = r;
-  }
+  std::vector<int> fiberIds(base.size());
+  std::iota(fiberIds.begin(), fiberIds.end(), 0);
   grid.AddRowParameter("theta", base.theta);
   grid.AddRowParameter("phi", base.phi);
   grid.AddRowIntegerParameter("FiberId", fiberIds);
-  vtkNew<vtkPolyData> sampled;
   if (mesh)
   {
-    grid.AddRowIntegerParameter("StripId", base.stripId);
-    grid.BuildSurface(sampled, firstRow, lastRow, this->OutputPointsPrecision);
+    grid.AddRowIntegerParameter("StripId", base.strip);
   }
-  else
-  {
-    grid.BuildCurves(sampled, firstRow, lastRow, this->OutputPointsPrecision);
-  }
-  vtkBoostedSphereClip::Clip(sampled, this->CircleCenter, clipRadius, output);
+  driver.Build(vtkPolyData::GetData(outInfo));
   return 1;
+}
+
+cga::HopfSampling vtkHopfFibrationSource::Sampling(vtkPointSet* input) const
+{
+  cga::HopfSampling sampling;
+  sampling.mode = static_cast<cga::HopfSamplingMode>(this->SamplingMode);
+  std::copy_n(this->ThetaRange, 2, sampling.thetaRange);
+  std::copy_n(this->PhiRange, 2, sampling.phiRange);
+  sampling.thetaResolution = this->ThetaResolution;
+  sampling.phiResolution = this->PhiResolution;
+  sampling.latitudeStrips = this->OutputType == TWISTOR_MESH && this->MeshSweep == LATITUDES;
+  if (this->SamplingMode == BASE_POINTS)
+  {
+    sampling.basePoints = this->BasePoints;
+  }
+  sampling.sphereCenter = { this->SphereCenter[0], this->SphereCenter[1], this->SphereCenter[2] };
+  if (input)
+  {
+    sampling.inputCount = static_cast<std::size_t>(input->GetNumberOfPoints());
+    sampling.point = [input](std::size_t i) {
+      double p[3];
+      input->GetPoint(static_cast<vtkIdType>(i), p);
+      return cga::Vec3{ p[0], p[1], p[2] };
+    };
+  }
+  return sampling;
 }
 
 void vtkHopfFibrationSource::PrintSelf(ostream& os, vtkIndent indent)

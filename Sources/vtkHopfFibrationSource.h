@@ -13,7 +13,7 @@
  * - Mode CLASSICAL: the stereographic projection of the Hopf fibration of S^3 (great circles
  *   e^{it}(z1, z2)), whose antipodal fibers commute.
  *
- * Base points (SamplingMode):
+ * Base points (SamplingMode; cga/surfaces/HopfSampling.h):
  * - GRID: ThetaResolution longitudes theta0 + i (theta1 - theta0)/ThetaResolution, i = 0 ..
  *   ThetaResolution-1 (half-open: theta is periodic), times PhiResolution latitudes
  *   phi0 + j (phi1 - phi0)/(PhiResolution - 1), j = 0 .. PhiResolution-1 (closed; one sample: phi0).
@@ -34,10 +34,8 @@
  *   "TextureCoordinates", "theta", "phi", "FiberId" and "StripId".
  *
  * Clipping: fibers near phi = +pi/2 are huge and the north-pole fiber is a line. The output is cut
- * at the sphere of radius ClipRadius * CircleRadius about CircleCenter (ClipRadius is relative to
- * the circle radius): every finite sample is computed, and each fiber segment or quad edge crossing
- * the sphere is cut exactly at the crossing (vtkBoostedSphereClip), so the cut lies on the sphere;
- * cut quads become polygons of 3 to 6 points. Only samples at infinity drop their cells before the
+ * exactly at the clip sphere, radius ClipRadius about CircleCenter (vtkBoostedGridDriver); cut
+ * quads become polygons of 3 to 6 points. Only samples at infinity drop their cells before the
  * cut.
  *
  * Pieces: fibers (FIBERS) or rows of quads (TWISTOR_MESH) are divided among the requested pieces.
@@ -55,6 +53,12 @@
 #include "vtkPolyDataAlgorithm.h"
 
 #include <vector> // for the base points
+
+class vtkPointSet;
+namespace cga
+{
+struct HopfSampling;
+}
 
 class BOOSTEDSURFACESSOURCES_EXPORT vtkHopfFibrationSource : public vtkPolyDataAlgorithm
 {
@@ -148,9 +152,8 @@ public:
   ///@}
 
   ///@{
-  /// The output is cut exactly at the sphere of radius ClipRadius * CircleRadius about
-  /// CircleCenter (relative to the circle radius). Default 10.
-  vtkSetClampMacro(ClipRadius, double, 1e-6, 1e6);
+  /// The radius of the clip sphere about CircleCenter, where the output is cut. Default 10.
+  vtkSetClampMacro(ClipRadius, double, 1e-6, 1e12);
   vtkGetMacro(ClipRadius, double);
   ///@}
 
@@ -180,8 +183,8 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  /// Rows (fibers) of the Grid sampling, computed without overflow for the size check.
-  long long GridRows() const;
+  /// The base points' parameters for the core (cga::HopfSampling); `input` may be null.
+  cga::HopfSampling Sampling(vtkPointSet* input) const;
 
   int Mode = PAPER;
   double CircleCenter[3] = { 0.0, 0.0, 0.0 };

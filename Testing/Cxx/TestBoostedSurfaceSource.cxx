@@ -2,6 +2,7 @@
 #include "vtkBoostedSurfaceSource.h"
 
 #include "BadParameterCases.h"
+#include "GridSourceChecks.h"
 #include "ProgressLog.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -326,21 +327,65 @@ TEST(BoostedSurfaceSource, ReportsProgressAndAnAbortedUpdateIsEmpty)
 {
   for (bool abort : { false, true })
   {
-    vtkNew<vtkBoostedSurfaceSource> source; // 65 rows, one progress step each
+    // 4032 rows of 65 samples: 4 blocks of 1008 rows (vtkBoostedBlockLoop: 65536 samples a block)
+    vtkNew<vtkBoostedSurfaceSource> source;
+    source->SetLambdaResolution(4031);
     ProgressLog log;
-    log.abortAfterFirstStep = abort; // after the first row
+    log.abortAfterFirstStep = abort; // after the first block
     log.Observe(source);
     source->Update();
     if (!abort)
     {
-      EXPECT_GE(log.Steps().size(), 65u);
+      EXPECT_EQ(log.Steps().size(), 4u + 1); // and the executive's 1 at the end
       EXPECT_GT(source->GetOutput()->GetNumberOfPolys(), 0);
     }
     else
     {
-      EXPECT_LT(log.Steps().size(), 65u);
+      EXPECT_LT(log.Steps().size(), 4u);
       EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
       EXPECT_EQ(source->GetOutput()->GetNumberOfCells(), 0);
     }
+  }
+}
+
+TEST(BoostedSurfaceSource, OutputIsCutExactlyAtTheClipSphereAboutTheCircleCenter)
+{
+  // Fig 1: circles boosted in their plane pass through the boost's pole near lambda = +-1.
+  const double center[3] = { 0.3, -0.2, 0.1 };
+  const double clipRadius = 4.0;
+  for (int type : { vtkBoostedSurfaceSource::CIRCLES, vtkBoostedSurfaceSource::SURFACE })
+  {
+    vtkNew<vtkBoostedSurfaceSource> source;
+    source->SetCircleCenter(center[0], center[1], center[2]);
+    source->SetCircleNormal(0, 0, 1);
+    source->SetLambdaRange(-3, 3);
+    source->SetLambdaResolution(24);
+    source->SetThetaResolution(256);
+    source->SetClipRadius(clipRadius);
+    source->SetOutputType(type);
+    source->Update();
+    vtkPolyData* output = source->GetOutput();
+    vtkDataArray* lambda = output->GetPointData()->GetArray("lambda");
+    vtkDataArray* tcoords = output->GetPointData()->GetTCoords();
+    // The surface's own border: the first and last lambda, the texture seam u = 0 or 1.
+    auto onOwnBorder = [&](vtkIdType i) {
+      if (!tcoords)
+      {
+        return false; // circles: every open end is a cut
+      }
+      const double u = tcoords->GetComponent(i, 0);
+      return std::fabs(std::fabs(lambda->GetTuple1(i)) - 3.0) < 1e-9 || u < 1e-6 || u > 1.0 - 1e-6;
+    };
+    ExpectCutExactlyAtTheSphere(output, center, clipRadius, onOwnBorder, 8,
+      type == vtkBoostedSurfaceSource::CIRCLES ? "circles" : "surface");
+  }
+}
+
+TEST(BoostedSurfaceSource, OutOfRangePiecesAreEmpty)
+{
+  for (int type : { vtkBoostedSurfaceSource::SURFACE, vtkBoostedSurfaceSource::CIRCLES })
+  {
+    ExpectOutOfRangePiecesEmpty<vtkBoostedSurfaceSource>(
+      [type](vtkBoostedSurfaceSource* s) { s->SetOutputType(type); });
   }
 }

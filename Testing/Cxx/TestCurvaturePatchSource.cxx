@@ -4,6 +4,7 @@
 #include "vtkCurvaturePatchSource.h"
 
 #include "BadParameterCases.h"
+#include "GridSourceChecks.h"
 #include "ProgressLog.h"
 #include "vtkDataArray.h"
 #include "vtkMath.h"
@@ -286,21 +287,56 @@ TEST(CurvaturePatchSource, ReportsProgressAndAnAbortedUpdateIsEmpty)
   for (bool abort : { false, true })
   {
     vtkNew<vtkCurvaturePatchSource> source;
-    source->SetVResolution(100); // 101 rows: 7 blocks of 16
+    // 4001 rows of 33 samples: 3 blocks (vtkBoostedBlockLoop: 65536 samples a block)
+    source->SetVResolution(4000);
     ProgressLog log;
     log.abortAfterFirstStep = abort; // after the first block: a part of the patch is computed
     log.Observe(source);
     source->Update();
     if (!abort)
     {
-      EXPECT_GE(log.Steps().size(), 7u);
-      EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 33 * 101);
+      EXPECT_EQ(log.Steps().size(), 3u + 1); // and the executive's 1 at the end
+      EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 33 * 4001);
     }
     else
     {
-      EXPECT_LT(log.Steps().size(), 7u);
+      EXPECT_LT(log.Steps().size(), 3u);
       EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
       EXPECT_EQ(source->GetOutput()->GetNumberOfCells(), 0);
     }
+  }
+}
+
+TEST(CurvaturePatchSource, OutputIsCutExactlyAtTheClipSphereAboutTheOrigin)
+{
+  const double origin[3] = { 0.5, -1.0, 2.0 };
+  const double clipRadius = 1.7; // inside the 4 x 4 patch: cuts every side
+  for (int type : { vtkCurvaturePatchSource::LINES, vtkCurvaturePatchSource::SURFACE })
+  {
+    vtkNew<vtkCurvaturePatchSource> source;
+    source->SetOrigin(origin);
+    source->SetUDirection(1, 1, 0);
+    source->SetVDirection(0, 1, 1);
+    source->SetClipRadius(clipRadius);
+    source->SetOutputType(type);
+    source->Update();
+    vtkPolyData* output = source->GetOutput();
+    vtkDataArray* u = output->GetPointData()->GetArray("u");
+    vtkDataArray* v = output->GetPointData()->GetArray("v");
+    auto onOwnBorder = [&](vtkIdType i) {
+      return std::fabs(std::fabs(u->GetTuple1(i)) - 2.0) < 1e-9 ||
+        std::fabs(std::fabs(v->GetTuple1(i)) - 2.0) < 1e-9;
+    };
+    ExpectCutExactlyAtTheSphere(output, origin, clipRadius, onOwnBorder, 20,
+      type == vtkCurvaturePatchSource::LINES ? "lines" : "surface");
+  }
+}
+
+TEST(CurvaturePatchSource, OutOfRangePiecesAreEmpty)
+{
+  for (int type : { vtkCurvaturePatchSource::SURFACE, vtkCurvaturePatchSource::LINES })
+  {
+    ExpectOutOfRangePiecesEmpty<vtkCurvaturePatchSource>(
+      [type](vtkCurvaturePatchSource* s) { s->SetOutputType(type); });
   }
 }

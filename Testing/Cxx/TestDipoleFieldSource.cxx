@@ -3,6 +3,7 @@
 #include "vtkDipoleFieldSource.h"
 
 #include "EventCounter.h"
+#include "GridSourceChecks.h"
 #include "ProgressLog.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
@@ -346,7 +347,7 @@ TEST(DipoleFieldSource, ReportsProgressAndStopsWithAnEmptyOutputWhenAborted)
   for (bool abort : { false, true })
   {
     vtkNew<vtkDipoleFieldSource> source;
-    source->SetDimensions(64, 64, 8); // 32768 points: 20 blocks
+    source->SetDimensions(64, 64, 40); // 163840 points: 3 blocks (vtkBoostedBlockLoop: 65536 a block)
     vtkNew<vtkCallbackCommand> onProgress;
     ProgressLog log;
     log.abortOnFirst = abort;
@@ -364,13 +365,13 @@ TEST(DipoleFieldSource, ReportsProgressAndStopsWithAnEmptyOutputWhenAborted)
     }
     if (!abort)
     {
-      EXPECT_GE(blockProgress.size(), 20u);
+      EXPECT_EQ(blockProgress.size(), 3u + 1); // and the executive's 1 at the end
       EXPECT_DOUBLE_EQ(log.values.back(), 1.0);
-      EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 64 * 64 * 8);
+      EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 64 * 64 * 40);
     }
     else
     {
-      EXPECT_LT(blockProgress.size(), 20u);
+      EXPECT_LT(blockProgress.size(), 3u);
       EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
     }
   }
@@ -454,4 +455,9 @@ TEST(DipoleFieldSource, PotentialIsTheClosedFormSumOfDipolePotentials)
       }
     }
   }
+}
+
+TEST(DipoleFieldSource, OutOfRangePiecesAreEmpty)
+{
+  ExpectOutOfRangePiecesEmpty<vtkDipoleFieldSource>([](vtkDipoleFieldSource*) {});
 }

@@ -4,6 +4,7 @@
 #include "vtkHopfFibrationSource.h"
 
 #include "BadParameterCases.h"
+#include "GridSourceChecks.h"
 #include "ProgressLog.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -126,6 +127,7 @@ TEST(HopfFibrationSource, FibersMatchTheKernelInAnyFrame)
     source->AddBasePoint(2.0, 0.2);
     source->AddBasePoint(-1.0, 1.0);
     source->SetFiberResolution(16);
+    source->SetClipRadius(20.0); // about the circle's center: no fiber is cut
     source->Update();
     cga::HopfFibration hopf;
     hopf.center = { 1.0, -2.0, 0.5 };
@@ -175,7 +177,7 @@ TEST(HopfFibrationSource, PolesGiveTheCircleAndTheAxis)
     else
     {
       EXPECT_NEAR(std::hypot(p[0], p[1]), 0.0, 1e-12);
-      EXPECT_LE(std::fabs(p[2] - 1.0), 10.0 * 0.5 + 1e-12); // clipped relative to the radius
+      EXPECT_LE(std::fabs(p[2] - 1.0), 10.0 + 1e-12); // the clip sphere: radius 10 about the center
     }
   }
 }
@@ -437,16 +439,10 @@ TEST(HopfFibrationSource, SinglePrecisionPoints)
   EXPECT_EQ(source->GetOutput()->GetPoints()->GetDataType(), VTK_FLOAT);
 }
 // Distance from the clip sphere, relative to its radius (negative inside).
-double relativeSphereExcess(const double p[3], const double center[3], double radius)
-{
-  return std::sqrt(vtkMath::Distance2BetweenPoints(p, center)) / radius - 1.0;
-}
-
 TEST(HopfFibrationSource, ClippedOutputEndsExactlyOnTheClipSphere)
 {
   const double center[3] = { 0.3, -0.2, 0.1 };
-  const double circleRadius = 1.3, clipRadius = 2.5;
-  const double sphereRadius = clipRadius * circleRadius;
+  const double circleRadius = 1.3, sphereRadius = 3.25;
   const double phiRange[2] = { -1.2, kPi / 2 };
   for (int mode : { vtkHopfFibrationSource::PAPER, vtkHopfFibrationSource::CLASSICAL })
   {
@@ -458,83 +454,38 @@ TEST(HopfFibrationSource, ClippedOutputEndsExactlyOnTheClipSphere)
       source->SetCircleCenter(center[0], center[1], center[2]);
       source->SetCircleNormal(0.2, -0.4, 1.0);
       source->SetCircleRadius(circleRadius);
-      source->SetClipRadius(clipRadius);
+      source->SetClipRadius(sphereRadius);
       source->SetThetaResolution(6);
       source->SetPhiRange(phiRange[0], phiRange[1]);
       source->SetPhiResolution(24);
       source->SetFiberResolution(48);
       source->Update();
       vtkPolyData* output = source->GetOutput();
-      ASSERT_GT(output->GetNumberOfCells(), 0);
       const std::string what = std::string(mode == vtkHopfFibrationSource::PAPER ? "paper" : "classical") +
         (type == vtkHopfFibrationSource::FIBERS ? " fibers" : " mesh");
-
-      // Nothing outside the sphere.
-      for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
-      {
-        double p[3];
-        output->GetPoint(i, p);
-        EXPECT_LE(relativeSphereExcess(p, center, sphereRadius), 1e-9) << what;
-      }
-
-      // The cut: the ends of open fibers, and the mesh edges used by one quad that are not the
-      // strip's own border (its first and last fiber, the texture seam u = 0 or 1).
-      std::vector<vtkIdType> boundary;
-      if (type == vtkHopfFibrationSource::FIBERS)
-      {
-        vtkCellArray* lines = output->GetLines();
-        vtkIdType npts;
-        const vtkIdType* ids;
-        for (lines->InitTraversal(); lines->GetNextCell(npts, ids);)
+      // The strip's own border: its first and last fiber, the texture seam u = 0 or 1.
+      vtkDataArray* phi = output->GetPointData()->GetArray("phi");
+      vtkDataArray* tcoords = output->GetPointData()->GetTCoords();
+      auto onStripBorder = [&](vtkIdType i) {
+        if (!tcoords)
         {
-          if (ids[0] != ids[npts - 1])
-          {
-            boundary.push_back(ids[0]);
-            boundary.push_back(ids[npts - 1]);
-          }
+          return false; // fibers: every open end is a cut
         }
-      }
-      else
-      {
-        vtkDataArray* phi = output->GetPointData()->GetArray("phi");
-        vtkDataArray* tcoords = output->GetPointData()->GetTCoords();
-        auto onStripBorder = [&](vtkIdType i) {
-          const double u = tcoords->GetComponent(i, 0);
-          return std::fabs(phi->GetTuple1(i) - phiRange[0]) < 1e-9 ||
-            std::fabs(phi->GetTuple1(i) - phiRange[1]) < 1e-9 || u < 1e-6 || u > 1.0 - 1e-6;
-        };
-        std::map<std::pair<vtkIdType, vtkIdType>, int> edgeUses;
-        vtkCellArray* polys = output->GetPolys();
-        vtkIdType npts;
-        const vtkIdType* ids;
-        for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
-        {
-          for (vtkIdType k = 0; k < npts; ++k)
-          {
-            const vtkIdType a = ids[k], b = ids[(k + 1) % npts];
-            ++edgeUses[{ std::min(a, b), std::max(a, b) }];
-          }
-        }
-        for (const auto& edge : edgeUses)
-        {
-          const vtkIdType a = edge.first.first, b = edge.first.second;
-          if (edge.second == 1 && !(onStripBorder(a) && onStripBorder(b)))
-          {
-            boundary.push_back(a);
-            boundary.push_back(b);
-          }
-        }
-      }
-      EXPECT_GT(boundary.size(), 20u) << what << ": the sphere cuts this output";
-      for (vtkIdType i : boundary)
-      {
-        double p[3];
-        output->GetPoint(i, p);
-        EXPECT_LE(std::fabs(relativeSphereExcess(p, center, sphereRadius)), 1e-9)
-          << what << ": boundary point " << i << " at (" << p[0] << ", " << p[1] << ", " << p[2]
-          << ")";
-      }
+        const double u = tcoords->GetComponent(i, 0);
+        return std::fabs(phi->GetTuple1(i) - phiRange[0]) < 1e-9 ||
+          std::fabs(phi->GetTuple1(i) - phiRange[1]) < 1e-9 || u < 1e-6 || u > 1.0 - 1e-6;
+      };
+      ExpectCutExactlyAtTheSphere(output, center, sphereRadius, onStripBorder, 20, what);
     }
+  }
+}
+
+TEST(HopfFibrationSource, OutOfRangePiecesAreEmpty)
+{
+  for (int type : { vtkHopfFibrationSource::FIBERS, vtkHopfFibrationSource::TWISTOR_MESH })
+  {
+    ExpectOutOfRangePiecesEmpty<vtkHopfFibrationSource>(
+      [type](vtkHopfFibrationSource* s) { s->SetOutputType(type); });
   }
 }
 } // namespace
@@ -544,20 +495,21 @@ TEST(HopfFibrationSource, ReportsProgressAndAnAbortedUpdateIsEmpty)
   for (bool abort : { false, true })
   {
     vtkNew<vtkHopfFibrationSource> source;
-    source->SetThetaResolution(10);
-    source->SetPhiResolution(20); // 200 fibers: 4 chunks of 64
+    // 1200 fibers of 129 samples: 3 blocks of 508 fibers (vtkBoostedBlockLoop: 65536 samples)
+    source->SetThetaResolution(20);
+    source->SetPhiResolution(60);
     ProgressLog log;
-    log.abortAfterFirstStep = abort; // after the first chunk: some fibers are computed
+    log.abortAfterFirstStep = abort; // after the first block: some fibers are computed
     log.Observe(source);
     source->Update();
     if (!abort)
     {
-      EXPECT_GE(log.Steps().size(), 4u);
-      EXPECT_GT(source->GetOutput()->GetNumberOfLines(), 190);
+      EXPECT_EQ(log.Steps().size(), 3u + 1); // and the executive's 1 at the end
+      EXPECT_GT(source->GetOutput()->GetNumberOfLines(), 1140);
     }
     else
     {
-      EXPECT_LT(log.Steps().size(), 4u);
+      EXPECT_LT(log.Steps().size(), 3u);
       EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
       EXPECT_EQ(source->GetOutput()->GetNumberOfCells(), 0);
     }

@@ -1,0 +1,34 @@
+/**
+ * @class   vtkBoostedBlockLoop
+ * @brief   the one work loop of the project's algorithms: blocks, progress, abort, threads
+ *
+ * Work of many independent items (grid samples, rows of samples, points) runs in blocks of about
+ * SamplesPerBlock samples; vtkSMPTools spreads each block over the threads. Between blocks, on the
+ * calling thread only: the abort check (before each block) and the progress (after each block,
+ * the fraction of items done). Each item must write only its own slots, so the result does not
+ * depend on the blocks or the threads.
+ */
+#ifndef vtkBoostedBlockLoop_h
+#define vtkBoostedBlockLoop_h
+
+#include "BoostedSurfacesCommonModule.h" // for export macro
+#include "vtkType.h"                     // for vtkIdType
+
+#include <functional> // for the work
+
+class vtkAlgorithm;
+
+class BOOSTEDSURFACESCOMMON_EXPORT vtkBoostedBlockLoop
+{
+public:
+  /// About this many samples between two progress updates and abort checks.
+  static constexpr vtkIdType SamplesPerBlock = 65536;
+
+  /// Runs work(first, last) over the items [begin, end), each worth `samplesPerItem` samples
+  /// (1 for a point, the columns of a row). Returns false when `algorithm` was aborted (the
+  /// remaining blocks are not run).
+  static bool For(vtkAlgorithm* algorithm, vtkIdType begin, vtkIdType end,
+    vtkIdType samplesPerItem, const std::function<void(vtkIdType first, vtkIdType last)>& work);
+};
+
+#endif

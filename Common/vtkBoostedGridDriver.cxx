@@ -1,0 +1,121 @@
+#include "vtkBoostedGridDriver.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkBoostedBlockLoop.h"
+#include "vtkBoostedSphereClip.h"
+#include "vtkInformation.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkBoostedGridDriver::vtkBoostedGridDriver(vtkAlgorithm* source, vtkInformation* outputInformation,
+  const double clipCenter[3], double clipRadius, int outputPointsPrecision)
+  : Source(source)
+  , OutputInformation(outputInformation)
+  , ClipCenter{ clipCenter[0], clipCenter[1], clipCenter[2] }
+  , ClipRadius(clipRadius)
+  , OutputPointsPrecision(outputPointsPrecision)
+{
+}
+
+vtkBoostedGridDriver::~vtkBoostedGridDriver() = default;
+
+std::string vtkBoostedGridDriver::ClipSphereProblem(const double center[3], double radius)
+{
+  if (!(std::isfinite(center[0]) && std::isfinite(center[1]) && std::isfinite(center[2])))
+  {
+    return "the clip sphere's center must be finite";
+  }
+  if (!(radius > 0.0) || !std::isfinite(radius)) // the clamp macros let NaN through
+  {
+    return "ClipRadius must be a positive number";
+  }
+  return {};
+}
+
+bool vtkBoostedGridDriver::Prepare(const std::string& sourceProblem, long long rows,
+  long long columns, bool periodicColumns, bool surface, int rowsPerStrip)
+{
+  std::string problem = sourceProblem;
+  if (problem.empty())
+  {
+    problem = ClipSphereProblem(this->ClipCenter, this->ClipRadius);
+  }
+  if (problem.empty())
+  {
+    problem = vtkBoostedGridBuilder::SizeProblem(rows, columns);
+  }
+  if (!problem.empty())
+  {
+    vtkErrorWithObjectMacro(this->Source, << problem);
+    return false; // the output stays empty
+  }
+  // Within MaximumSamples, hence within int.
+  const int rowCount = static_cast<int>(rows);
+  const int piece =
+    this->OutputInformation->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
+  const int pieces =
+    this->OutputInformation->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
+  if (rowCount < 1 || columns < 1 ||
+    !vtkBoostedGridBuilder::PieceRows(
+      rowCount, surface, piece, pieces, this->FirstRow, this->LastRow))
+  {
+    return false; // an empty piece
+  }
+  this->Surface = surface;
+  this->Columns = static_cast<int>(columns);
+  this->SampleFirst = surface ? std::max(0, this->FirstRow - 1) : this->FirstRow;
+  this->SampleLast = surface ? std::min(rowCount - 1, this->LastRow + 1) : this->LastRow;
+  this->Builder.reset(new vtkBoostedGridBuilder(rowCount, this->Columns, periodicColumns));
+  if (rowsPerStrip > 0)
+  {
+    this->Builder->SetRowsPerBlock(rowsPerStrip);
+  }
+  return true;
+}
+
+bool vtkBoostedGridDriver::SampleRows(const std::function<void(int)>& sample)
+{
+  this->Aborted = !vtkBoostedBlockLoop::For(this->Source, this->SampleFirst, this->SampleLast + 1,
+    this->Columns, [&sample](vtkIdType first, vtkIdType last) {
+      for (vtkIdType r = first; r < last; ++r)
+      {
+        sample(static_cast<int>(r));
+      }
+    });
+  return !this->Aborted;
+}
+
+bool vtkBoostedGridDriver::SampleGrid(const std::function<void(int, int)>& sample)
+{
+  const vtkIdType columns = this->Columns;
+  this->Aborted = !vtkBoostedBlockLoop::For(this->Source, this->SampleFirst * columns,
+    (this->SampleLast + 1) * columns, 1, [&sample, columns](vtkIdType first, vtkIdType last) {
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        sample(static_cast<int>(i / columns), static_cast<int>(i % columns));
+      }
+    });
+  return !this->Aborted;
+}
+
+void vtkBoostedGridDriver::Build(vtkPolyData* output)
+{
+  if (this->Aborted || !this->Builder)
+  {
+    return; // never hand on a half-computed grid
+  }
+  vtkNew<vtkPolyData> sampled;
+  if (this->Surface)
+  {
+    this->Builder->BuildSurface(sampled, this->FirstRow, this->LastRow, this->OutputPointsPrecision);
+  }
+  else
+  {
+    this->Builder->BuildCurves(sampled, this->FirstRow, this->LastRow, this->OutputPointsPrecision);
+  }
+  vtkBoostedSphereClip::Clip(sampled, this->ClipCenter, this->ClipRadius, output);
+}

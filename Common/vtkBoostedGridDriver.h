@@ -1,0 +1,82 @@
+/**
+ * @class   vtkBoostedGridDriver
+ * @brief   the RequestData steps every grid source shares, around vtkBoostedGridBuilder
+ *
+ * A grid source (Boosted Surface, Curvature Patch, Hopf Fibration) validates its own parameters,
+ * then hands the rest to this class:
+ * 1. Prepare: reports the source's problem, a bad clip radius or a grid beyond
+ *    vtkBoostedGridBuilder::MaximumSamples as one error (the output stays empty), and finds the
+ *    rows of the requested piece (an out-of-range piece is empty, as in VTK's sources). A surface
+ *    also samples one halo row on each side, which the normals at the band's edge need.
+ * 2. SampleRows or SampleGrid: the source computes its samples, in vtkBoostedBlockLoop's blocks
+ *    (progress, abort, threads).
+ * 3. Build: quads or polylines (vtkBoostedGridBuilder), cut exactly at the clip sphere
+ *    (vtkBoostedSphereClip): every finite sample is kept until the cut, so the output ends on the
+ *    sphere (to round-off), not at the last whole grid cell inside it. An aborted update stays
+ *    empty.
+ *
+ * The clip sphere has one meaning in every source: radius ClipRadius (an absolute length) about
+ * the construction's center (the circle's center, the patch's origin).
+ */
+#ifndef vtkBoostedGridDriver_h
+#define vtkBoostedGridDriver_h
+
+#include "BoostedSurfacesCommonModule.h" // for export macro
+#include "vtkBoostedGridBuilder.h"       // for the grid
+
+#include <functional> // for the sampling work
+#include <memory>     // for the grid
+#include <string>     // for the problem
+
+class vtkAlgorithm;
+class vtkInformation;
+class vtkPolyData;
+
+class BOOSTEDSURFACESCOMMON_EXPORT vtkBoostedGridDriver
+{
+public:
+  /// `source` reports errors, progress and abort; `outputInformation` holds the piece request.
+  vtkBoostedGridDriver(vtkAlgorithm* source, vtkInformation* outputInformation,
+    const double clipCenter[3], double clipRadius, int outputPointsPrecision);
+  ~vtkBoostedGridDriver();
+
+  /// Step 1. `problem`: the source's own validation (empty when its parameters are valid). A
+  /// surface makes quads between rows (and needs at least two); otherwise each row is a polyline.
+  /// `rowsPerStrip` > 0 splits the rows into strips (vtkBoostedGridBuilder::SetRowsPerBlock).
+  /// Returns false when there is nothing to compute: an error was reported, or the piece is empty.
+  bool Prepare(const std::string& problem, long long rows, long long columns, bool periodicColumns,
+    bool surface, int rowsPerStrip = 0);
+
+  /// The grid, to set points, fallback normals and parameters (after Prepare).
+  vtkBoostedGridBuilder& Grid() { return *this->Builder; }
+
+  /// Step 2: sample(row) for every row this piece needs (its rows and halo), or sample(row,
+  /// column) for every sample of those rows; called from several threads at once. False when
+  /// aborted.
+  bool SampleRows(const std::function<void(int row)>& sample);
+  bool SampleGrid(const std::function<void(int row, int column)>& sample);
+
+  /// Step 3: this piece's cells, cut at the clip sphere, into `output` (left empty when aborted).
+  void Build(vtkPolyData* output);
+
+  /// Empty when (center, radius) is a valid clip sphere, otherwise what is wrong with it.
+  static std::string ClipSphereProblem(const double center[3], double radius);
+
+private:
+  vtkBoostedGridDriver(const vtkBoostedGridDriver&) = delete;
+  void operator=(const vtkBoostedGridDriver&) = delete;
+
+  vtkAlgorithm* Source;
+  vtkInformation* OutputInformation;
+  double ClipCenter[3];
+  double ClipRadius;
+  int OutputPointsPrecision;
+  std::unique_ptr<vtkBoostedGridBuilder> Builder;
+  bool Surface = false;
+  int Columns = 0;
+  int FirstRow = 0, LastRow = -1;     // this piece's rows
+  int SampleFirst = 0, SampleLast = -1; // with the halo
+  bool Aborted = false;
+};
+
+#endif
