@@ -9,7 +9,8 @@ lambda/(lambda^2-1) e1 and radius 1/|lambda^2-1|:
 * lambda > 1: it comes back from the right, turned inside out, and shrinks onto its old center.
 
 vtkBoostedSurfaceSource with OutputType CIRCLES gives one polyline per lambda, carrying the point
-array "lambda" used for the colours. Parts farther than ClipRadius from the center are cut away.
+array "lambda" used for the colours. The circles are cut exactly at the clip sphere, radius
+ClipRadius about the center.
 
     python3 fig1_boosted_circle.py --output fig1.png --size 900 700
 """

@@ -22,7 +22,7 @@ from vtkmodules.vtkFiltersSources import vtkLineSource
 import gallery_common as gc
 
 SPACING = 3.2  # distance between the panels along x
-CLIP = 2.2  # clip radius (relative to the circle radius 1) of the huge fibers near phi = pi/2
+CLIP = 2.2  # clip radius about the circle center (circle radius 1) of the huge fibers near phi = pi/2
 PHI_RANGE = (-math.pi / 2, math.pi / 2)
 
 

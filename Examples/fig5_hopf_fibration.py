@@ -20,7 +20,7 @@ from boostedsurfaces import vtkHopfFibrationSource
 
 import gallery_common as gc
 
-CLIP = 3.0  # relative to the circle radius (1): the fibers near the north pole are cut there
+CLIP = 3.0  # clip radius about the circle center (circle radius 1): the fibers near the north pole are cut there
 
 
 def fig5_source(classical=False):
