@@ -144,6 +144,20 @@ struct DeformWorker
   }
 };
 
+// One tuple per generator point: a shorter array would be read past its end, a longer one is a
+// mistake of the same kind.
+bool hasOneTuplePerPoint(vtkDataArray* array, vtkIdType points, std::string& problem)
+{
+  if (array->GetNumberOfTuples() == points)
+  {
+    return true;
+  }
+  problem = std::string("the Generators point array '") + array->GetName() + "' has " +
+    std::to_string(array->GetNumberOfTuples()) + " tuples for " + std::to_string(points) +
+    " points; it needs one per point";
+  return false;
+}
+
 // Reads the generators of the second input port; false with `problem` set on bad arrays.
 bool readGeneratorPort(vtkPointSet* generators, const char* directionName, const char* weightName,
   bool useWeights, std::vector<cga::PointPairGenerator>& out, std::string& problem)
@@ -171,6 +185,10 @@ bool readGeneratorPort(vtkPointSet* generators, const char* directionName, const
       std::to_string(directionArray->GetNumberOfComponents()) + " components";
     return false;
   }
+  if (!hasOneTuplePerPoint(directions, count, problem))
+  {
+    return false;
+  }
   vtkDataArray* weights = nullptr;
   if (useWeights)
   {
@@ -189,6 +207,10 @@ bool readGeneratorPort(vtkPointSet* generators, const char* directionName, const
         "' must be a numeric array of 1 component (weights), it is a " +
         weightArray->GetClassName() + " of " +
         std::to_string(weightArray->GetNumberOfComponents()) + " components";
+      return false;
+    }
+    if (!hasOneTuplePerPoint(weights, count, problem))
+    {
       return false;
     }
   }

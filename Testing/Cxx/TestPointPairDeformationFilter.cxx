@@ -960,7 +960,53 @@ TEST(PointPairDeformationFilter, BadGeneratorArraysAreErrorsWithEmptyOutput)
     filter->SetUseGeneratorWeightArray(c.useWeights);
     filter->Update();
     EXPECT_EQ(events.errors, 1) << c.expectedWords;
+    EXPECT_NE(events.lastError.find(c.expectedWords), std::string::npos) << events.lastError;
     EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0) << c.expectedWords;
+  }
+}
+
+// Issue 15: a Direction or Weight array shorter than the generator points was read past its end
+// (garbage generators; SIGSEGV at 2,000,000 points).
+TEST(PointPairDeformationFilter, GeneratorArraysOfAnotherLengthThanThePointsAreErrors)
+{
+  Random random(28);
+  auto mesh = randomMesh(random, 4, 1.0);
+  struct Case
+  {
+    vtkIdType points;
+    const char* array;
+    vtkIdType tuples;
+  };
+  for (const Case& c : { Case{ 3, "Direction", 2 }, Case{ 3, "Weight", 1 },
+         Case{ 3, "Direction", 4 }, Case{ 2000000, "Direction", 1 }, Case{ 2000000, "Weight", 1 } })
+  {
+    vtkNew<vtkPoints> points;
+    points->SetNumberOfPoints(c.points);
+    points->GetData()->Fill(0.5);
+    vtkNew<vtkDoubleArray> directions;
+    directions->SetName("Direction");
+    directions->SetNumberOfComponents(3);
+    directions->SetNumberOfTuples(std::string(c.array) == "Direction" ? c.tuples : c.points);
+    directions->Fill(1.0);
+    vtkNew<vtkDoubleArray> weights;
+    weights->SetName("Weight");
+    weights->SetNumberOfTuples(std::string(c.array) == "Weight" ? c.tuples : c.points);
+    weights->Fill(0.25);
+    vtkNew<vtkPolyData> generators;
+    generators->SetPoints(points);
+    generators->GetPointData()->AddArray(directions);
+    generators->GetPointData()->AddArray(weights);
+    vtkNew<vtkPointPairDeformationFilter> filter;
+    EventCounter events(filter);
+    filter->SetInputData(mesh);
+    filter->SetGeneratorsData(generators);
+    filter->UseGeneratorWeightArrayOn();
+    filter->Update();
+    const std::string expected = std::string("array '") + c.array + "' has " +
+      std::to_string(c.tuples) + " tuples for " + std::to_string(c.points) + " points";
+    EXPECT_EQ(events.errors, 1) << expected;
+    EXPECT_NE(events.lastError.find(expected), std::string::npos) << events.lastError;
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0) << expected;
   }
 }
 

@@ -135,6 +135,19 @@ class PointPairDeformationFilterTest(unittest.TestCase):
             self.assertEqual(len(outputs[0]), sphere.GetNumberOfPoints())
             self.assertEqual(outputs[0], outputs[1], value_type)
 
+    def test_short_generator_array_is_an_error_python_sees(self):
+        deformation = vtkPointPairDeformationFilter()
+        events = common.ErrorRecorder(deformation)
+        sphere = self.sphere()
+        deformation.SetInputConnection(sphere.GetOutputPort())
+        generators = generator_cloud([((0, 0, 0), (1, 0, 0), 1.0), ((1, 0, 0), (0, 1, 0), 0.5)])
+        generators.GetPointData().GetArray("Direction").SetNumberOfTuples(1)
+        deformation.SetGeneratorsData(generators)
+        deformation.Update()
+        self.assertEqual(len(events.messages), 1)
+        self.assertIn("has 1 tuples for 2 points", events.messages[0])
+        self.assertEqual(deformation.GetOutput().GetNumberOfPoints(), 0)
+
     def test_zero_direction_is_a_warning(self):
         deformation = vtkPointPairDeformationFilter()
         events = common.ErrorRecorder(deformation)
