@@ -17,6 +17,7 @@
 #include "vtkPoints.h"
 #include "vtkRectilinearGrid.h"
 #include "vtkRectilinearGridToPointSet.h"
+#include "vtkSOADataArrayTemplate.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -56,10 +57,10 @@ constexpr vtkIdType BufferedPoints = 256;
 
 // Deforms every point of an input point array into the output points and their Displacement
 // (out - in; 0 where a point is left in place because it is not finite). vtkArrayDispatch calls it
-// with the array's concrete type, or with the vtkDataArray for the types outside VTK's dispatch
-// list. AOS float and double arrays are read in place by the kernel's batch map; any other array
-// (SOA, implicit, integer values) is copied chunk by chunk into a small buffer of doubles. The
-// kernel turns every coordinate into a double before computing, so both paths give the same bits.
+// with the array's concrete type (AOS or SOA, float or double), or with the vtkDataArray for any
+// other array. AOS arrays are read in place by the kernel's batch map; any other array (SOA,
+// implicit, integer values) is copied chunk by chunk into a small buffer of doubles. The kernel
+// turns every coordinate into a double before computing, so both paths give the same bits.
 template <typename Out>
 struct DeformWorker
 {
@@ -260,7 +261,12 @@ void deformPoints(vtkPointPairDeformationFilter* self, const cga::PointPairField
   DeformWorker<Out> worker{ self, &field, strength, rule,
     vtkArrayDownCast<vtkAOSDataArrayTemplate<Out>>(outPoints)->GetPointer(0),
     vtkArrayDownCast<vtkAOSDataArrayTemplate<Out>>(displacement)->GetPointer(0) };
-  using Dispatcher = vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>;
+  // VTK's dispatch list holds AOS arrays only; SOA arrays, VTK's other stored layout, are added so
+  // that their copy is typed (through vtkDataArray's virtual API it costs several times more).
+  using Arrays = vtkTypeList::Create<vtkAOSDataArrayTemplate<float>,
+    vtkAOSDataArrayTemplate<double>, vtkSOADataArrayTemplate<float>,
+    vtkSOADataArrayTemplate<double>>;
+  using Dispatcher = vtkArrayDispatch::DispatchByArray<Arrays>;
   if (!Dispatcher::Execute(inPoints, worker))
   {
     worker(inPoints); // any other array, through vtkDataArray's API
