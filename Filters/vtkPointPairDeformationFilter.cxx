@@ -1,11 +1,13 @@
 #include "vtkPointPairDeformationFilter.h"
 
+#include "vtkAOSDataArrayTemplate.h"
+#include "vtkArrayDispatch.h"
 #include "vtkBoostedSurfacesAbort.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
-#include "vtkDoubleArray.h"
-#include "vtkFloatArray.h"
+#include "vtkDataArrayRange.h"
 #include "vtkImageData.h"
+#include "vtkImageDataToPointSet.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
@@ -14,10 +16,13 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkRectilinearGrid.h"
+#include "vtkRectilinearGridToPointSet.h"
+#include "vtkSOADataArrayTemplate.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStructuredGrid.h"
+#include "vtkStructuredGridAlgorithm.h"
 
 #include "cga/PointPairField.h"
 
@@ -25,6 +30,7 @@
 #include <atomic>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 vtkStandardNewMacro(vtkPointPairDeformationFilter);
 
@@ -45,26 +51,79 @@ bool isFinite(double x, double y, double z)
   return std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
 }
 
-// Maps points [begin, end) of `in` to `out` with the kernel's batch map and writes the
-// Displacement out - in (0 where the point was left in place because it is not finite).
-template <typename In, typename Out>
-struct DeformChunk
+// Points copied per pass through the local buffer of the copy path: a few kilobytes on the stack
+// of each SMP thread.
+constexpr vtkIdType BufferedPoints = 256;
+
+// Deforms every point of an input point array into the output points and their Displacement
+// (out - in; 0 where a point is left in place because it is not finite). vtkArrayDispatch calls it
+// with the array's concrete type (AOS or SOA, float or double), or with the vtkDataArray for any
+// other array. AOS arrays are read in place by the kernel's batch map; any other array (SOA,
+// implicit, integer values) is copied chunk by chunk into a small buffer of doubles. The kernel
+// turns every coordinate into a double before computing, so both paths give the same bits.
+template <typename Out>
+struct DeformWorker
 {
+  vtkPointPairDeformationFilter* Filter;
   const cga::PointPairField* Field;
-  const In* InPoints;
-  Out* OutPoints;
-  Out* Displacement;
   double Strength;
   cga::ExponentialRule Rule;
-  std::atomic<vtkIdType>* Unchanged;
-  std::atomic<vtkIdType>* NonFiniteInputs;
+  Out* OutPoints;
+  Out* Displacement;
+  std::atomic<vtkIdType> Unchanged{ 0 };
+  std::atomic<vtkIdType> NonFiniteInputs{ 0 };
 
-  void operator()(vtkIdType begin, vtkIdType end) const
+  template <typename InArray>
+  void operator()(InArray* points)
   {
-    const In* in = this->InPoints + 3 * begin;
-    Out* out = this->OutPoints + 3 * begin;
-    Out* displacement = this->Displacement + 3 * begin;
-    const vtkIdType count = end - begin;
+    const vtkIdType count = points->GetNumberOfTuples();
+    // Progress and abort are checked on this thread between steps; vtkSMPTools splits each step.
+    for (vtkIdType begin = 0; begin < count; begin += PointsPerStep)
+    {
+      if (vtkBoostedSurfacesCheckAbort(this->Filter))
+      {
+        break;
+      }
+      const vtkIdType end = std::min(count, begin + PointsPerStep);
+      vtkSMPTools::For(begin, end, 1024,
+        [this, points](vtkIdType first, vtkIdType last) { this->mapRange(points, first, last); });
+      this->Filter->UpdateProgress(static_cast<double>(end) / count);
+    }
+  }
+
+  template <typename InArray>
+  void mapRange(InArray* points, vtkIdType begin, vtkIdType end)
+  {
+    using Value = vtk::GetAPIType<InArray>;
+    if constexpr (std::is_base_of<vtkAOSDataArrayTemplate<Value>, InArray>::value)
+    {
+      this->mapChunk(points->GetPointer(3 * begin), begin, end - begin);
+    }
+    else
+    {
+      double buffer[3 * BufferedPoints];
+      const auto tuples = vtk::DataArrayTupleRange<3>(points, begin, end);
+      for (vtkIdType first = begin; first < end; first += BufferedPoints)
+      {
+        const vtkIdType count = std::min(BufferedPoints, end - first);
+        double* value = buffer;
+        for (const auto tuple : tuples.GetSubRange(first - begin, first - begin + count))
+        {
+          *value++ = static_cast<double>(tuple[0]);
+          *value++ = static_cast<double>(tuple[1]);
+          *value++ = static_cast<double>(tuple[2]);
+        }
+        this->mapChunk(buffer, first, count);
+      }
+    }
+  }
+
+  // Maps `count` points, xyz interleaved in `in`, to output points first, first + 1, ...
+  template <typename In>
+  void mapChunk(const In* in, vtkIdType first, vtkIdType count)
+  {
+    Out* out = this->OutPoints + 3 * first;
+    Out* displacement = this->Displacement + 3 * first;
     const std::size_t unchanged = this->Field->mapPoints(
       in, out, static_cast<std::size_t>(count), this->Strength, this->Rule);
     vtkIdType nonFinite = 0;
@@ -81,10 +140,24 @@ struct DeformChunk
       displacement[i + 1] = static_cast<Out>(out[i + 1] - y);
       displacement[i + 2] = static_cast<Out>(out[i + 2] - z);
     }
-    *this->Unchanged += static_cast<vtkIdType>(unchanged);
-    *this->NonFiniteInputs += nonFinite;
+    this->Unchanged += static_cast<vtkIdType>(unchanged);
+    this->NonFiniteInputs += nonFinite;
   }
 };
+
+// One tuple per generator point: a shorter array would be read past its end, a longer one is a
+// mistake of the same kind.
+bool hasOneTuplePerPoint(vtkDataArray* array, vtkIdType points, std::string& problem)
+{
+  if (array->GetNumberOfTuples() == points)
+  {
+    return true;
+  }
+  problem = std::string("the Generators point array '") + array->GetName() + "' has " +
+    std::to_string(array->GetNumberOfTuples()) + " tuples for " + std::to_string(points) +
+    " points; it needs one per point";
+  return false;
+}
 
 // Reads the generators of the second input port; false with `problem` set on bad arrays.
 bool readGeneratorPort(vtkPointSet* generators, const char* directionName, const char* weightName,
@@ -113,6 +186,10 @@ bool readGeneratorPort(vtkPointSet* generators, const char* directionName, const
       std::to_string(directionArray->GetNumberOfComponents()) + " components";
     return false;
   }
+  if (!hasOneTuplePerPoint(directions, count, problem))
+  {
+    return false;
+  }
   vtkDataArray* weights = nullptr;
   if (useWeights)
   {
@@ -133,6 +210,10 @@ bool readGeneratorPort(vtkPointSet* generators, const char* directionName, const
         std::to_string(weightArray->GetNumberOfComponents()) + " components";
       return false;
     }
+    if (!hasOneTuplePerPoint(weights, count, problem))
+    {
+      return false;
+    }
   }
   out.reserve(out.size() + static_cast<std::size_t>(count));
   for (vtkIdType i = 0; i < count; ++i)
@@ -146,65 +227,52 @@ bool readGeneratorPort(vtkPointSet* generators, const char* directionName, const
   return true;
 }
 
-// A vtkStructuredGrid with the points, extent and attributes of an image or rectilinear grid.
-vtkSmartPointer<vtkStructuredGrid> toStructuredGrid(vtkDataSet* input, const int extent[6])
+// The input as a point set: images and rectilinear grids through VTK's converters, which make a
+// vtkStructuredGrid with double points, the same extent and the same point and cell data.
+vtkSmartPointer<vtkPointSet> asPointSet(vtkDataSet* input)
 {
-  auto grid = vtkSmartPointer<vtkStructuredGrid>::New();
-  grid->SetExtent(const_cast<int*>(extent));
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(input->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  vtkSmartPointer<vtkStructuredGridAlgorithm> converter;
+  if (vtkImageData::SafeDownCast(input))
   {
-    points->SetPoint(i, input->GetPoint(i));
+    converter = vtkSmartPointer<vtkImageDataToPointSet>::New();
   }
-  grid->SetPoints(points);
-  grid->GetPointData()->ShallowCopy(input->GetPointData());
-  grid->GetCellData()->ShallowCopy(input->GetCellData());
-  grid->GetFieldData()->ShallowCopy(input->GetFieldData());
-  return grid;
-}
-
-template <typename In, typename Out>
-void deformAll(vtkPointPairDeformationFilter* self, const cga::PointPairField& field,
-  const In* in, Out* out, Out* displacement, vtkIdType count, double strength,
-  cga::ExponentialRule rule, vtkIdType& unchanged, vtkIdType& nonFiniteInputs)
-{
-  std::atomic<vtkIdType> unchangedTotal(0), nonFiniteTotal(0);
-  DeformChunk<In, Out> chunk{ &field, in, out, displacement, strength, rule, &unchangedTotal,
-    &nonFiniteTotal };
-  // Progress and abort are checked on this thread between steps; vtkSMPTools splits each step.
-  for (vtkIdType begin = 0; begin < count; begin += PointsPerStep)
+  else if (vtkRectilinearGrid::SafeDownCast(input))
   {
-    if (vtkBoostedSurfacesCheckAbort(self))
-    {
-      break;
-    }
-    const vtkIdType end = std::min(count, begin + PointsPerStep);
-    vtkSMPTools::For(begin, end, 1024, chunk);
-    self->UpdateProgress(static_cast<double>(end) / count);
-  }
-  unchanged = unchangedTotal;
-  nonFiniteInputs = nonFiniteTotal;
-}
-
-template <typename In>
-void deformTo(vtkPointPairDeformationFilter* self, const cga::PointPairField& field, const In* in,
-  vtkDataArray* outPoints, vtkDataArray* displacement, vtkIdType count, double strength,
-  cga::ExponentialRule rule, vtkIdType& unchanged, vtkIdType& nonFiniteInputs)
-{
-  if (auto* outDouble = vtkDoubleArray::SafeDownCast(outPoints))
-  {
-    deformAll(self, field, in, outDouble->GetPointer(0),
-      vtkDoubleArray::SafeDownCast(displacement)->GetPointer(0), count, strength, rule, unchanged,
-      nonFiniteInputs);
+    converter = vtkSmartPointer<vtkRectilinearGridToPointSet>::New();
   }
   else
   {
-    deformAll(self, field, in, vtkFloatArray::SafeDownCast(outPoints)->GetPointer(0),
-      vtkFloatArray::SafeDownCast(displacement)->GetPointer(0), count, strength, rule, unchanged,
-      nonFiniteInputs);
+    return vtkPointSet::SafeDownCast(input);
   }
+  // A shallow copy keeps the converter's pipeline away from this filter's input.
+  auto copy = vtk::TakeSmartPointer(input->NewInstance());
+  copy->ShallowCopy(input);
+  converter->SetInputData(copy);
+  converter->Update();
+  return converter->GetOutput();
+}
+
+// Deforms `inPoints` into `outPoints` and `displacement` (AOS arrays of value type Out).
+template <typename Out>
+void deformPoints(vtkPointPairDeformationFilter* self, const cga::PointPairField& field,
+  vtkDataArray* inPoints, vtkDataArray* outPoints, vtkDataArray* displacement, double strength,
+  cga::ExponentialRule rule, vtkIdType& unchanged, vtkIdType& nonFiniteInputs)
+{
+  DeformWorker<Out> worker{ self, &field, strength, rule,
+    vtkArrayDownCast<vtkAOSDataArrayTemplate<Out>>(outPoints)->GetPointer(0),
+    vtkArrayDownCast<vtkAOSDataArrayTemplate<Out>>(displacement)->GetPointer(0) };
+  // VTK's dispatch list holds AOS arrays only; SOA arrays, VTK's other stored layout, are added so
+  // that their copy is typed (through vtkDataArray's virtual API it costs several times more).
+  using Arrays = vtkTypeList::Create<vtkAOSDataArrayTemplate<float>,
+    vtkAOSDataArrayTemplate<double>, vtkSOADataArrayTemplate<float>,
+    vtkSOADataArrayTemplate<double>>;
+  using Dispatcher = vtkArrayDispatch::DispatchByArray<Arrays>;
+  if (!Dispatcher::Execute(inPoints, worker))
+  {
+    worker(inPoints); // any other array, through vtkDataArray's API
+  }
+  unchanged = worker.Unchanged;
+  nonFiniteInputs = worker.NonFiniteInputs;
 }
 } // namespace
 
@@ -360,16 +428,6 @@ int vtkPointPairDeformationFilter::RequestData(
     return 0;
   }
 
-  vtkSmartPointer<vtkPointSet> source = vtkPointSet::SafeDownCast(input);
-  if (auto* image = vtkImageData::SafeDownCast(input))
-  {
-    source = toStructuredGrid(image, image->GetExtent());
-  }
-  else if (auto* grid = vtkRectilinearGrid::SafeDownCast(input))
-  {
-    source = toStructuredGrid(grid, grid->GetExtent());
-  }
-
   // The clamp macros let NaN through.
   if (!std::isfinite(this->Strength) || std::isnan(this->Falloff) || std::isnan(this->Epsilon))
   {
@@ -406,12 +464,13 @@ int vtkPointPairDeformationFilter::RequestData(
   }
 
   // Same topology, cells and arrays; normals would be wrong after the warp, so they are dropped.
+  vtkSmartPointer<vtkPointSet> source = asPointSet(input);
   output->CopyStructure(source);
   output->GetPointData()->CopyNormalsOff();
   output->GetPointData()->PassData(source->GetPointData());
   output->GetCellData()->CopyNormalsOff();
   output->GetCellData()->PassData(source->GetCellData());
-  output->GetFieldData()->PassData(source->GetFieldData());
+  output->GetFieldData()->PassData(input->GetFieldData());
 
   vtkPoints* inPoints = source->GetPoints();
   const vtkIdType count = inPoints ? inPoints->GetNumberOfPoints() : 0;
@@ -437,29 +496,12 @@ int vtkPointPairDeformationFilter::RequestData(
   displacement->SetNumberOfComponents(3);
   displacement->SetNumberOfTuples(count);
 
-  // The kernel reads float or double; other point types are read through a double copy.
-  vtkSmartPointer<vtkDataArray> inData = inPoints->GetData();
-  if (inPoints->GetDataType() != VTK_FLOAT && inPoints->GetDataType() != VTK_DOUBLE)
-  {
-    vtkNew<vtkDoubleArray> copy;
-    copy->DeepCopy(inPoints->GetData());
-    inData = copy;
-  }
-
   const cga::ExponentialRule rule =
     this->ExponentialRule == PAPER ? cga::ExponentialRule::Paper : cga::ExponentialRule::Exact;
   vtkIdType unchanged = 0, nonFiniteInputs = 0;
-  if (auto* inFloat = vtkFloatArray::SafeDownCast(inData))
-  {
-    deformTo(this, field, inFloat->GetPointer(0), outPoints->GetData(), displacement, count,
-      this->Strength, rule, unchanged, nonFiniteInputs);
-  }
-  else
-  {
-    deformTo(this, field, vtkDoubleArray::SafeDownCast(inData)->GetPointer(0),
-      outPoints->GetData(), displacement, count, this->Strength, rule, unchanged,
-      nonFiniteInputs);
-  }
+  (outputType == VTK_FLOAT ? deformPoints<float> : deformPoints<double>)(this, field,
+    inPoints->GetData(), outPoints->GetData(), displacement, this->Strength, rule, unchanged,
+    nonFiniteInputs);
   if (vtkBoostedSurfacesCheckAbort(this))
   {
     output->Initialize(); // aborted: no half-deformed mesh

@@ -1,5 +1,5 @@
-// Counts the ErrorEvents and WarningEvents of a VTK object and keeps the last warning's text (the
-// messages then go here instead of to the output window).
+// Counts the ErrorEvents and WarningEvents of a VTK object and keeps the last error's and the last
+// warning's text (the messages then go here instead of to the output window).
 #ifndef EventCounter_h
 #define EventCounter_h
 
@@ -14,6 +14,7 @@ struct EventCounter
 {
   int errors = 0;
   int warnings = 0;
+  std::string lastError;
   std::string lastWarning;
 
   explicit EventCounter(vtkObject* object)
@@ -33,6 +34,7 @@ struct EventCounter
     if (event == vtkCommand::ErrorEvent)
     {
       ++self->errors;
+      self->lastError = static_cast<const char*>(callData);
     }
     else
     {

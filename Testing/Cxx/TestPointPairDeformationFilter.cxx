@@ -5,16 +5,21 @@
 
 #include "EventCounter.h"
 #include "ProgressLog.h"
+#include "vtkAOSDataArrayTemplate.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkGenericDataArray.h"
 #include "vtkImageData.h"
+#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkRectilinearGrid.h"
+#include "vtkSOADataArrayTemplate.h"
 #include "vtkStringArray.h"
 #include "vtkStructuredGrid.h"
 
@@ -27,7 +32,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -430,6 +437,187 @@ TEST(PointPairDeformationFilter, OutputPrecisionFollowsTheInputOrTheSetting)
   }
 }
 
+// An implicit point array: each value is computed when read, by a function of its index (VTK 9.2
+// has no vtkImplicitArray; this is the smallest vtkGenericDataArray that is one). Read-only.
+template <typename ValueT>
+class FunctionArray : public vtkGenericDataArray<FunctionArray<ValueT>, ValueT>
+{
+  using GenericDataArrayType = vtkGenericDataArray<FunctionArray<ValueT>, ValueT>;
+
+public:
+  using SelfType = FunctionArray<ValueT>;
+  vtkAbstractTemplateTypeMacro(SelfType, GenericDataArrayType);
+  vtkAOSArrayNewInstanceMacro(SelfType);
+  static FunctionArray* New() { VTK_STANDARD_NEW_BODY(FunctionArray); }
+
+  std::function<ValueT(vtkIdType valueIndex)> Function;
+
+  ValueT GetValue(vtkIdType valueIndex) const { return this->Function(valueIndex); }
+  void GetTypedTuple(vtkIdType tuple, ValueT* values) const
+  {
+    for (int c = 0; c < this->NumberOfComponents; ++c)
+    {
+      values[c] = this->GetTypedComponent(tuple, c);
+    }
+  }
+  ValueT GetTypedComponent(vtkIdType tuple, int c) const
+  {
+    return this->Function(tuple * this->NumberOfComponents + c);
+  }
+  void SetValue(vtkIdType, ValueT) { ADD_FAILURE() << "the input was written to"; }
+  void SetTypedTuple(vtkIdType, const ValueT*) { ADD_FAILURE() << "the input was written to"; }
+  void SetTypedComponent(vtkIdType, int, ValueT) { ADD_FAILURE() << "the input was written to"; }
+
+protected:
+  FunctionArray() = default;
+  ~FunctionArray() override = default;
+  bool AllocateTuples(vtkIdType) { return true; }
+  bool ReallocateTuples(vtkIdType) { return true; }
+  friend GenericDataArrayType;
+};
+
+// Coordinate `index` (xyz interleaved) of a scattered cloud in [-1.5, 1.5]^3, with a NaN point.
+double cloudCoordinate(vtkIdType index)
+{
+  return index == 3 * 1234 + 1 ? std::numeric_limits<double>::quiet_NaN()
+                               : 1.5 * std::sin(0.7 + 1.37 * static_cast<double>(index));
+}
+
+// A point cloud whose points are held by `array`.
+vtkNew<vtkPolyData> cloudOf(vtkDataArray* array)
+{
+  vtkNew<vtkPoints> points;
+  points->SetData(array);
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(points);
+  return cloud;
+}
+
+// The cloud's coordinates, rounded to T, in a new array of the given layout.
+template <typename T>
+vtkSmartPointer<vtkDataArray> cloudArray(vtkIdType points, const std::string& layout)
+{
+  auto value = [](vtkIdType index) { return static_cast<T>(cloudCoordinate(index)); };
+  vtkSmartPointer<vtkDataArray> array;
+  if (layout == "implicit")
+  {
+    auto function = vtkSmartPointer<FunctionArray<T>>::New();
+    function->Function = value;
+    array = function;
+  }
+  else if (layout == "SOA")
+  {
+    array = vtkSmartPointer<vtkSOADataArrayTemplate<T>>::New();
+  }
+  else
+  {
+    array = vtkSmartPointer<vtkAOSDataArrayTemplate<T>>::New();
+  }
+  array->SetNumberOfComponents(3);
+  array->SetNumberOfTuples(points);
+  if (layout != "implicit")
+  {
+    for (vtkIdType i = 0; i < 3 * points; ++i)
+    {
+      array->SetComponent(i / 3, static_cast<int>(i % 3), value(i));
+    }
+  }
+  return array;
+}
+
+// The bytes of the output points and of the Displacement array, with the output type.
+std::string outputBytes(vtkPointSet* output)
+{
+  std::string bytes = std::to_string(output->GetPoints()->GetDataType()) + ":";
+  for (vtkDataArray* array :
+    { output->GetPoints()->GetData(), output->GetPointData()->GetArray("Displacement") })
+  {
+    const auto* begin = static_cast<const char*>(array->GetVoidPointer(0));
+    bytes.append(begin, begin + array->GetDataSize() * array->GetDataTypeSize());
+  }
+  return bytes;
+}
+
+// The kernel reads AOS float and double arrays in place and any other layout through a copy; the
+// copy must not change a bit. 70,001 points: several progress steps, SMP chunks and copy buffers,
+// none of them full at the end.
+TEST(PointPairDeformationFilter, SOAAndImplicitPointArraysGiveTheAOSResultBitForBit)
+{
+  constexpr vtkIdType points = 70001;
+  Random random(26);
+  const auto generators = randomGenerators(random, 3, 0.5);
+  auto run = [&](vtkDataArray* array, int rule, int precision) {
+    auto cloud = cloudOf(array);
+    vtkNew<vtkPointPairDeformationFilter> filter;
+    EventCounter events(filter);
+    filter->SetInputData(cloud);
+    addGenerators(filter, generators);
+    filter->SetExponentialRule(rule);
+    filter->SetOutputPointsPrecision(precision);
+    filter->Update();
+    EXPECT_EQ(events.errors, 0);
+    EXPECT_NE(events.lastWarning.find("1 of 70001 points"), std::string::npos)
+      << events.lastWarning;
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), points);
+    return outputBytes(filter->GetOutput());
+  };
+  for (const bool isFloat : { true, false })
+  {
+    std::map<std::string, vtkSmartPointer<vtkDataArray>> arrays;
+    for (const char* layout : { "AOS", "SOA", "implicit" })
+    {
+      arrays[layout] =
+        isFloat ? cloudArray<float>(points, layout) : cloudArray<double>(points, layout);
+      EXPECT_EQ(arrays[layout]->GetDataType(), isFloat ? VTK_FLOAT : VTK_DOUBLE);
+    }
+    ASSERT_EQ(vtkAOSDataArrayTemplate<double>::FastDownCast(arrays["SOA"]), nullptr);
+    for (const int rule :
+      { vtkPointPairDeformationFilter::EXACT, vtkPointPairDeformationFilter::PAPER })
+    {
+      for (const int precision : { vtkAlgorithm::DEFAULT_PRECISION, vtkAlgorithm::SINGLE_PRECISION,
+             vtkAlgorithm::DOUBLE_PRECISION })
+      {
+        const std::string reference = run(arrays["AOS"], rule, precision);
+        for (const char* layout : { "SOA", "implicit" })
+        {
+          EXPECT_TRUE(run(arrays[layout], rule, precision) == reference)
+            << layout << (isFloat ? " float" : " double") << ", rule " << rule << ", precision "
+            << precision;
+        }
+      }
+    }
+  }
+}
+
+// Integer coordinates go through vtkDataArray's API: the result of the same values in double.
+TEST(PointPairDeformationFilter, IntegerPointsGiveTheResultOfTheSameValuesInDouble)
+{
+  vtkNew<vtkIntArray> integers;
+  vtkNew<vtkDoubleArray> doubles;
+  for (vtkDataArray* array :
+    { static_cast<vtkDataArray*>(integers), static_cast<vtkDataArray*>(doubles) })
+  {
+    array->SetNumberOfComponents(3);
+    array->SetNumberOfTuples(1000);
+    for (vtkIdType i = 0; i < 3000; ++i)
+    {
+      array->SetComponent(i / 3, static_cast<int>(i % 3), std::round(4.0 * std::sin(1.37 * i)));
+    }
+  }
+  std::string bytes[2];
+  for (int k = 0; k < 2; ++k)
+  {
+    auto cloud = cloudOf(k == 0 ? static_cast<vtkDataArray*>(integers) : doubles.Get());
+    vtkNew<vtkPointPairDeformationFilter> filter;
+    filter->SetInputData(cloud);
+    filter->AddGenerator(0.5, 0.25, 0, 0, 0.6, 0.8, 2.0);
+    filter->Update();
+    bytes[k] = outputBytes(filter->GetOutput());
+  }
+  EXPECT_TRUE(bytes[0] == bytes[1]);
+  EXPECT_EQ(bytes[0].substr(0, 3), std::to_string(VTK_DOUBLE) + ":");
+}
+
 TEST(PointPairDeformationFilter, ImageDataBecomesAStructuredGridWithTheSamePoints)
 {
   vtkNew<vtkImageData> image;
@@ -456,6 +644,90 @@ TEST(PointPairDeformationFilter, ImageDataBecomesAStructuredGridWithTheSamePoint
     Vec3 expected;
     ASSERT_TRUE(field.map({ p[0], p[1], p[2] }, 1.0, cga::ExponentialRule::Exact, expected));
     EXPECT_LE(cga::norm(pointOf(grid, i) - expected), 1e-14);
+  }
+}
+
+// Images (here with a direction matrix and an extent not starting at 0) and rectilinear grids
+// become structured grids of their extent and attributes, deformed as the cloud of their points
+// in double is.
+TEST(PointPairDeformationFilter, ImagesAndRectilinearGridsDeformAsTheirPointsInDouble)
+{
+  vtkNew<vtkImageData> image;
+  image->SetExtent(-2, 3, 1, 4, 0, 2);
+  image->SetSpacing(0.3, 0.25, 0.4);
+  image->SetOrigin(-0.7, -1.0, -0.4);
+  const double c = std::cos(0.3), s = std::sin(0.3);
+  image->SetDirectionMatrix(c, -s, 0, s, c, 0, 0, 0, 1);
+  vtkNew<vtkRectilinearGrid> rectilinear;
+  rectilinear->SetExtent(1, 4, 0, 2, -1, 0);
+  vtkNew<vtkFloatArray> x; // float coordinates: the points are still double
+  vtkNew<vtkDoubleArray> y, z;
+  for (double v : { -1.0, -0.2, 0.45, 1.3 })
+  {
+    x->InsertNextValue(static_cast<float>(v));
+  }
+  for (double v : { -0.8, 0.1, 0.9 })
+  {
+    y->InsertNextValue(v);
+  }
+  for (double v : { -0.3, 0.6 })
+  {
+    z->InsertNextValue(v);
+  }
+  rectilinear->SetXCoordinates(x);
+  rectilinear->SetYCoordinates(y);
+  rectilinear->SetZCoordinates(z);
+  for (vtkDataSet* input :
+    { static_cast<vtkDataSet*>(image), static_cast<vtkDataSet*>(rectilinear) })
+  {
+    vtkNew<vtkDoubleArray> pointIds, cellIds, tag;
+    pointIds->SetName("PointIds");
+    cellIds->SetName("CellIds");
+    tag->SetName("Tag");
+    for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+    {
+      pointIds->InsertNextValue(static_cast<double>(i));
+    }
+    for (vtkIdType i = 0; i < input->GetNumberOfCells(); ++i)
+    {
+      cellIds->InsertNextValue(static_cast<double>(i));
+    }
+    tag->InsertNextValue(7);
+    input->GetPointData()->AddArray(pointIds);
+    input->GetCellData()->AddArray(cellIds);
+    input->GetFieldData()->AddArray(tag);
+    vtkNew<vtkDoubleArray> coordinates;
+    coordinates->SetNumberOfComponents(3);
+    for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+    {
+      coordinates->InsertNextTuple(input->GetPoint(i));
+    }
+    auto cloud = cloudOf(coordinates);
+    std::string bytes[2];
+    vtkSmartPointer<vtkDataObject> outputs[2];
+    for (int k = 0; k < 2; ++k)
+    {
+      vtkNew<vtkPointPairDeformationFilter> filter;
+      filter->SetInputData(k == 0 ? static_cast<vtkDataObject*>(input) : cloud.Get());
+      filter->AddGenerator(0, 0, 0, 0, 0.6, 0.8, 0.5);
+      filter->AddGenerator(0.5, -0.5, 0.2, 1, 0, 0, -0.3);
+      filter->Update();
+      outputs[k] = filter->GetOutputDataObject(0);
+      bytes[k] = outputBytes(filter->GetOutput());
+    }
+    auto* grid = vtkStructuredGrid::SafeDownCast(outputs[0]);
+    ASSERT_NE(grid, nullptr) << input->GetClassName();
+    EXPECT_TRUE(bytes[0] == bytes[1]) << input->GetClassName();
+    EXPECT_EQ(grid->GetPoints()->GetDataType(), VTK_DOUBLE);
+    const int* inputExtent =
+      input == image.Get() ? image->GetExtent() : rectilinear->GetExtent();
+    int gridExtent[6];
+    grid->GetExtent(gridExtent);
+    EXPECT_TRUE(std::equal(inputExtent, inputExtent + 6, gridExtent)) << input->GetClassName();
+    EXPECT_EQ(grid->GetNumberOfCells(), input->GetNumberOfCells());
+    EXPECT_EQ(grid->GetPointData()->GetArray("PointIds"), pointIds.Get());
+    EXPECT_EQ(grid->GetCellData()->GetArray("CellIds"), cellIds.Get());
+    EXPECT_EQ(grid->GetFieldData()->GetArray("Tag"), tag.Get());
   }
 }
 
@@ -688,7 +960,53 @@ TEST(PointPairDeformationFilter, BadGeneratorArraysAreErrorsWithEmptyOutput)
     filter->SetUseGeneratorWeightArray(c.useWeights);
     filter->Update();
     EXPECT_EQ(events.errors, 1) << c.expectedWords;
+    EXPECT_NE(events.lastError.find(c.expectedWords), std::string::npos) << events.lastError;
     EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0) << c.expectedWords;
+  }
+}
+
+// Issue 15: a Direction or Weight array shorter than the generator points was read past its end
+// (garbage generators; SIGSEGV at 2,000,000 points).
+TEST(PointPairDeformationFilter, GeneratorArraysOfAnotherLengthThanThePointsAreErrors)
+{
+  Random random(28);
+  auto mesh = randomMesh(random, 4, 1.0);
+  struct Case
+  {
+    vtkIdType points;
+    const char* array;
+    vtkIdType tuples;
+  };
+  for (const Case& c : { Case{ 3, "Direction", 2 }, Case{ 3, "Weight", 1 },
+         Case{ 3, "Direction", 4 }, Case{ 2000000, "Direction", 1 }, Case{ 2000000, "Weight", 1 } })
+  {
+    vtkNew<vtkPoints> points;
+    points->SetNumberOfPoints(c.points);
+    points->GetData()->Fill(0.5);
+    vtkNew<vtkDoubleArray> directions;
+    directions->SetName("Direction");
+    directions->SetNumberOfComponents(3);
+    directions->SetNumberOfTuples(std::string(c.array) == "Direction" ? c.tuples : c.points);
+    directions->Fill(1.0);
+    vtkNew<vtkDoubleArray> weights;
+    weights->SetName("Weight");
+    weights->SetNumberOfTuples(std::string(c.array) == "Weight" ? c.tuples : c.points);
+    weights->Fill(0.25);
+    vtkNew<vtkPolyData> generators;
+    generators->SetPoints(points);
+    generators->GetPointData()->AddArray(directions);
+    generators->GetPointData()->AddArray(weights);
+    vtkNew<vtkPointPairDeformationFilter> filter;
+    EventCounter events(filter);
+    filter->SetInputData(mesh);
+    filter->SetGeneratorsData(generators);
+    filter->UseGeneratorWeightArrayOn();
+    filter->Update();
+    const std::string expected = std::string("array '") + c.array + "' has " +
+      std::to_string(c.tuples) + " tuples for " + std::to_string(c.points) + " points";
+    EXPECT_EQ(events.errors, 1) << expected;
+    EXPECT_NE(events.lastError.find(expected), std::string::npos) << events.lastError;
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0) << expected;
   }
 }
 

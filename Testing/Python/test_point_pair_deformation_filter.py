@@ -1,6 +1,7 @@
 """Tests of the Python-wrapped vtkPointPairDeformationFilter: one generator against the closed form
-of SPEC.md section 2, the Generators input from a Python pipeline, errors Python can see, and the
-two exponential rules on the Fig 11 example. Plain Python, no numpy.
+of SPEC.md section 2, the Generators input from a Python pipeline, SOA point arrays (the AOS result
+bit for bit), errors Python can see, and the two exponential rules on the Fig 11 example. Plain
+Python, no numpy.
 
     PYTHONPATH=<build>/lib/python3.11/site-packages python3 test_point_pair_deformation_filter.py -v
 """
@@ -9,7 +10,8 @@ import os
 import sys
 import unittest
 
-from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+from vtkmodules.vtkCommonCore import (vtkDoubleArray, vtkFloatArray, vtkPoints,
+                                      vtkSOADataArrayTemplate)
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
 
@@ -107,6 +109,43 @@ class PointPairDeformationFilterTest(unittest.TestCase):
         deformation.SetGeneratorDirectionArrayName("NoSuchArray")
         deformation.Update()
         self.assertEqual(len(events.messages), 1)
+        self.assertEqual(deformation.GetOutput().GetNumberOfPoints(), 0)
+
+    def test_soa_points_give_the_aos_result_bit_for_bit(self):
+        sphere = self.sphere().GetOutput()
+        for aos, value_type in ((vtkFloatArray, "float32"), (vtkDoubleArray, "float64")):
+            outputs = []
+            for array in (aos(), vtkSOADataArrayTemplate[value_type]()):
+                array.SetNumberOfComponents(3)
+                array.SetNumberOfTuples(sphere.GetNumberOfPoints())
+                for i in range(sphere.GetNumberOfPoints()):
+                    array.SetTuple(i, sphere.GetPoint(i))
+                points = vtkPoints()
+                points.SetData(array)
+                cloud = vtkPolyData()
+                cloud.SetPoints(points)
+                deformation = vtkPointPairDeformationFilter()
+                deformation.SetInputData(cloud)
+                deformation.AddGenerator(0.2, -0.1, 0.3, 0.0, 0.6, 0.8, 0.7)
+                deformation.Update()
+                output = deformation.GetOutput()
+                displacement = output.GetPointData().GetArray("Displacement")
+                outputs.append([(output.GetPoint(i), displacement.GetTuple3(i))
+                                for i in range(output.GetNumberOfPoints())])
+            self.assertEqual(len(outputs[0]), sphere.GetNumberOfPoints())
+            self.assertEqual(outputs[0], outputs[1], value_type)
+
+    def test_short_generator_array_is_an_error_python_sees(self):
+        deformation = vtkPointPairDeformationFilter()
+        events = common.ErrorRecorder(deformation)
+        sphere = self.sphere()
+        deformation.SetInputConnection(sphere.GetOutputPort())
+        generators = generator_cloud([((0, 0, 0), (1, 0, 0), 1.0), ((1, 0, 0), (0, 1, 0), 0.5)])
+        generators.GetPointData().GetArray("Direction").SetNumberOfTuples(1)
+        deformation.SetGeneratorsData(generators)
+        deformation.Update()
+        self.assertEqual(len(events.messages), 1)
+        self.assertIn("has 1 tuples for 2 points", events.messages[0])
         self.assertEqual(deformation.GetOutput().GetNumberOfPoints(), 0)
 
     def test_zero_direction_is_a_warning(self):
