@@ -1,5 +1,7 @@
 #include "vtkPointPairDeformationFilter.h"
 
+#include "vtkBoostedExponentialRule.h"
+#include "vtkBoostedRowList.h"
 #include "vtkBoostedSurfacesAbort.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -30,12 +32,6 @@ vtkStandardNewMacro(vtkPointPairDeformationFilter);
 
 namespace
 {
-constexpr int ValuesPerGenerator = 7;
-
-// The longest generator list SetNumberOfGenerators makes (a wrong count must not allocate
-// gigabytes); more generators come through the Generators input.
-constexpr int MaximumListGenerators = 1000000;
-
 // Points handed to vtkSMPTools per progress step: large enough that the scheduling cost vanishes,
 // small enough that progress and abort are seen often on big meshes.
 constexpr vtkIdType PointsPerStep = 1 << 16;
@@ -209,6 +205,7 @@ void deformTo(vtkPointPairDeformationFilter* self, const cga::PointPairField& fi
 } // namespace
 
 vtkPointPairDeformationFilter::vtkPointPairDeformationFilter()
+  : Generators(new vtkBoostedRowList(this, "Generator", std::vector<double>(7, 0.0)))
 {
   this->SetNumberOfInputPorts(2);
   this->SetGeneratorDirectionArrayName("Direction");
@@ -221,72 +218,36 @@ vtkPointPairDeformationFilter::~vtkPointPairDeformationFilter()
   this->SetGeneratorWeightArrayName(nullptr);
 }
 
-void vtkPointPairDeformationFilter::SetNumberOfGenerators(int count)
+int vtkPointPairDeformationFilter::AddGenerator(
+  double x, double y, double z, double vx, double vy, double vz, double weight)
 {
-  if (count > MaximumListGenerators)
-  {
-    vtkErrorMacro(<< "SetNumberOfGenerators: " << count << " is more than the "
-                  << MaximumListGenerators
-                  << " generators the list may hold (use the Generators input for more)");
-    return;
-  }
-  const std::size_t size = static_cast<std::size_t>(std::max(0, count)) * ValuesPerGenerator;
-  if (size != this->Generators.size())
-  {
-    this->Generators.resize(size, 0.0);
-    this->Modified();
-  }
-}
-
-int vtkPointPairDeformationFilter::GetNumberOfGenerators() const
-{
-  return static_cast<int>(this->Generators.size() / ValuesPerGenerator);
+  return this->Generators->Add({ x, y, z, vx, vy, vz, weight });
 }
 
 void vtkPointPairDeformationFilter::SetGenerator(
   int index, double x, double y, double z, double vx, double vy, double vz, double weight)
 {
-  if (index < 0 || index >= this->GetNumberOfGenerators())
-  {
-    vtkErrorMacro(<< "SetGenerator: index " << index << " is outside the list of "
-                  << this->GetNumberOfGenerators() << " generators");
-    return;
-  }
-  const double values[ValuesPerGenerator] = { x, y, z, vx, vy, vz, weight };
-  double* entry = this->Generators.data() + ValuesPerGenerator * index;
-  if (!std::equal(values, values + ValuesPerGenerator, entry))
-  {
-    std::copy(values, values + ValuesPerGenerator, entry);
-    this->Modified();
-  }
+  this->Generators->Set(index, { x, y, z, vx, vy, vz, weight });
 }
 
-int vtkPointPairDeformationFilter::AddGenerator(
-  double x, double y, double z, double vx, double vy, double vz, double weight)
+void vtkPointPairDeformationFilter::SetNumberOfGenerators(int count)
 {
-  const int index = this->GetNumberOfGenerators();
-  this->Generators.insert(this->Generators.end(), { x, y, z, vx, vy, vz, weight });
-  this->Modified();
-  return index;
+  this->Generators->SetNumberOfRows(count);
 }
 
 bool vtkPointPairDeformationFilter::GetGenerator(int index, double values[7]) const
 {
-  if (index < 0 || index >= this->GetNumberOfGenerators())
-  {
-    return false;
-  }
-  std::copy_n(this->Generators.data() + ValuesPerGenerator * index, ValuesPerGenerator, values);
-  return true;
+  return this->Generators->Get(index, values);
 }
 
 void vtkPointPairDeformationFilter::RemoveAllGenerators()
 {
-  if (!this->Generators.empty())
-  {
-    this->Generators.clear();
-    this->Modified();
-  }
+  this->Generators->RemoveAll();
+}
+
+int vtkPointPairDeformationFilter::GetNumberOfGenerators() const
+{
+  return this->Generators->GetNumberOfRows();
 }
 
 void vtkPointPairDeformationFilter::SetGeneratorsConnection(vtkAlgorithmOutput* output)
@@ -379,11 +340,16 @@ int vtkPointPairDeformationFilter::RequestData(
   }
 
   // The list, with the selected generator moved to the handle's location, then the second port.
+  if (!this->Generators->CheckForUpdate())
+  {
+    return 1; // the output stays empty
+  }
   std::vector<cga::PointPairGenerator> generators;
   for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
   {
-    const double* g = this->Generators.data() + ValuesPerGenerator * i;
-    const double* location = i == this->SelectedGenerator ? this->SelectedGeneratorLocation : g;
+    const double* g = this->Generators->Row(i);
+    const double* location =
+      this->Generators->Location(i, this->SelectedGenerator, this->SelectedGeneratorLocation);
     generators.push_back(
       { { location[0], location[1], location[2] }, { g[3], g[4], g[5] }, g[6] });
   }
@@ -447,7 +413,7 @@ int vtkPointPairDeformationFilter::RequestData(
   }
 
   const cga::ExponentialRule rule =
-    this->ExponentialRule == PAPER ? cga::ExponentialRule::Paper : cga::ExponentialRule::Exact;
+    vtkBoostedExponentialRule<vtkPointPairDeformationFilter>(this->ExponentialRule);
   vtkIdType unchanged = 0, nonFiniteInputs = 0;
   if (auto* inFloat = vtkFloatArray::SafeDownCast(inData))
   {
@@ -480,14 +446,7 @@ int vtkPointPairDeformationFilter::RequestData(
 void vtkPointPairDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Generators: " << this->GetNumberOfGenerators() << "\n";
-  for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
-  {
-    const double* g = this->Generators.data() + ValuesPerGenerator * i;
-    os << indent.GetNextIndent() << i << ": location (" << g[0] << ", " << g[1] << ", " << g[2]
-       << "), direction (" << g[3] << ", " << g[4] << ", " << g[5] << "), weight " << g[6]
-       << "\n";
-  }
+  this->Generators->Print(os, indent);
   os << indent << "SelectedGenerator: " << this->SelectedGenerator << "\n";
   os << indent << "SelectedGeneratorLocation: (" << this->SelectedGeneratorLocation[0] << ", "
      << this->SelectedGeneratorLocation[1] << ", " << this->SelectedGeneratorLocation[2] << ")\n";

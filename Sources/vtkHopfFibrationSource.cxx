@@ -1,6 +1,7 @@
 #include "vtkHopfFibrationSource.h"
 
 #include "vtkBoostedGridBuilder.h"
+#include "vtkBoostedRowList.h"
 #include "vtkBoostedSphereClip.h"
 #include "vtkBoostedSurfacesAbort.h"
 #include "vtkInformation.h"
@@ -25,9 +26,6 @@ namespace
 {
 constexpr double kHalfPi = 1.5707963267948966;
 constexpr double kTwoPi = 6.283185307179586;
-// The longest list SetBasePoint and SetNumberOfBasePoints grow (a wrong index must not allocate
-// gigabytes); longer samplings come through the Sphere Points input.
-constexpr int kMaximumBasePoints = 1000000;
 
 bool finite2(const double v[2])
 {
@@ -44,6 +42,7 @@ struct BaseSampling
 }
 
 vtkHopfFibrationSource::vtkHopfFibrationSource()
+  : BasePoints(new vtkBoostedRowList(this, "BasePoint", { 0.0, 0.0 }))
 {
   this->SetNumberOfInputPorts(1); // optional points on a sphere (INPUT_POINTS)
 }
@@ -55,54 +54,36 @@ int vtkHopfFibrationSource::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
-void vtkHopfFibrationSource::AddBasePoint(double theta, double phi)
-{
-  this->BasePoints.push_back(theta);
-  this->BasePoints.push_back(phi);
-  this->Modified();
-}
+vtkHopfFibrationSource::~vtkHopfFibrationSource() = default;
 
-void vtkHopfFibrationSource::RemoveAllBasePoints()
+int vtkHopfFibrationSource::AddBasePoint(double theta, double phi)
 {
-  if (!this->BasePoints.empty())
-  {
-    this->BasePoints.clear();
-    this->Modified();
-  }
-}
-
-void vtkHopfFibrationSource::SetNumberOfBasePoints(int count)
-{
-  if (count > kMaximumBasePoints)
-  {
-    vtkErrorMacro(<< "SetNumberOfBasePoints: " << count << " is more than the "
-                  << kMaximumBasePoints << " base points a list may hold");
-    return;
-  }
-  count = std::max(0, count);
-  if (static_cast<size_t>(2 * count) != this->BasePoints.size())
-  {
-    this->BasePoints.resize(2 * static_cast<size_t>(count), 0.0);
-    this->Modified();
-  }
+  return this->BasePoints->Add({ theta, phi });
 }
 
 void vtkHopfFibrationSource::SetBasePoint(int index, double theta, double phi)
 {
-  if (index < 0 || index >= kMaximumBasePoints)
-  {
-    // (2 index + 2 would also overflow an int)
-    vtkErrorMacro(<< "SetBasePoint: index " << index << " is outside [0, " << kMaximumBasePoints
-                  << ")");
-    return;
-  }
-  if (static_cast<size_t>(2 * index + 2) > this->BasePoints.size())
-  {
-    this->BasePoints.resize(2 * static_cast<size_t>(index) + 2, 0.0);
-  }
-  this->BasePoints[2 * index] = theta;
-  this->BasePoints[2 * index + 1] = phi;
-  this->Modified();
+  this->BasePoints->Set(index, { theta, phi });
+}
+
+void vtkHopfFibrationSource::SetNumberOfBasePoints(int count)
+{
+  this->BasePoints->SetNumberOfRows(count);
+}
+
+bool vtkHopfFibrationSource::GetBasePoint(int index, double values[2]) const
+{
+  return this->BasePoints->Get(index, values);
+}
+
+void vtkHopfFibrationSource::RemoveAllBasePoints()
+{
+  this->BasePoints->RemoveAll();
+}
+
+int vtkHopfFibrationSource::GetNumberOfBasePoints() const
+{
+  return this->BasePoints->GetNumberOfRows();
 }
 
 int vtkHopfFibrationSource::RequestInformation(
@@ -225,9 +206,10 @@ int vtkHopfFibrationSource::RequestData(
   }
   else if (problem.empty() && this->SamplingMode == BASE_POINTS)
   {
-    for (size_t k = 0; k + 1 < this->BasePoints.size(); k += 2)
+    problem = this->BasePoints->Problem();
+    for (int k = 0; problem.empty() && k < this->GetNumberOfBasePoints(); ++k)
     {
-      addRow(this->BasePoints[k], this->BasePoints[k + 1], 0);
+      addRow(this->BasePoints->Row(k)[0], this->BasePoints->Row(k)[1], 0);
     }
   }
   else if (problem.empty() && this->SamplingMode == INPUT_POINTS)
@@ -410,7 +392,7 @@ void vtkHopfFibrationSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PhiRange: [" << this->PhiRange[0] << ", " << this->PhiRange[1] << "]\n";
   os << indent << "ThetaResolution: " << this->ThetaResolution << "\n";
   os << indent << "PhiResolution: " << this->PhiResolution << "\n";
-  os << indent << "BasePoints: " << this->GetNumberOfBasePoints() << "\n";
+  this->BasePoints->Print(os, indent);
   os << indent << "SphereCenter: (" << this->SphereCenter[0] << ", " << this->SphereCenter[1]
      << ", " << this->SphereCenter[2] << ")\n";
   os << indent << "FiberResolution: " << this->FiberResolution << "\n";

@@ -40,6 +40,8 @@ defaults = {
     "UseGeneratorWeightArray": 0,
 }
 common.check_defaults(deformation, defaults, failures)
+# The generator table: the same protocol and columns as the Dipole Field's.
+common.check_table(deformation, "Generator", common.GENERATOR_COLUMNS, failures)
 
 # One generator: p -> x + SCT_u(p - x) with u = -w v / (k |p - x|^2 + eps).
 x, v, w, k, eps = (0.2, 0.0, 0.9), (0.0, 0.0, 1.0), 0.6, 4.0, 0.05
