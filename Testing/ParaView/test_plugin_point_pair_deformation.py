@@ -73,8 +73,8 @@ directions = simple.Calculator(Input=point, ResultArrayName="Direction",
                                Function="%g*iHat+%g*jHat+%g*kHat" % v)
 weights = simple.Calculator(Input=directions, ResultArrayName="w", Function="%g" % w)
 from_port = PointPairDeformation(Input=sphere, Generators=weights, GeneratorList=[],  # noqa: F821
-                                 Falloff=k, Epsilon=eps, GeneratorDirectionArray="Direction",
-                                 UseGeneratorWeightArray=1, GeneratorWeightArray="w")
+                                 Falloff=k, Epsilon=eps, GeneratorDirectionArrayName="Direction",
+                                 UseGeneratorWeightArray=1, GeneratorWeightArrayName="w")
 error = largest_distance(points_of(from_port), points_of(deformation))
 print("Generators input vs table: %g" % error)
 if error > 1e-6:

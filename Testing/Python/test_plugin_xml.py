@@ -1,6 +1,7 @@
 """The ParaView XML of the plugin (Plugin/*.xml) against the wrapped classes it drives, without
 ParaView: every scalar property's default is the class's, its range domain is the setter's clamp
-(a bound the setter does not clamp to must be one that an update rejects with an error), an
+(a bound the setter does not clamp to must be one that an update rejects with an error), every
+label is the property name in words (paraview.simple names properties after labels), an
 enumeration lists exactly the clamped values, and each entry text is the class constant in words
 ("Control Points" is CONTROL_POINTS; the precision entries name vtkAlgorithm's *_PRECISION).
 
@@ -75,6 +76,17 @@ def number(text, prop):
 
 
 class PluginXmlTest(unittest.TestCase):
+    def test_python_names_are_the_property_names(self):
+        # paraview.simple names a property after its label without spaces: that must be the
+        # XML name, so that pvpython, the C++ setter and the README say the same.
+        for path in sorted(glob.glob(os.path.join(PLUGIN_DIR, "*.xml"))):
+            for proxy in ET.parse(path).getroot().iter("SourceProxy"):
+                for prop in proxy:
+                    label = prop.get("label")
+                    if prop.get("name") and label is not None:
+                        self.assertEqual(label.replace(" ", ""), prop.get("name"),
+                                         "%s: label %r" % (os.path.basename(path), label))
+
     def test_defaults_are_the_classes(self):
         for class_name, prop in scalar_properties():
             with self.subTest(cls=class_name, property=prop.get("name")):
