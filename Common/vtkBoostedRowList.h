@@ -82,4 +82,15 @@ private:
   long long RefusedCount = -1; // the row count asked for beyond MaximumRows, or -1
 };
 
+/// Defines the owner's SetNumberOfXs, GetX, RemoveAllXs and GetNumberOfXs as calls of its
+/// vtkBoostedRowList member (AddX and SetX take the class's own argument lists, written out).
+#define vtkBoostedRowListMethods(Class, Row, member)                                              \
+  void Class::SetNumberOf##Row##s(int count) { this->member->SetNumberOfRows(count); }          \
+  bool Class::Get##Row(int index, double* values) const                                         \
+  {                                                                                               \
+    return this->member->Get(index, values);                                                      \
+  }                                                                                               \
+  void Class::RemoveAll##Row##s() { this->member->RemoveAll(); }                                  \
+  int Class::GetNumberOf##Row##s() const { return this->member->GetNumberOfRows(); }
+
 #endif

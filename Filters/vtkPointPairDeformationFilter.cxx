@@ -230,25 +230,7 @@ void vtkPointPairDeformationFilter::SetGenerator(
   this->Generators->Set(index, { x, y, z, vx, vy, vz, weight });
 }
 
-void vtkPointPairDeformationFilter::SetNumberOfGenerators(int count)
-{
-  this->Generators->SetNumberOfRows(count);
-}
-
-bool vtkPointPairDeformationFilter::GetGenerator(int index, double values[7]) const
-{
-  return this->Generators->Get(index, values);
-}
-
-void vtkPointPairDeformationFilter::RemoveAllGenerators()
-{
-  this->Generators->RemoveAll();
-}
-
-int vtkPointPairDeformationFilter::GetNumberOfGenerators() const
-{
-  return this->Generators->GetNumberOfRows();
-}
+vtkBoostedRowListMethods(vtkPointPairDeformationFilter, Generator, Generators)
 
 void vtkPointPairDeformationFilter::SetGeneratorsConnection(vtkAlgorithmOutput* output)
 {

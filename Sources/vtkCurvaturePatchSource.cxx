@@ -50,25 +50,7 @@ void vtkCurvaturePatchSource::SetControlPoint(int index, double x, double y, dou
   this->ControlPoints->Set(index, { x, y, z, nx, ny, nz, ux, uy, uz, kappaU, kappaV });
 }
 
-void vtkCurvaturePatchSource::SetNumberOfControlPoints(int count)
-{
-  this->ControlPoints->SetNumberOfRows(count);
-}
-
-bool vtkCurvaturePatchSource::GetControlPoint(int index, double values[11]) const
-{
-  return this->ControlPoints->Get(index, values);
-}
-
-void vtkCurvaturePatchSource::RemoveAllControlPoints()
-{
-  this->ControlPoints->RemoveAll();
-}
-
-int vtkCurvaturePatchSource::GetNumberOfControlPoints() const
-{
-  return this->ControlPoints->GetNumberOfRows();
-}
+vtkBoostedRowListMethods(vtkCurvaturePatchSource, ControlPoint, ControlPoints)
 
 int vtkCurvaturePatchSource::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)

@@ -119,25 +119,7 @@ void vtkDipoleFieldSource::SetGenerator(
   this->Generators->Set(index, { x, y, z, dx, dy, dz, weight });
 }
 
-void vtkDipoleFieldSource::SetNumberOfGenerators(int count)
-{
-  this->Generators->SetNumberOfRows(count);
-}
-
-bool vtkDipoleFieldSource::GetGenerator(int index, double values[7]) const
-{
-  return this->Generators->Get(index, values);
-}
-
-void vtkDipoleFieldSource::RemoveAllGenerators()
-{
-  this->Generators->RemoveAll();
-}
-
-int vtkDipoleFieldSource::GetNumberOfGenerators() const
-{
-  return this->Generators->GetNumberOfRows();
-}
+vtkBoostedRowListMethods(vtkDipoleFieldSource, Generator, Generators)
 
 std::string vtkDipoleFieldSource::Validate() const
 {

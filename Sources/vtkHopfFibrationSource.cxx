@@ -66,25 +66,7 @@ void vtkHopfFibrationSource::SetBasePoint(int index, double theta, double phi)
   this->BasePoints->Set(index, { theta, phi });
 }
 
-void vtkHopfFibrationSource::SetNumberOfBasePoints(int count)
-{
-  this->BasePoints->SetNumberOfRows(count);
-}
-
-bool vtkHopfFibrationSource::GetBasePoint(int index, double values[2]) const
-{
-  return this->BasePoints->Get(index, values);
-}
-
-void vtkHopfFibrationSource::RemoveAllBasePoints()
-{
-  this->BasePoints->RemoveAll();
-}
-
-int vtkHopfFibrationSource::GetNumberOfBasePoints() const
-{
-  return this->BasePoints->GetNumberOfRows();
-}
+vtkBoostedRowListMethods(vtkHopfFibrationSource, BasePoint, BasePoints)
 
 int vtkHopfFibrationSource::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
