@@ -75,7 +75,26 @@ def number(text, prop):
     return int(text) if prop.tag == "IntVectorProperty" else float(text)
 
 
+def fixed_size_properties():
+    """(class name, property element) of every Int/DoubleVectorProperty of 2 to 4 numbers set by
+    one command (origins, ranges, directions)."""
+    for path in sorted(glob.glob(os.path.join(PLUGIN_DIR, "*.xml"))):
+        for proxy in ET.parse(path).getroot().iter("SourceProxy"):
+            for prop in proxy:
+                if (prop.tag in ("IntVectorProperty", "DoubleVectorProperty")
+                        and prop.get("command") and prop.get("number_of_elements") in "234"
+                        and not prop.get("repeat_command") and prop.get("default_values")):
+                    yield proxy.get("class"), prop
+
+
 class PluginXmlTest(unittest.TestCase):
+    def test_vector_defaults_are_the_classes(self):
+        for class_name, prop in fixed_size_properties():
+            with self.subTest(cls=class_name, property=prop.get("name")):
+                obj = getattr(boostedsurfaces, class_name)()
+                expected = [number(v, prop) for v in prop.get("default_values").split()]
+                self.assertEqual(list(getattr(obj, "G" + prop.get("command")[1:])()), expected)
+
     def test_python_names_are_the_property_names(self):
         # paraview.simple names a property after its label without spaces: that must be the
         # XML name, so that pvpython, the C++ setter and the README say the same.
