@@ -19,7 +19,7 @@ void vtkBoostedRowList::Refuse(const std::string& call, long long count)
   vtkErrorWithObjectMacro(this->Owner,
     << call << ": a list holds at most " << MaximumRows << " rows; until RemoveAll"
     << this->RowName << "s() or SetNumberOf" << this->RowName << "s(n <= " << MaximumRows
-    << ") every update gives an error and an empty output");
+    << ") every update that uses the list gives an error and an empty output");
   this->Owner->Modified();
 }
 

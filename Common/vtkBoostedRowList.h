@@ -14,8 +14,9 @@
  * A list holds at most MaximumRows (10^6) rows, so that a wrong count cannot allocate gigabytes.
  * A request beyond it (SetNumberOfX(n > 10^6), or AddX on a full list) gives one error and marks
  * the list refused: the rows are kept, further SetX/AddX calls are ignored without a message (a
- * ParaView table of 10^6 + 1 rows sets them one by one), and every update gives one error and an
- * empty output (CheckForUpdate), until RemoveAllX() or SetNumberOfX(n <= 10^6).
+ * ParaView table of 10^6 + 1 rows sets them one by one), and every update that uses the list gives
+ * one error and an empty output (CheckForUpdate, Problem), until RemoveAllX() or
+ * SetNumberOfX(n <= 10^6).
  */
 #ifndef vtkBoostedRowList_h
 #define vtkBoostedRowList_h
