@@ -85,9 +85,10 @@ int vtkCurvaturePatchSource::RequestData(
   for (int i = 0; i < this->GetNumberOfControlPoints(); ++i)
   {
     const double* c = this->ControlPoints->Row(i);
-    patch.controlPoints.push_back({ toVec3(this->ControlPoints->Location(
-                                      i, this->SelectedControlPoint, this->SelectedControlPointLocation)),
-      { c[3], c[4], c[5] }, { c[6], c[7], c[8] }, c[9], c[10] });
+    const double* location = this->ControlPoints->Location(
+      i, this->SelectedControlPoint, this->SelectedControlPointLocation);
+    patch.controlPoints.push_back(
+      { toVec3(location), { c[3], c[4], c[5] }, { c[6], c[7], c[8] }, c[9], c[10] });
   }
   const double* directions[4] = { this->Corner1Direction, this->Corner2Direction,
     this->Corner3Direction, this->Corner4Direction };
@@ -95,10 +96,11 @@ int vtkCurvaturePatchSource::RequestData(
   {
     patch.corners[i] = { toVec3(directions[i]), this->CornerWeights[i] };
   }
-  std::string problem = patch.validate();
-  if (problem.empty() && this->Method == CONTROL_POINTS)
+  // A refused list first: its kept rows would give a misleading message.
+  std::string problem = this->Method == CONTROL_POINTS ? this->ControlPoints->Problem() : "";
+  if (problem.empty())
   {
-    problem = this->ControlPoints->Problem();
+    problem = patch.validate();
   }
   if (problem.empty() && std::isnan(this->ClipRadius)) // the clamp macro lets NaN through
   {
