@@ -2,6 +2,8 @@
 
 #include "vtkAOSDataArrayTemplate.h"
 #include "vtkArrayDispatch.h"
+#include "vtkBoostedExponentialRule.h"
+#include "vtkBoostedRowList.h"
 #include "vtkBoostedSurfacesAbort.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -36,12 +38,6 @@ vtkStandardNewMacro(vtkPointPairDeformationFilter);
 
 namespace
 {
-constexpr int ValuesPerGenerator = 7;
-
-// The longest generator list SetNumberOfGenerators makes (a wrong count must not allocate
-// gigabytes); more generators come through the Generators input.
-constexpr int MaximumListGenerators = 1000000;
-
 // Points handed to vtkSMPTools per progress step: large enough that the scheduling cost vanishes,
 // small enough that progress and abort are seen often on big meshes.
 constexpr vtkIdType PointsPerStep = 1 << 16;
@@ -277,6 +273,7 @@ void deformPoints(vtkPointPairDeformationFilter* self, const cga::PointPairField
 } // namespace
 
 vtkPointPairDeformationFilter::vtkPointPairDeformationFilter()
+  : Generators(new vtkBoostedRowList(this, "Generator", std::vector<double>(7, 0.0)))
 {
   this->SetNumberOfInputPorts(2);
   this->SetGeneratorDirectionArrayName("Direction");
@@ -289,73 +286,19 @@ vtkPointPairDeformationFilter::~vtkPointPairDeformationFilter()
   this->SetGeneratorWeightArrayName(nullptr);
 }
 
-void vtkPointPairDeformationFilter::SetNumberOfGenerators(int count)
+int vtkPointPairDeformationFilter::AddGenerator(
+  double x, double y, double z, double vx, double vy, double vz, double weight)
 {
-  if (count > MaximumListGenerators)
-  {
-    vtkErrorMacro(<< "SetNumberOfGenerators: " << count << " is more than the "
-                  << MaximumListGenerators
-                  << " generators the list may hold (use the Generators input for more)");
-    return;
-  }
-  const std::size_t size = static_cast<std::size_t>(std::max(0, count)) * ValuesPerGenerator;
-  if (size != this->Generators.size())
-  {
-    this->Generators.resize(size, 0.0);
-    this->Modified();
-  }
-}
-
-int vtkPointPairDeformationFilter::GetNumberOfGenerators() const
-{
-  return static_cast<int>(this->Generators.size() / ValuesPerGenerator);
+  return this->Generators->Add({ x, y, z, vx, vy, vz, weight });
 }
 
 void vtkPointPairDeformationFilter::SetGenerator(
   int index, double x, double y, double z, double vx, double vy, double vz, double weight)
 {
-  if (index < 0 || index >= this->GetNumberOfGenerators())
-  {
-    vtkErrorMacro(<< "SetGenerator: index " << index << " is outside the list of "
-                  << this->GetNumberOfGenerators() << " generators");
-    return;
-  }
-  const double values[ValuesPerGenerator] = { x, y, z, vx, vy, vz, weight };
-  double* entry = this->Generators.data() + ValuesPerGenerator * index;
-  if (!std::equal(values, values + ValuesPerGenerator, entry))
-  {
-    std::copy(values, values + ValuesPerGenerator, entry);
-    this->Modified();
-  }
+  this->Generators->Set(index, { x, y, z, vx, vy, vz, weight });
 }
 
-int vtkPointPairDeformationFilter::AddGenerator(
-  double x, double y, double z, double vx, double vy, double vz, double weight)
-{
-  const int index = this->GetNumberOfGenerators();
-  this->Generators.insert(this->Generators.end(), { x, y, z, vx, vy, vz, weight });
-  this->Modified();
-  return index;
-}
-
-bool vtkPointPairDeformationFilter::GetGenerator(int index, double values[7]) const
-{
-  if (index < 0 || index >= this->GetNumberOfGenerators())
-  {
-    return false;
-  }
-  std::copy_n(this->Generators.data() + ValuesPerGenerator * index, ValuesPerGenerator, values);
-  return true;
-}
-
-void vtkPointPairDeformationFilter::RemoveAllGenerators()
-{
-  if (!this->Generators.empty())
-  {
-    this->Generators.clear();
-    this->Modified();
-  }
-}
+vtkBoostedRowListMethods(vtkPointPairDeformationFilter, Generator, Generators)
 
 void vtkPointPairDeformationFilter::SetGeneratorsConnection(vtkAlgorithmOutput* output)
 {
@@ -437,11 +380,16 @@ int vtkPointPairDeformationFilter::RequestData(
   }
 
   // The list, with the selected generator moved to the handle's location, then the second port.
+  if (!this->Generators->CheckForUpdate())
+  {
+    return 1; // the output stays empty
+  }
   std::vector<cga::PointPairGenerator> generators;
   for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
   {
-    const double* g = this->Generators.data() + ValuesPerGenerator * i;
-    const double* location = i == this->SelectedGenerator ? this->SelectedGeneratorLocation : g;
+    const double* g = this->Generators->Row(i);
+    const double* location =
+      this->Generators->Location(i, this->SelectedGenerator, this->SelectedGeneratorLocation);
     generators.push_back(
       { { location[0], location[1], location[2] }, { g[3], g[4], g[5] }, g[6] });
   }
@@ -497,7 +445,7 @@ int vtkPointPairDeformationFilter::RequestData(
   displacement->SetNumberOfTuples(count);
 
   const cga::ExponentialRule rule =
-    this->ExponentialRule == PAPER ? cga::ExponentialRule::Paper : cga::ExponentialRule::Exact;
+    vtkBoostedExponentialRule<vtkPointPairDeformationFilter>(this->ExponentialRule);
   vtkIdType unchanged = 0, nonFiniteInputs = 0;
   (outputType == VTK_FLOAT ? deformPoints<float> : deformPoints<double>)(this, field,
     inPoints->GetData(), outPoints->GetData(), displacement, this->Strength, rule, unchanged,
@@ -522,14 +470,7 @@ int vtkPointPairDeformationFilter::RequestData(
 void vtkPointPairDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Generators: " << this->GetNumberOfGenerators() << "\n";
-  for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
-  {
-    const double* g = this->Generators.data() + ValuesPerGenerator * i;
-    os << indent.GetNextIndent() << i << ": location (" << g[0] << ", " << g[1] << ", " << g[2]
-       << "), direction (" << g[3] << ", " << g[4] << ", " << g[5] << "), weight " << g[6]
-       << "\n";
-  }
+  this->Generators->Print(os, indent);
   os << indent << "SelectedGenerator: " << this->SelectedGenerator << "\n";
   os << indent << "SelectedGeneratorLocation: (" << this->SelectedGeneratorLocation[0] << ", "
      << this->SelectedGeneratorLocation[1] << ", " << this->SelectedGeneratorLocation[2] << ")\n";

@@ -41,7 +41,9 @@
 #include "BoostedSurfacesFiltersModule.h" // for export macro
 #include "vtkPointSetAlgorithm.h"
 
-#include <vector> // for the generator list
+#include <memory> // for the generator list
+
+class vtkBoostedRowList;
 
 class BOOSTEDSURFACESFILTERS_EXPORT vtkPointPairDeformationFilter : public vtkPointSetAlgorithm
 {
@@ -57,25 +59,25 @@ public:
   };
 
   ///@{
-  /// The generator list: location (x, y, z), direction (vx, vy, vz) and weight of each.
-  /// SetNumberOfGenerators resizes the list (new entries are zero, hence ignored until set);
-  /// SetGenerator(i, ...) changes entry i < GetNumberOfGenerators().
-  void SetNumberOfGenerators(int count);
-  int GetNumberOfGenerators() const;
+  /// The generator list: rows of location (x, y, z), direction (vx, vy, vz) and weight, with the
+  /// list API and the cap of vtkBoostedRowList (Common/): AddGenerator returns the new row's
+  /// index, SetGenerator(i, ...) changes row i < GetNumberOfGenerators(), SetNumberOfGenerators
+  /// resizes (new rows are zero, hence ignored until set), GetGenerator copies a row (false if
+  /// there is none); at most 10^6 rows (more come through the Generators input).
+  int AddGenerator(double x, double y, double z, double vx, double vy, double vz, double weight);
   void SetGenerator(int index, double x, double y, double z, double vx, double vy, double vz,
     double weight);
-  /// Appends a generator and returns its index.
-  int AddGenerator(double x, double y, double z, double vx, double vy, double vz, double weight);
-  /// The 7 values of entry index (location, direction, weight); false if there is no such entry.
+  void SetNumberOfGenerators(int count);
   bool GetGenerator(int index, double values[7]) const;
   void RemoveAllGenerators();
+  int GetNumberOfGenerators() const;
   ///@}
 
   ///@{
   /// A handle for one generator of the list: when SelectedGenerator is a valid index, its location
   /// is replaced by SelectedGeneratorLocation (ParaView moves it with a handle widget). -1 (the
   /// default) selects none.
-  vtkSetMacro(SelectedGenerator, int);
+  vtkSetClampMacro(SelectedGenerator, int, -1, VTK_INT_MAX);
   vtkGetMacro(SelectedGenerator, int);
   vtkSetVector3Macro(SelectedGeneratorLocation, double);
   vtkGetVector3Macro(SelectedGeneratorLocation, double);
@@ -144,7 +146,7 @@ protected:
     vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  std::vector<double> Generators; // 7 values per generator
+  std::unique_ptr<vtkBoostedRowList> Generators;
   int SelectedGenerator = -1;
   double SelectedGeneratorLocation[3] = { 0.0, 0.0, 0.0 };
   char* GeneratorDirectionArrayName = nullptr;

@@ -1,6 +1,8 @@
 #include "vtkCurvaturePatchSource.h"
 
+#include "vtkBoostedExponentialRule.h"
 #include "vtkBoostedGridDriver.h"
+#include "vtkBoostedRowList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
@@ -22,56 +24,27 @@ cga::Vec3 toVec3(const double v[3])
 }
 
 vtkCurvaturePatchSource::vtkCurvaturePatchSource()
+  : ControlPoints(new vtkBoostedRowList(
+      this, "ControlPoint", { 0, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0 }))
 {
   this->SetNumberOfInputPorts(0);
 }
 
-void vtkCurvaturePatchSource::AddControlPoint(double x, double y, double z, double nx, double ny,
+vtkCurvaturePatchSource::~vtkCurvaturePatchSource() = default;
+
+int vtkCurvaturePatchSource::AddControlPoint(double x, double y, double z, double nx, double ny,
   double nz, double ux, double uy, double uz, double kappaU, double kappaV)
 {
-  this->SetControlPoint(static_cast<int>(this->ControlPoints.size()), x, y, z, nx, ny, nz, ux, uy,
-    uz, kappaU, kappaV);
+  return this->ControlPoints->Add({ x, y, z, nx, ny, nz, ux, uy, uz, kappaU, kappaV });
 }
 
-void vtkCurvaturePatchSource::SetControlPoint(int i, double x, double y, double z, double nx,
+void vtkCurvaturePatchSource::SetControlPoint(int index, double x, double y, double z, double nx,
   double ny, double nz, double ux, double uy, double uz, double kappaU, double kappaV)
 {
-  if (i < 0 || i > 1000000)
-  {
-    vtkErrorMacro(<< "control point index " << i << " is out of range");
-    return;
-  }
-  const std::array<double, 11> values = { x, y, z, nx, ny, nz, ux, uy, uz, kappaU, kappaV };
-  if (static_cast<size_t>(i) >= this->ControlPoints.size())
-  {
-    this->ControlPoints.resize(static_cast<size_t>(i) + 1,
-      std::array<double, 11>{ 0, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0 });
-  }
-  else if (this->ControlPoints[i] == values)
-  {
-    return;
-  }
-  this->ControlPoints[i] = values;
-  this->Modified();
+  this->ControlPoints->Set(index, { x, y, z, nx, ny, nz, ux, uy, uz, kappaU, kappaV });
 }
 
-void vtkCurvaturePatchSource::GetControlPoint(int i, double values[11])
-{
-  if (i < 0 || static_cast<size_t>(i) >= this->ControlPoints.size())
-  {
-    return;
-  }
-  std::copy(this->ControlPoints[i].begin(), this->ControlPoints[i].end(), values);
-}
-
-void vtkCurvaturePatchSource::RemoveAllControlPoints()
-{
-  if (!this->ControlPoints.empty())
-  {
-    this->ControlPoints.clear();
-    this->Modified();
-  }
-}
+vtkBoostedRowListMethods(vtkCurvaturePatchSource, ControlPoint, ControlPoints)
 
 int vtkCurvaturePatchSource::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
@@ -87,7 +60,7 @@ int vtkCurvaturePatchSource::RequestData(
 
   cga::CurvaturePatch patch;
   patch.method = static_cast<cga::CurvatureMethod>(this->Method);
-  patch.rule = this->ExponentialRule == PAPER ? cga::ExponentialRule::Paper : cga::ExponentialRule::Exact;
+  patch.rule = vtkBoostedExponentialRule<vtkCurvaturePatchSource>(this->ExponentialRule);
   patch.frame.origin = toVec3(this->Origin);
   patch.frame.u = toVec3(this->UDirection);
   patch.frame.v = toVec3(this->VDirection);
@@ -102,13 +75,13 @@ int vtkCurvaturePatchSource::RequestData(
   }
   patch.falloff = this->Falloff;
   patch.epsilon = this->Epsilon;
-  for (size_t i = 0; i < this->ControlPoints.size(); ++i)
+  for (int i = 0; i < this->GetNumberOfControlPoints(); ++i)
   {
-    const std::array<double, 11>& c = this->ControlPoints[i];
-    const bool selected = static_cast<int>(i) == this->SelectedControlPoint;
-    patch.controlPoints.push_back({ selected ? toVec3(this->SelectedControlPointLocation)
-                                             : cga::Vec3{ c[0], c[1], c[2] },
-      { c[3], c[4], c[5] }, { c[6], c[7], c[8] }, c[9], c[10] });
+    const double* c = this->ControlPoints->Row(i);
+    const double* location = this->ControlPoints->Location(
+      i, this->SelectedControlPoint, this->SelectedControlPointLocation);
+    patch.controlPoints.push_back(
+      { toVec3(location), { c[3], c[4], c[5] }, { c[6], c[7], c[8] }, c[9], c[10] });
   }
   const double* directions[4] = { this->Corner1Direction, this->Corner2Direction,
     this->Corner3Direction, this->Corner4Direction };
@@ -118,9 +91,15 @@ int vtkCurvaturePatchSource::RequestData(
   }
   const long long rows = patch.sizeV > 0.0 ? this->VResolution + 1LL : 1LL;
   const long long columns = this->UResolution + 1LL;
+  // A refused list first: its kept rows would give a misleading message.
+  std::string problem = this->Method == CONTROL_POINTS ? this->ControlPoints->Problem() : "";
+  if (problem.empty())
+  {
+    problem = patch.validate();
+  }
   vtkBoostedGridDriver driver(
     this, outInfo, this->Origin, this->ClipRadius, this->OutputPointsPrecision);
-  if (!driver.Prepare(patch.validate(), rows, columns, false, this->OutputType == SURFACE && rows > 1))
+  if (!driver.Prepare(problem, rows, columns, false, this->OutputType == SURFACE && rows > 1))
   {
     return 1; // an error, or an empty piece
   }
@@ -186,11 +165,7 @@ void vtkCurvaturePatchSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CurvaturePreset: " << presets[this->CurvaturePreset] << "\n";
   os << indent << "Falloff: " << this->Falloff << "\n";
   os << indent << "Epsilon: " << this->Epsilon << "\n";
-  os << indent << "ControlPoints: " << this->ControlPoints.size() << "\n";
-  for (const auto& c : this->ControlPoints)
-  {
-    vector((os << indent.GetNextIndent(), "ControlPoint"), c.data(), 11);
-  }
+  this->ControlPoints->Print(os, indent);
   os << indent << "SelectedControlPoint: " << this->SelectedControlPoint << "\n";
   vector((os << indent, "SelectedControlPointLocation"), this->SelectedControlPointLocation, 3);
   vector((os << indent, "Corner1Direction"), this->Corner1Direction, 3);

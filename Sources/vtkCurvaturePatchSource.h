@@ -42,8 +42,9 @@
 #include "BoostedSurfacesSourcesModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include <array>  // for control points
-#include <vector> // for control points
+#include <memory> // for the control point list
+
+class vtkBoostedRowList;
 
 class BOOSTEDSURFACESSOURCES_EXPORT vtkCurvaturePatchSource : public vtkPolyDataAlgorithm
 {
@@ -142,22 +143,26 @@ public:
   ///@}
 
   ///@{
-  /// Control points of CONTROL_POINTS: location, normal, u direction, kappa_u, kappa_v.
-  void AddControlPoint(double x, double y, double z, double nx, double ny, double nz, double ux,
+  /// The control point list of CONTROL_POINTS: rows of location (x, y, z), normal (nx, ny, nz),
+  /// u direction (ux, uy, uz), kappa_u and kappa_v, with the list API and the cap of
+  /// vtkBoostedRowList (Common/): AddControlPoint returns the new row's index,
+  /// SetControlPoint(i, ...) changes row i < GetNumberOfControlPoints(), SetNumberOfControlPoints
+  /// resizes (new rows: at the origin, normal z, u direction x, flat), GetControlPoint copies a
+  /// row (false if there is none); at most 10^6 rows.
+  int AddControlPoint(double x, double y, double z, double nx, double ny, double nz, double ux,
     double uy, double uz, double kappaU, double kappaV);
-  /// Sets control point i (the list grows as needed; the ParaView table calls this).
-  void SetControlPoint(int i, double x, double y, double z, double nx, double ny, double nz,
+  void SetControlPoint(int index, double x, double y, double z, double nx, double ny, double nz,
     double ux, double uy, double uz, double kappaU, double kappaV);
-  /// The 11 values of control point i (nothing is written when i is out of range).
-  void GetControlPoint(int i, double values[11]);
+  void SetNumberOfControlPoints(int count);
+  bool GetControlPoint(int index, double values[11]) const;
   void RemoveAllControlPoints();
-  int GetNumberOfControlPoints() { return static_cast<int>(this->ControlPoints.size()); }
+  int GetNumberOfControlPoints() const;
   ///@}
 
   ///@{
   /// For interactive editing: when SelectedControlPoint is a valid index (default -1: none), that
   /// control point's location is replaced by SelectedControlPointLocation.
-  vtkSetClampMacro(SelectedControlPoint, int, -1, 1000000);
+  vtkSetClampMacro(SelectedControlPoint, int, -1, VTK_INT_MAX);
   vtkGetMacro(SelectedControlPoint, int);
   vtkSetVector3Macro(SelectedControlPointLocation, double);
   vtkGetVector3Macro(SelectedControlPointLocation, double);
@@ -194,13 +199,13 @@ public:
 
   ///@{
   /// vtkAlgorithm::SINGLE_PRECISION or DOUBLE_PRECISION (default) for the output points.
-  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
+  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DOUBLE_PRECISION);
   vtkGetMacro(OutputPointsPrecision, int);
   ///@}
 
 protected:
   vtkCurvaturePatchSource();
-  ~vtkCurvaturePatchSource() override = default;
+  ~vtkCurvaturePatchSource() override;
 
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -218,7 +223,7 @@ protected:
   int CurvaturePreset = CUSTOM;
   double Falloff = 1.0;
   double Epsilon = 0.5;
-  std::vector<std::array<double, 11>> ControlPoints;
+  std::unique_ptr<vtkBoostedRowList> ControlPoints;
   int SelectedControlPoint = -1;
   double SelectedControlPointLocation[3] = { 0.0, 0.0, 0.0 };
   double Corner1Direction[3] = { 0.0, 0.0, 1.0 };

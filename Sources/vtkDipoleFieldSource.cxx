@@ -1,6 +1,8 @@
 #include "vtkDipoleFieldSource.h"
 
 #include "vtkBoostedBlockLoop.h"
+#include "vtkBoostedExponentialRule.h"
+#include "vtkBoostedRowList.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -24,8 +26,6 @@ vtkStandardNewMacro(vtkDipoleFieldSource);
 
 namespace
 {
-constexpr int ValuesPerGenerator = 7;
-
 // The most points one update computes (its five arrays take 88 bytes a point in double): a larger
 // request is an error instead of a failed allocation; a larger grid can be streamed in pieces.
 constexpr double MaximumPointsPerUpdate = 1e8;
@@ -98,44 +98,34 @@ struct FieldFunctor
 } // namespace
 
 vtkDipoleFieldSource::vtkDipoleFieldSource()
+  : Generators(new vtkBoostedRowList(this, "Generator", std::vector<double>(7, 0.0)))
 {
   this->SetNumberOfInputPorts(0);
   this->AddGenerator(0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.5);
 }
 
-void vtkDipoleFieldSource::AddGenerator(
+vtkDipoleFieldSource::~vtkDipoleFieldSource() = default;
+
+int vtkDipoleFieldSource::AddGenerator(
   double x, double y, double z, double dx, double dy, double dz, double weight)
 {
-  this->Generators.insert(this->Generators.end(), { x, y, z, dx, dy, dz, weight });
-  this->Modified();
+  return this->Generators->Add({ x, y, z, dx, dy, dz, weight });
 }
 
-void vtkDipoleFieldSource::RemoveAllGenerators()
+void vtkDipoleFieldSource::SetGenerator(
+  int index, double x, double y, double z, double dx, double dy, double dz, double weight)
 {
-  if (!this->Generators.empty())
-  {
-    this->Generators.clear();
-    this->Modified();
-  }
+  this->Generators->Set(index, { x, y, z, dx, dy, dz, weight });
 }
 
-int vtkDipoleFieldSource::GetNumberOfGenerators() const
-{
-  return static_cast<int>(this->Generators.size() / ValuesPerGenerator);
-}
-
-bool vtkDipoleFieldSource::GetGenerator(int i, double generator[7]) const
-{
-  if (i < 0 || i >= this->GetNumberOfGenerators())
-  {
-    return false;
-  }
-  std::copy_n(this->Generators.begin() + ValuesPerGenerator * i, ValuesPerGenerator, generator);
-  return true;
-}
+vtkBoostedRowListMethods(vtkDipoleFieldSource, Generator, Generators)
 
 std::string vtkDipoleFieldSource::Validate() const
 {
+  if (!this->Generators->Problem().empty())
+  {
+    return this->Generators->Problem();
+  }
   for (int c = 0; c < 3; ++c)
   {
     if (this->Dimensions[c] < 1)
@@ -164,9 +154,9 @@ std::string vtkDipoleFieldSource::Validate() const
   }
   for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
   {
-    for (int c = 0; c < ValuesPerGenerator; ++c)
+    for (int c = 0; c < this->Generators->GetNumberOfValuesPerRow(); ++c)
     {
-      if (!std::isfinite(this->Generators[ValuesPerGenerator * i + c]))
+      if (!std::isfinite(this->Generators->Row(i)[c]))
       {
         std::ostringstream message;
         message << "generator " << i << " has a value that is not finite";
@@ -194,7 +184,7 @@ int vtkDipoleFieldSource::RequestInformation(
   outInfo->Set(vtkDataObject::SPACING(), this->Spacing, 3);
   outInfo->Set(CAN_PRODUCE_SUB_EXTENT(), 1);
   vtkDataObject::SetPointDataActiveScalarInfo(
-    outInfo, this->OutputPrecision == SINGLE_PRECISION ? VTK_FLOAT : VTK_DOUBLE, 1);
+    outInfo, this->OutputPointsPrecision == SINGLE_PRECISION ? VTK_FLOAT : VTK_DOUBLE, 1);
 
   outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
   outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
@@ -264,15 +254,15 @@ int vtkDipoleFieldSource::RequestData(
   std::vector<cga::PointPairGenerator> generators;
   for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
   {
-    const double* g = &this->Generators[ValuesPerGenerator * i];
+    const double* g = this->Generators->Row(i);
     const double* t = this->GeneratorsTranslation;
     generators.push_back({ { g[0] + t[0], g[1] + t[1], g[2] + t[2] }, { g[3], g[4], g[5] }, g[6] });
   }
   const cga::DipoleField field(generators, this->Falloff, this->Epsilon,
-    this->ExponentialRule == PAPER ? cga::ExponentialRule::Paper : cga::ExponentialRule::Exact);
+    vtkBoostedExponentialRule<vtkDipoleFieldSource>(this->ExponentialRule));
 
   const vtkIdType n = output->GetNumberOfPoints();
-  const int precision = this->OutputPrecision;
+  const int precision = this->OutputPointsPrecision;
   auto summedGenerators = newArray(precision, "DisplacementSummedGenerators", 3, n);
   auto summedDisplacements = newArray(precision, "DisplacementSummedDisplacements", 3, n);
   auto difference = newArray(precision, "DisplacementDifference", 3, n);
@@ -316,13 +306,7 @@ void vtkDipoleFieldSource::PrintSelf(ostream& os, vtkIndent indent)
      << this->Spacing[2] << ")\n";
   os << indent << "Dimensions: (" << this->Dimensions[0] << ", " << this->Dimensions[1] << ", "
      << this->Dimensions[2] << ")\n";
-  os << indent << "Generators: " << this->GetNumberOfGenerators() << "\n";
-  for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
-  {
-    const double* g = &this->Generators[ValuesPerGenerator * i];
-    os << indent.GetNextIndent() << "location (" << g[0] << ", " << g[1] << ", " << g[2]
-       << ") direction (" << g[3] << ", " << g[4] << ", " << g[5] << ") weight " << g[6] << "\n";
-  }
+  this->Generators->Print(os, indent);
   os << indent << "GeneratorsTranslation: (" << this->GeneratorsTranslation[0] << ", "
      << this->GeneratorsTranslation[1] << ", " << this->GeneratorsTranslation[2] << ")\n";
   os << indent << "Falloff: " << this->Falloff << "\n";
@@ -330,5 +314,5 @@ void vtkDipoleFieldSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ExponentialRule: " << (this->ExponentialRule == PAPER ? "PAPER" : "EXACT")
      << "\n";
   os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
-  os << indent << "OutputPrecision: " << this->OutputPrecision << "\n";
+  os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
 }

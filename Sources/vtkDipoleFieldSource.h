@@ -43,7 +43,9 @@
 #include "vtkImageAlgorithm.h"
 
 #include <string> // for Validate
-#include <vector> // for the generators
+#include <memory> // for the generator list
+
+class vtkBoostedRowList;
 
 class BOOSTEDSURFACESSOURCES_EXPORT vtkDipoleFieldSource : public vtkImageAlgorithm
 {
@@ -70,13 +72,19 @@ public:
   ///@}
 
   ///@{
-  /// The generators: location (x, y, z), direction (dx, dy, dz) and weight. The direction's length
-  /// multiplies the weight. Default: one generator at the origin along x with weight 0.5 (Fig 13).
-  void AddGenerator(double x, double y, double z, double dx, double dy, double dz, double weight);
+  /// The generator list: rows of location (x, y, z), direction (dx, dy, dz; its length multiplies
+  /// the weight) and weight, with the list API and the cap of vtkBoostedRowList (Common/):
+  /// AddGenerator returns the new row's index, SetGenerator(i, ...) changes row
+  /// i < GetNumberOfGenerators(), SetNumberOfGenerators resizes (new rows are zero, hence
+  /// contribute nothing until set), GetGenerator copies a row (false if there is none); at most
+  /// 10^6 rows. Default: one generator at the origin along x with weight 0.5 (Fig 13).
+  int AddGenerator(double x, double y, double z, double dx, double dy, double dz, double weight);
+  void SetGenerator(int index, double x, double y, double z, double dx, double dy, double dz,
+    double weight);
+  void SetNumberOfGenerators(int count);
+  bool GetGenerator(int index, double values[7]) const;
   void RemoveAllGenerators();
   int GetNumberOfGenerators() const;
-  /// Location, direction, weight of generator i (7 values); false if i is out of range.
-  bool GetGenerator(int i, double generator[7]) const;
   ///@}
 
   ///@{
@@ -109,14 +117,15 @@ public:
   ///@}
 
   ///@{
-  /// vtkAlgorithm::SINGLE_PRECISION or DOUBLE_PRECISION (default) for the output arrays.
-  vtkSetClampMacro(OutputPrecision, int, SINGLE_PRECISION, DOUBLE_PRECISION);
-  vtkGetMacro(OutputPrecision, int);
+  /// vtkAlgorithm::SINGLE_PRECISION or DOUBLE_PRECISION (default) for the output arrays (the
+  /// name every class uses; an image's points are implicit, its arrays take the precision).
+  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DOUBLE_PRECISION);
+  vtkGetMacro(OutputPointsPrecision, int);
   ///@}
 
 protected:
   vtkDipoleFieldSource();
-  ~vtkDipoleFieldSource() override = default;
+  ~vtkDipoleFieldSource() override;
 
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -124,13 +133,13 @@ protected:
   double Origin[3] = { -2.0, -2.0, 0.0 };
   double Spacing[3] = { 0.2, 0.2, 1.0 };
   int Dimensions[3] = { 21, 21, 1 };
-  std::vector<double> Generators; // 7 values per generator
+  std::unique_ptr<vtkBoostedRowList> Generators;
   double GeneratorsTranslation[3] = { 0.0, 0.0, 0.0 };
   double Falloff = 1.0;
   double Epsilon = 0.1;
   int ExponentialRule = EXACT;
   int NumberOfTimeSteps = 0;
-  int OutputPrecision = DOUBLE_PRECISION;
+  int OutputPointsPrecision = DOUBLE_PRECISION;
 
 private:
   vtkDipoleFieldSource(const vtkDipoleFieldSource&) = delete;

@@ -1,6 +1,7 @@
 #include "vtkHopfFibrationSource.h"
 
 #include "vtkBoostedGridDriver.h"
+#include "vtkBoostedRowList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
@@ -23,9 +24,6 @@ vtkStandardNewMacro(vtkHopfFibrationSource);
 
 namespace
 {
-// The longest list SetBasePoint and SetNumberOfBasePoints grow (a wrong index must not allocate
-// gigabytes); longer samplings come through the Sphere Points input.
-constexpr int kMaximumBasePoints = 1000000;
 
 /// The normal of the fiber's plane (Newell's sum over its finite segments), for the normals
 /// where the mesh gives none.
@@ -44,6 +42,7 @@ cga::Vec3 fiberPlaneNormal(const std::vector<cga::Vec3>& points, cga::Vec3 cente
 } // namespace
 
 vtkHopfFibrationSource::vtkHopfFibrationSource()
+  : BasePoints(new vtkBoostedRowList(this, "BasePoint", { 0.0, 0.0 }))
 {
   this->SetNumberOfInputPorts(1); // optional points on a sphere (INPUT_POINTS)
 }
@@ -55,55 +54,19 @@ int vtkHopfFibrationSource::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
-void vtkHopfFibrationSource::AddBasePoint(double theta, double phi)
-{
-  this->BasePoints.push_back(theta);
-  this->BasePoints.push_back(phi);
-  this->Modified();
-}
+vtkHopfFibrationSource::~vtkHopfFibrationSource() = default;
 
-void vtkHopfFibrationSource::RemoveAllBasePoints()
+int vtkHopfFibrationSource::AddBasePoint(double theta, double phi)
 {
-  if (!this->BasePoints.empty())
-  {
-    this->BasePoints.clear();
-    this->Modified();
-  }
-}
-
-void vtkHopfFibrationSource::SetNumberOfBasePoints(int count)
-{
-  if (count > kMaximumBasePoints)
-  {
-    vtkErrorMacro(<< "SetNumberOfBasePoints: " << count << " is more than the "
-                  << kMaximumBasePoints << " base points a list may hold");
-    return;
-  }
-  count = std::max(0, count);
-  if (static_cast<size_t>(2 * count) != this->BasePoints.size())
-  {
-    this->BasePoints.resize(2 * static_cast<size_t>(count), 0.0);
-    this->Modified();
-  }
+  return this->BasePoints->Add({ theta, phi });
 }
 
 void vtkHopfFibrationSource::SetBasePoint(int index, double theta, double phi)
 {
-  if (index < 0 || index >= kMaximumBasePoints)
-  {
-    // (2 index + 2 would also overflow an int)
-    vtkErrorMacro(<< "SetBasePoint: index " << index << " is outside [0, " << kMaximumBasePoints
-                  << ")");
-    return;
-  }
-  if (static_cast<size_t>(2 * index + 2) > this->BasePoints.size())
-  {
-    this->BasePoints.resize(2 * static_cast<size_t>(index) + 2, 0.0);
-  }
-  this->BasePoints[2 * index] = theta;
-  this->BasePoints[2 * index + 1] = phi;
-  this->Modified();
+  this->BasePoints->Set(index, { theta, phi });
 }
+
+vtkBoostedRowListMethods(vtkHopfFibrationSource, BasePoint, BasePoints)
 
 int vtkHopfFibrationSource::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
@@ -146,6 +109,10 @@ int vtkHopfFibrationSource::RequestData(
   if (problem.empty() && this->FiberResolution < 3)
   {
     problem = "FiberResolution must be at least 3";
+  }
+  if (problem.empty() && this->SamplingMode == BASE_POINTS)
+  {
+    problem = this->BasePoints->Problem(); // a refused list
   }
   if (problem.empty()) // before sampling: the base points alone could exhaust memory
   {
@@ -228,7 +195,7 @@ cga::HopfSampling vtkHopfFibrationSource::Sampling(vtkPointSet* input) const
   sampling.latitudeStrips = this->OutputType == TWISTOR_MESH && this->MeshSweep == LATITUDES;
   if (this->SamplingMode == BASE_POINTS)
   {
-    sampling.basePoints = this->BasePoints;
+    sampling.basePoints = this->BasePoints->GetValues();
   }
   sampling.sphereCenter = { this->SphereCenter[0], this->SphereCenter[1], this->SphereCenter[2] };
   if (input)
@@ -258,7 +225,7 @@ void vtkHopfFibrationSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PhiRange: [" << this->PhiRange[0] << ", " << this->PhiRange[1] << "]\n";
   os << indent << "ThetaResolution: " << this->ThetaResolution << "\n";
   os << indent << "PhiResolution: " << this->PhiResolution << "\n";
-  os << indent << "BasePoints: " << this->GetNumberOfBasePoints() << "\n";
+  this->BasePoints->Print(os, indent);
   os << indent << "SphereCenter: (" << this->SphereCenter[0] << ", " << this->SphereCenter[1]
      << ", " << this->SphereCenter[2] << ")\n";
   os << indent << "FiberResolution: " << this->FiberResolution << "\n";

@@ -52,7 +52,9 @@
 #include "BoostedSurfacesSourcesModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include <vector> // for the base points
+#include <memory> // for the base point list
+
+class vtkBoostedRowList;
 
 class vtkPointSet;
 namespace cga
@@ -131,12 +133,17 @@ public:
   ///@}
 
   ///@{
-  /// BASE_POINTS sampling: the chosen (theta, phi) pairs, in radians.
-  void AddBasePoint(double theta, double phi);
-  void RemoveAllBasePoints();
-  void SetNumberOfBasePoints(int count);
-  int GetNumberOfBasePoints() const { return static_cast<int>(this->BasePoints.size() / 2); }
+  /// BASE_POINTS sampling: the base point list, rows of (theta, phi) in radians, with the list
+  /// API and the cap of vtkBoostedRowList (Common/): AddBasePoint returns the new row's index,
+  /// SetBasePoint(i, ...) changes row i < GetNumberOfBasePoints(), SetNumberOfBasePoints resizes
+  /// (new rows are (0, 0)), GetBasePoint copies a row (false if there is none); at most 10^6 rows
+  /// (more come through the input, INPUT_POINTS).
+  int AddBasePoint(double theta, double phi);
   void SetBasePoint(int index, double theta, double phi);
+  void SetNumberOfBasePoints(int count);
+  bool GetBasePoint(int index, double values[2]) const;
+  void RemoveAllBasePoints();
+  int GetNumberOfBasePoints() const;
   ///@}
 
   ///@{
@@ -171,13 +178,13 @@ public:
 
   ///@{
   /// vtkAlgorithm::SINGLE_PRECISION or DOUBLE_PRECISION (default) for the output points.
-  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
+  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DOUBLE_PRECISION);
   vtkGetMacro(OutputPointsPrecision, int);
   ///@}
 
 protected:
   vtkHopfFibrationSource();
-  ~vtkHopfFibrationSource() override = default;
+  ~vtkHopfFibrationSource() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -195,7 +202,7 @@ protected:
   double PhiRange[2] = { -1.5707963267948966, 1.5707963267948966 };
   int ThetaResolution = 8;
   int PhiResolution = 9;
-  std::vector<double> BasePoints; // theta, phi pairs
+  std::unique_ptr<vtkBoostedRowList> BasePoints;
   double SphereCenter[3] = { 0.0, 0.0, 0.0 };
   int FiberResolution = 128;
   double ClipRadius = 10.0;

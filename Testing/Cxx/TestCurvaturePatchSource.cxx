@@ -244,7 +244,7 @@ TEST(CurvaturePatchSource, ClampsAndPrecision)
   std::ostringstream printed;
   source->Print(printed);
   EXPECT_NE(printed.str().find("Method: BILINEAR"), std::string::npos);
-  EXPECT_NE(printed.str().find("ControlPoint: (1, 2, 3, 0, 0, 1, 1, 0, 0, 0.5, 0.25)"), std::string::npos);
+  EXPECT_NE(printed.str().find("ControlPoint 0: (1, 2, 3, 0, 0, 1, 1, 0, 0, 0.5, 0.25)"), std::string::npos);
 }
 
 TEST(CurvaturePatchSource, BadParametersGiveAnErrorAndAnEmptyOutput)

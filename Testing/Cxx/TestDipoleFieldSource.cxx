@@ -245,7 +245,7 @@ TEST(DipoleFieldSource, TimeStepsScaleTheWeightsFromZeroToOne)
 TEST(DipoleFieldSource, SinglePrecisionGivesFloatArrays)
 {
   vtkNew<vtkDipoleFieldSource> source;
-  source->SetOutputPrecision(vtkAlgorithm::SINGLE_PRECISION);
+  source->SetOutputPointsPrecision(vtkAlgorithm::SINGLE_PRECISION);
   source->Update();
   for (const char* name : ArrayNames)
   {

@@ -1101,12 +1101,26 @@ TEST(PointPairDeformationFilter, ReportsProgressAndAnAbortedUpdateIsEmpty)
   }
 }
 
-TEST(PointPairDeformationFilter, HugeGeneratorCountIsAnErrorAndChangesNothing)
+TEST(PointPairDeformationFilter, HugeGeneratorCountIsRefusedWithOneErrorAndAnEmptyOutput)
 {
+  Random random(27);
+  auto mesh = randomMesh(random, 4, 1.0);
   vtkNew<vtkPointPairDeformationFilter> filter;
+  filter->SetInputData(mesh);
   EventCounter events(filter);
   filter->AddGenerator(0, 0, 0, 0, 0, 1, 0.5);
-  filter->SetNumberOfGenerators(2000000000); // 112 GB of generators
+  filter->SetNumberOfGenerators(2000000000); // 112 GB of generators: not allocated
+  for (int i = 0; i < 1000; ++i)
+  {
+    filter->SetGenerator(i, 0, 0, 0, 0, 0, 1, 0.5); // as a ParaView table pushes its rows
+  }
   EXPECT_EQ(events.errors, 1);
-  EXPECT_EQ(filter->GetNumberOfGenerators(), 1);
+  EXPECT_EQ(filter->GetNumberOfGenerators(), 1); // the rows are kept
+  filter->Update();
+  EXPECT_EQ(events.errors, 2);
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  filter->SetNumberOfGenerators(1); // within the cap: usable again
+  filter->Update();
+  EXPECT_EQ(events.errors, 2);
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), mesh->GetNumberOfPoints());
 }

@@ -116,6 +116,36 @@ def check_defaults(proxy, defaults, failures):
             failures.append("default %s is %r, expected %r" % (name, value, expected))
 
 
+# The column names of the plugin's tables; the generator table is the same in both classes.
+GENERATOR_COLUMNS = ("X", "Y", "Z", "Direction X", "Direction Y", "Direction Z", "Weight")
+BASE_POINT_COLUMNS = ("Theta", "Phi")
+CONTROL_POINT_COLUMNS = ("X", "Y", "Z", "Normal X", "Normal Y", "Normal Z", "U Direction X",
+                         "U Direction Y", "U Direction Z", "Kappa U", "Kappa V")
+
+
+def check_table(proxy, row, columns, failures):
+    """The table of rows `row` ("Generator", "Base Point", ...) follows the one table protocol:
+    property <Row>List labelled "<row> List", pushed as SetNumberOf<Row>s(n) then Set<Row>(i, ...)
+    for each row (no clean command), with one named column per value."""
+    name = row.replace(" ", "")
+    prop = proxy.GetProperty(name + "List")
+    if prop is None:
+        failures.append("%s has no property %sList" % (proxy.GetXMLName(), name))
+        return
+    sm = prop.SMProperty
+    layout = (sm.GetXMLLabel(), sm.GetCommand(), sm.GetSetNumberCommand(), sm.GetCleanCommand(),
+              sm.GetUseIndex(), sm.GetRepeatCommand(), sm.GetNumberOfElementsPerCommand())
+    expected = (row + " List", "Set" + name, "SetNumberOf" + name + "s", None, 1, 1, len(columns))
+    if layout != expected:
+        failures.append("%s table layout %r, expected %r" % (name, layout, expected))
+    hints = sm.GetHints()
+    labels = hints.FindNestedElementByName("ShowComponentLabels") if hints else None
+    found = tuple(labels.GetNestedElement(i).GetAttribute("label")
+                  for i in range(labels.GetNumberOfNestedElements())) if labels else ()
+    if found != tuple(columns):
+        failures.append("%s table columns %r, expected %r" % (name, found, tuple(columns)))
+
+
 def check_point_arrays(info, names, failures, what="point array"):
     """Each point array of `names` must be in the data information `info`."""
     for array in names:

@@ -15,7 +15,7 @@ failures = []
 ranks = common.mpi_ranks(failures)
 
 for output_type in ("Surface", "Lines"):
-    parameters = dict(Method="Bilinear (eq 25)", UResolution=20, VResolution=17,
+    parameters = dict(Method="Bilinear", UResolution=20, VResolution=17,
                       Corner2Direction=[1, 0, 0.5], OutputType=output_type)
     source = CurvaturePatch(**parameters)  # noqa: F821
     source.UpdatePipeline()

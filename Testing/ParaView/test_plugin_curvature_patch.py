@@ -14,7 +14,7 @@ failures = []
 
 source = CurvaturePatch()  # noqa: F821
 defaults = {
-    "Method": "Translated Tangents (eq 16)",
+    "Method": "Translated Tangents",
     "ExponentialRule": "Exact",
     "Origin": [0.0, 0.0, 0.0],
     "UDirection": [1.0, 0.0, 0.0],
@@ -40,36 +40,33 @@ if info.GetNumberOfPoints() != 33 * 33 or info.GetNumberOfCells() != 32 * 32:
 common.check_point_arrays(info, ("u", "v", "GeneratorWeight", "Normals", "TextureCoordinates"), failures)
 
 # Control points through the repeatable table property: two rows of 11 numbers.
-source.Method = "Control Points (eq 21)"
-source.ControlPoints = [-1, 0, 0, 0, 0, 1, 1, 0, 0, 0.5, 0.5,
+source.Method = "Control Points"
+source.ControlPointList = [-1, 0, 0, 0, 0, 1, 1, 0, 0, 0.5, 0.5,
                         1, 0, 0, 0, 0, 1, 1, 0, 0, -0.5, 0.5]
 source.UpdatePipeline()
 if source.GetDataInformation().GetNumberOfCells() != 32 * 32:
     failures.append("control point patch is incomplete")
 two_rows = source.GetDataInformation().GetBounds()
-source.ControlPoints = [-1, 0, 0, 0, 0, 1, 1, 0, 0, 0.5, 0.5]
+source.ControlPointList = [-1, 0, 0, 0, 0, 1, 1, 0, 0, 0.5, 0.5]
 source.UpdatePipeline()
 if source.GetDataInformation().GetBounds() == two_rows:
     failures.append("the second control point row changed nothing")
-# The table's 11 columns are named in the GUI (as the other tables are).
-hints = source.GetProperty("ControlPoints").SMProperty.GetHints()
-labels = hints.FindNestedElementByName("ShowComponentLabels") if hints else None
-if labels is None or labels.GetNumberOfNestedElements() != 11:
-    failures.append("the Control Points table does not name its 11 columns")
-source.ControlPoints = []  # no control point: an error and an empty output
+# The table's 11 columns are named in the GUI, with the protocol of every table.
+common.check_table(source, "Control Point", common.CONTROL_POINT_COLUMNS, failures)
+source.ControlPointList = []  # no control point: an error and an empty output
 source.UpdatePipeline()
 if source.GetDataInformation().GetNumberOfPoints() != 0:
     failures.append("no control points should give an empty output")
 
-for method in ("Bent Line (eq 15)", "Osculating Circles (eq 17)", "Linear (eq 24)",
-               "Bilinear (eq 25)"):
+for method in ("Bent Line", "Osculating Circles", "Linear",
+               "Bilinear"):
     source.Method = method
     source.UpdatePipeline()
     if source.GetDataInformation().GetNumberOfCells() != 32 * 32:
         failures.append("%s gives %d cells" % (method, source.GetDataInformation().GetNumberOfCells()))
 
-source.Method = "Translated Tangents (eq 16)"
-source.CurvaturePreset = "Umbilic (Fig 7c)"
+source.Method = "Translated Tangents"
+source.CurvaturePreset = "Umbilic"
 common.render_and_compare(source, "v", [0.0, -6.0, 4.0], [0.0, 0.0, -0.5], [0.0, 0.0, 1.0],
                           arguments, failures)
 

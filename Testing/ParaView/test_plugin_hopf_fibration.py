@@ -49,12 +49,9 @@ if max(abs(b) for b in data.GetBounds()) > 10.0 + 1e-9:
 
 # Base Points: a repeatable (theta, phi) list.
 source.SamplingMode = "Base Points"
-# The table's two columns are named in the GUI (as the other tables are).
-hints = source.GetProperty("BasePoints").SMProperty.GetHints()
-labels = hints.FindNestedElementByName("ShowComponentLabels") if hints else None
-if labels is None or labels.GetNumberOfNestedElements() != 2:
-    failures.append("the Base Points table does not name its 2 columns")
-source.BasePoints = [0.0, -1.0, 1.0, 0.0, 2.0, 0.5]
+# The table's two columns are named in the GUI, with the protocol of every table.
+common.check_table(source, "Base Point", common.BASE_POINT_COLUMNS, failures)
+source.BasePointList = [0.0, -1.0, 1.0, 0.0, 2.0, 0.5]
 source.UpdatePipeline()
 ids, data = fiber_ids(source)
 if ids != [0, 1, 2]:

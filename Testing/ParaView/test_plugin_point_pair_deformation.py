@@ -40,6 +40,8 @@ defaults = {
     "UseGeneratorWeightArray": 0,
 }
 common.check_defaults(deformation, defaults, failures)
+# The generator table: the same protocol and columns as the Dipole Field's.
+common.check_table(deformation, "Generator", common.GENERATOR_COLUMNS, failures)
 
 # One generator: p -> x + SCT_u(p - x) with u = -w v / (k |p - x|^2 + eps).
 x, v, w, k, eps = (0.2, 0.0, 0.9), (0.0, 0.0, 1.0), 0.6, 4.0, 0.05
@@ -71,8 +73,8 @@ directions = simple.Calculator(Input=point, ResultArrayName="Direction",
                                Function="%g*iHat+%g*jHat+%g*kHat" % v)
 weights = simple.Calculator(Input=directions, ResultArrayName="w", Function="%g" % w)
 from_port = PointPairDeformation(Input=sphere, Generators=weights, GeneratorList=[],  # noqa: F821
-                                 Falloff=k, Epsilon=eps, GeneratorDirectionArray="Direction",
-                                 UseGeneratorWeightArray=1, GeneratorWeightArray="w")
+                                 Falloff=k, Epsilon=eps, GeneratorDirectionArrayName="Direction",
+                                 UseGeneratorWeightArray=1, GeneratorWeightArrayName="w")
 error = largest_distance(points_of(from_port), points_of(deformation))
 print("Generators input vs table: %g" % error)
 if error > 1e-6:

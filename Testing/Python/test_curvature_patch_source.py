@@ -34,11 +34,21 @@ class CurvaturePatchSourceTest(unittest.TestCase):
         source = vtkCurvaturePatchSource()
         source.SetMethodToControlPoints()
         source.AddControlPoint(0, 0, 0, 0, 0, 1, 1, 0, 0, 0.5, -0.5)
-        source.SetControlPoint(2, 1, 1, 0, 0, 0, 1, 0, 1, 0, 0.25, 0.25)  # grows the list
-        self.assertEqual(source.GetNumberOfControlPoints(), 3)
+        errors = common.ErrorRecorder(source)
+        source.SetControlPoint(2, 1, 1, 0, 0, 0, 1, 0, 1, 0, 0.25, 0.25)  # no row 2 yet
+        self.assertEqual(len(errors.messages), 1)
+        self.assertIn("outside the list of 1 rows", errors.messages[0])
+        source.SetNumberOfControlPoints(3)  # new rows: at the origin, normal z, u along x, flat
         values = [0.0] * 11
-        source.GetControlPoint(2, values)
+        self.assertTrue(source.GetControlPoint(1, values))
+        self.assertEqual(values, [0, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0])
+        source.SetControlPoint(2, 1, 1, 0, 0, 0, 1, 0, 1, 0, 0.25, 0.25)
+        self.assertEqual(source.GetNumberOfControlPoints(), 3)
+        self.assertTrue(source.GetControlPoint(2, values))
         self.assertEqual(values, [1, 1, 0, 0, 0, 1, 0, 1, 0, 0.25, 0.25])
+        self.assertFalse(source.GetControlPoint(3, values))
+        self.assertEqual(source.AddControlPoint(0, 1, 0, 0, 0, 1, 1, 0, 0, 0.5, 0.5), 3)
+        source.SetNumberOfControlPoints(3)
         source.Update()
         self.assertGreater(source.GetOutput().GetNumberOfCells(), 0)
         source.RemoveAllControlPoints()
