@@ -2,9 +2,10 @@
 
 Each generator is a null point pair tau(x, v) at a location x with a direction v and a weight w
 (drawn as an arrow from x along v). At every mesh point p the generators sum, weighted by the
-inverse squared distance, into B(p) = sum w tau(x, v) / (k |p - x|^2 + eps), and p moves to
-fn(K up(p) ~K) with K = exp(-B(p)) (eq 23, SPEC.md section 3 item 9). vtkPointPairDeformationFilter
-does this for any mesh; the colour is the length of its "Displacement" array.
+inverse squared distance, into B(p) = sum w tau(x, v) / (k |p - x|^2 + eps), and p moves to fn(K
+up(p) ~K) with K = exp(-B(p)) (eq 23, docs/conventions.md section 3 item 9).
+vtkPointPairDeformationFilter does this for any mesh; the colour is the length of its "Displacement"
+array.
 
     python3 fig11_deformation.py --output fig11.png --size 900 700
 """

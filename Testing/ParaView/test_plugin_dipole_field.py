@@ -29,7 +29,7 @@ defaults = {
 common.check_defaults(source, defaults, failures)
 
 # One generator off the grid's symmetry: the field must be the closed form, an SCT about x of
-# weight u = -w v / (k |p - x|^2 + eps) (SPEC.md section 2).
+# weight u = -w v / (k |p - x|^2 + eps) (docs/conventions.md section 2).
 x, v, w, k, eps = (0.3, -0.2, 0.0), (0.0, 1.0, 0.0), 0.8, 1.5, 0.05
 source.Generators = list(x) + list(v) + [w]
 source.Falloff = k
