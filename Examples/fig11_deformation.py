@@ -36,6 +36,10 @@ SPHERE_GENERATORS = [
 FALLOFF = 4.0
 EPSILON = 0.05
 DISPLACEMENT_RANGE = (0.0, 0.6)
+# The camera and default size of the figure (and of its regression test,
+# Python.PointPairDeformationImage).
+VIEW = dict(view_direction=(0.15, -1.0, 0.6), view_up=(0, 0, 1), zoom=1.1)
+SIZE = (900, 700)
 
 
 def deformed(source, generators):
@@ -106,7 +110,7 @@ def build_scene():
 
 def main(argv=None):
     return gc.render_figure(__doc__.splitlines()[0], "fig11_deformation.png", build_scene, argv,
-                            view_direction=(0.15, -1.0, 0.6), view_up=(0, 0, 1), zoom=1.1)
+                            default_size=SIZE, **VIEW)
 
 
 if __name__ == "__main__":
