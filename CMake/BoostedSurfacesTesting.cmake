@@ -52,7 +52,12 @@ function (boostedsurfaces_add_gtest name prefix)
     return ()
   endif ()
   add_executable(${name} ${name}.cxx)
-  target_include_directories(${name} PRIVATE "${BOOSTEDSURFACES_TEST_SUPPORT_DIR}")
+  # Testing/Support, and the kernel tests' helpers (CGA/Testing/TestSupport.h: seeded random
+  # inputs, relative comparisons), so that no test keeps a copy of them.
+  target_include_directories(${name} PRIVATE
+    "${BOOSTEDSURFACES_TEST_SUPPORT_DIR}" "${PROJECT_SOURCE_DIR}/CGA/Testing")
+  target_compile_definitions(${name} PRIVATE
+    BOOSTED_CGA_TEST_DATA_DIR="${PROJECT_SOURCE_DIR}/CGA/Testing/Data")
   target_link_libraries(${name} PRIVATE ${ARGN} VTK::CommonCore VTK::CommonDataModel
     VTK::CommonExecutionModel GTest::gtest_main)
   gtest_discover_tests(${name} TEST_PREFIX "${prefix}." DISCOVERY_TIMEOUT 60)
