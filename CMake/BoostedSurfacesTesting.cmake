@@ -26,14 +26,14 @@ set(BOOSTEDSURFACES_TEST_SUPPORT_DIR "${PROJECT_SOURCE_DIR}/Testing/Support")
 
 # boostedsurfaces_skip_test(<what> <missing package>): remember a test that is not built.
 function (boostedsurfaces_skip_test what missing)
-  set_property(GLOBAL APPEND PROPERTY boostedsurfaces_skipped_tests "${what} (needs ${missing})")
+  set_property(GLOBAL APPEND PROPERTY boostedsurfaces_skipped_tests "${missing} not found, skipping ${what}")
 endfunction ()
 
 # Prints the tests that boostedsurfaces_skip_test recorded; called once at the end of configuring.
 function (boostedsurfaces_report_skipped_tests)
   get_property(skipped GLOBAL PROPERTY boostedsurfaces_skipped_tests)
   foreach (test IN LISTS skipped)
-    message(STATUS "BoostedSurfaces: skipping the test ${test}")
+    message(STATUS "BoostedSurfaces: ${test}")
   endforeach ()
 endfunction ()
 
@@ -48,7 +48,7 @@ endfunction ()
 # ctest names <prefix>.<Suite>.<Test>.
 function (boostedsurfaces_add_gtest name prefix)
   if (NOT TARGET GTest::gtest_main)
-    boostedsurfaces_skip_test("${prefix}.* of ${name}" GTest)
+    boostedsurfaces_skip_test("the ${prefix}.* tests of ${name}" GTest)
     return ()
   endif ()
   add_executable(${name} ${name}.cxx)
