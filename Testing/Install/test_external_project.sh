@@ -9,6 +9,24 @@ work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 
 cmake --install "$build_dir" --prefix "$work/prefix" >/dev/null
+
+# The core is one shared library: its kernel (and the kernel's instruction-set choice) is defined
+# there and in no other installed library (the VTK modules, the Python modules, the plugin).
+# (grep reads all of nm's output, so that pipefail cannot see nm die of a closed pipe)
+kernel_symbol='cga::kernel::activeMapBlock'
+defines_kernel() { nm -DC --defined-only "$1" | grep -F "$kernel_symbol" >/dev/null; }
+defines_kernel "$work/prefix/lib/libBoostedSurfacesCGA.so" ||
+  { echo "libBoostedSurfacesCGA.so does not define $kernel_symbol" >&2; exit 1; }
+checked=0
+while IFS= read -r library; do
+  if defines_kernel "$library"; then
+    echo "$library holds its own copy of the kernel ($kernel_symbol)" >&2
+    exit 1
+  fi
+  checked=$((checked + 1))
+done < <(find "$work/prefix" -name '*.so' ! -name 'libBoostedSurfacesCGA.so*')
+test "$checked" -ge 3
+echo "the kernel is defined once, in libBoostedSurfacesCGA.so ($checked other libraries checked)"
 cmake -S "$project_dir" -B "$work/build" -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$work/prefix" >"$work/configure.log" 2>&1 || { cat "$work/configure.log"; exit 1; }
 cmake --build "$work/build" -j 2 >"$work/build.log" 2>&1 || { tail -50 "$work/build.log"; exit 1; }
