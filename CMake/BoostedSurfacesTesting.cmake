@@ -37,6 +37,19 @@ function (boostedsurfaces_report_skipped_tests)
   endforeach ()
 endfunction ()
 
+# vtk_module_build adds a module's Testing/ folder only when every TEST_DEPENDS of its vtk.module
+# is a target, and says nothing otherwise: record such modules as skipped.
+function (boostedsurfaces_skip_modules_without_test_depends)
+  foreach (module IN LISTS ARGN)
+    get_property(test_depends GLOBAL PROPERTY "_vtk_module_${module}_test_depends") # VTK's record
+    foreach (depend IN LISTS test_depends)
+      if (NOT TARGET "${depend}")
+        boostedsurfaces_skip_test("the tests of ${module} (its Testing/ folder)" "${depend}")
+      endif ()
+    endforeach ()
+  endforeach ()
+endfunction ()
+
 # Every test that opens a render window shares the one Xvfb display of a test run; several render
 # windows starting on it at once fail ("bad X server connection"), so under ctest -j they take turns.
 function (boostedsurfaces_mark_rendering_test name)
