@@ -2,9 +2,10 @@
 
 Each generator is a null point pair tau(x, v) at a location x with a direction v and a weight w
 (drawn as an arrow from x along v). At every mesh point p the generators sum, weighted by the
-inverse squared distance, into B(p) = sum w tau(x, v) / (k |p - x|^2 + eps), and p moves to
-fn(K up(p) ~K) with K = exp(-B(p)) (eq 23, SPEC.md section 3 item 9). vtkPointPairDeformationFilter
-does this for any mesh; the colour is the length of its "Displacement" array.
+inverse squared distance, into B(p) = sum w tau(x, v) / (k |p - x|^2 + eps), and p moves to fn(K
+up(p) ~K) with K = exp(-B(p)) (eq 23, docs/conventions.md section 3 item 9).
+vtkPointPairDeformationFilter does this for any mesh; the colour is the length of its "Displacement"
+array.
 
     python3 fig11_deformation.py --output fig11.png --size 900 700
 """
@@ -35,6 +36,10 @@ SPHERE_GENERATORS = [
 FALLOFF = 4.0
 EPSILON = 0.05
 DISPLACEMENT_RANGE = (0.0, 0.6)
+# The camera and default size of the figure (and of its regression test,
+# Python.PointPairDeformationImage).
+VIEW = dict(view_direction=(0.15, -1.0, 0.6), view_up=(0, 0, 1), zoom=1.1)
+SIZE = (900, 700)
 
 
 def deformed(source, generators):
@@ -105,7 +110,7 @@ def build_scene():
 
 def main(argv=None):
     return gc.render_figure(__doc__.splitlines()[0], "fig11_deformation.png", build_scene, argv,
-                            view_direction=(0.15, -1.0, 0.6), view_up=(0, 0, 1), zoom=1.1)
+                            default_size=SIZE, **VIEW)
 
 
 if __name__ == "__main__":

@@ -4,7 +4,7 @@ Tangents are translated to the four corners of a grid (the arrows, reversed wher
 negative).
 At each grid point (s, t) the corner point pairs are interpolated,
 tau_st = (1-s)((1-t) tau_1 + t tau_2) + s((1-t) tau_3 + t tau_4), and the point is moved by
-K = exp(-tau_st / 2) (SPEC.md section 3 item 11). Four choices of corner tangents:
+K = exp(-tau_st / 2) (docs/conventions.md section 3 item 11). Four choices of corner tangents:
 
 a) all along the normal, weights (0.5, -0.5, -0.5, 0.5): a saddle (the paper's exponential is
    exact here), b) all along the normal, equal weights, c) tangents tilted 45 degrees along u,

@@ -1,10 +1,11 @@
 """Paper Fig 13: the dipole field of one point-pair generator.
 
 A null point pair tau = tau(x, v) at the origin with direction v along x boosts every point p of a
-grid by K = exp(-w tau / d^2), d^2 = k |p - x|^2 + eps (SPEC.md section 3 item 12, eq 27-28). The
-arrows point along the displacements v = fn(K up(p) ~K) - p, coloured by their length: they leave the generator on one side and come
-back on the other, like the field of a dipole. Because d^2 grows like |p - x|^2, the displacement
-does not fade far away: it is smallest near the generator, which is the boost's fixed point. With one generator both methods of Fig 14 give this
+grid by K = exp(-w tau / d^2), d^2 = k |p - x|^2 + eps (docs/conventions.md section 3 item 12, eq
+27-28). The arrows point along the displacements v = fn(K up(p) ~K) - p, coloured by their length:
+they leave the generator on one side and come back on the other, like the field of a dipole. Because
+d^2 grows like |p - x|^2, the displacement does not fade far away: it is smallest near the
+generator, which is the boost's fixed point. With one generator both methods of Fig 14 give this
 same field. The grey lines are contours of "DipolePotential", which cross the arrows at right
 angles.
 

@@ -1,7 +1,8 @@
 """Paper Fig 14: two dipoles, summed generators (a) against summed displacements (b).
 
 Two null point pairs, tau_a at (-1, 0, 0) pointing along y and tau_b at (1, 0, 0) pointing along x,
-act on a grid of points p (SPEC.md section 3 item 12, eq 27-28), with d_i^2 = k |p - x_i|^2 + eps:
+act on a grid of points p (docs/conventions.md section 3 item 12, eq 27-28), with
+d_i^2 = k |p - x_i|^2 + eps:
 
 * a) the paper's method: one boost K = exp(-(w tau_a / d_a^2 + w tau_b / d_b^2)), v = fn(K up(p) ~K) - p;
 * b) vector field topology's: v = sum over i of (fn(K_i up(p) ~K_i) - p), K_i = exp(-w tau_i / d_i^2).

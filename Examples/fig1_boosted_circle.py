@@ -1,7 +1,7 @@
 """Paper Fig 1: a unit circle boosted in its own plane.
 
 The unit circle in the xy plane is transformed by K = exp(lambda no^e1) = 1 + lambda no e1, a boost
-at the origin along x (SPEC.md section 3 item 1). The image is the circle with center
+at the origin along x (docs/conventions.md section 3 item 1). The image is the circle with center
 lambda/(lambda^2-1) e1 and radius 1/|lambda^2-1|:
 
 * lambda < 1: the circle grows to the left (blue),

@@ -1,10 +1,10 @@
 """Paper Fig 2: surfaces swept by boosting a circle along its normal.
 
 The unit circle in the yz plane is transformed by K = exp(lambda no^e1) = 1 + lambda no e1, a boost
-at its center along x, which is the circle's normal (SPEC.md section 3 item 2). Each image is a
-circle in the plane x = lambda/(1+lambda^2) with radius 1/(1+lambda^2); sweeping lambda over a range
-gives a surface. As in the paper, three ranges side by side: [0, 1], [0, 2] and [0, 4]. The first
-flares out to x = 1/2 at lambda = 1, the others turn back toward the circle's center.
+at its center along x, which is the circle's normal (docs/conventions.md section 3 item 2). Each
+image is a circle in the plane x = lambda/(1+lambda^2) with radius 1/(1+lambda^2); sweeping lambda
+over a range gives a surface. As in the paper, three ranges side by side: [0, 1], [0, 2] and [0, 4].
+The first flares out to x = 1/2 at lambda = 1, the others turn back toward the circle's center.
 
 vtkBoostedSurfaceSource with its default OutputType SURFACE gives quads with normals and the point
 array "lambda", used for the colours (one colour scale for all three).

@@ -3,9 +3,10 @@
 The base circle C is the unit circle in the yz plane. Its axis is the x axis (the dual line
 -ni⌋C). The tangent along the axis, no^d, translated to a point L on the axis, is the null point
 pair tau = tau(L, d); the boosts K = 1 + k tau for k in [0, 1] slide C along the axis toward L and
-shrink it (SPEC.md section 3 item 3). Every point of C moves on a circular arc that would reach L
-tangent to the axis (as k grows without bound), so the meridians of the surface bend away from the
-axis while its circles go around it: the surface is negatively curved, a horn whose tip is L.
+shrink it (docs/conventions.md section 3 item 3). Every point of C moves on a circular arc that
+would reach L tangent to the axis (as k grows without bound), so the meridians of the surface bend
+away from the axis while its circles go around it: the surface is negatively curved, a horn whose
+tip is L.
 
 vtkBoostedSurfaceSource does this with BoostAtCircleCenter off, BoostLocation = L and
 BoostDirection = d; its "lambda" is the paper's k.

@@ -1,11 +1,11 @@
 """Paper Fig 6: a line bent into circles by a tangent translated to one of its points (eq 15).
 
 The line through the origin along x is transformed by K = 1 - kappa/2 tau, with tau the tangent
-along +z translated to the origin (SPEC.md section 3 item 5). The image is the circle of radius
-1/|kappa| tangent to the line at the origin, with center -z/kappa: kappa is the true curvature.
-The family sweeps kappa from -2 to 2 (colours); kappa = 0 is the line itself (black). The arrow is
-the generating tangent. The far ends of the line approach, but never reach, the point opposite
-the origin on each circle.
+along +z translated to the origin (docs/conventions.md section 3 item 5). The image is the circle of
+radius 1/|kappa| tangent to the line at the origin, with center -z/kappa: kappa is the true
+curvature. The family sweeps kappa from -2 to 2 (colours); kappa = 0 is the line itself (black). The
+arrow is the generating tangent. The far ends of the line approach, but never reach, the point
+opposite the origin on each circle.
 
 vtkCurvaturePatchSource with Method BENT_LINE and Size (length, 0) gives one polyline.
 

@@ -1,9 +1,9 @@
 """Paper Fig 7: principal curvatures stated at a point by two translated tangents (eq 16).
 
-Each patch is the plane z = 0 around its origin, boosted point by point with
-K = exp(-1/2 (kappa_u tau(o + b v, n) + kappa_v tau(o + a u, n))) (SPEC.md section 3 item 6). The
-principal curvatures at the origin are kappa_u along u (x) and kappa_v along v (y). The four
-presets of vtkCurvaturePatchSource (CurvaturePreset) reproduce Fig 7:
+Each patch is the plane z = 0 around its origin, boosted point by point with K = exp(-1/2 (kappa_u
+tau(o + b v, n) + kappa_v tau(o + a u, n))) (docs/conventions.md section 3 item 6). The principal
+curvatures at the origin are kappa_u along u (x) and kappa_v along v (y). The four presets of
+vtkCurvaturePatchSource (CurvaturePreset) reproduce Fig 7:
 
 a) parabolic (0.5, 0), b) elliptic (0.5, 0.25), c) umbilic (0.5, 0.5), d) hyperbolic (-0.5, 0.5).
 

@@ -1,10 +1,10 @@
 """Paper Fig 8: curvatures weighted by the squared distance to two osculating circles (eq 17-18).
 
 At the origin of each patch the osculating circles C_u and C_v of curvatures kappa_u, kappa_v are
-the images of the u and v lines under eq 15. Every point p of the plane is boosted by
-K = exp(-(kappa_u/(d_u^2 + eps) + kappa_v/(d_v^2 + eps)) tau), tau the tangent along the normal at
-the origin and d^2 = (up(p) _| C*)^2 (SPEC.md section 3 item 7). The weights grow near the circles,
-so the deformation falls off with the distance from them, as the paper observes:
+the images of the u and v lines under eq 15. Every point p of the plane is boosted by K =
+exp(-(kappa_u/(d_u^2 + eps) + kappa_v/(d_v^2 + eps)) tau), tau the tangent along the normal at the
+origin and d^2 = (up(p) _| C*)^2 (docs/conventions.md section 3 item 7). The weights grow near the
+circles, so the deformation falls off with the distance from them, as the paper observes:
 
 a) kappa_u < 0, kappa_v = 0, b) both negative and different, c) both negative and equal,
 d) kappa_u < 0 < kappa_v.

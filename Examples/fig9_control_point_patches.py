@@ -1,10 +1,10 @@
 """Paper Fig 9: patches bent by four uv control points at their corners (eq 21-22).
 
-Each control point i states curvatures kappa_u, kappa_v at its location x_i; a point p of the
-plane is boosted by K = exp(-sum_i W_i tau_i) with
-W_i = (kappa_ui/(d_ui^2 + eps) + kappa_vi/(d_vi^2 + eps)) / (k |p - x_i|^2 + eps), d_ui and d_vi
-the eq 18 distances to the control point's osculating circles (SPEC.md section 3 item 8). The
-arrows are the control points' tangents (their normals):
+Each control point i states curvatures kappa_u, kappa_v at its location x_i; a point p of the plane
+is boosted by K = exp(-sum_i W_i tau_i) with W_i = (kappa_ui/(d_ui^2 + eps) + kappa_vi/(d_vi^2 +
+eps)) / (k |p - x_i|^2 + eps), d_ui and d_vi the eq 18 distances to the control point's osculating
+circles (docs/conventions.md section 3 item 8). The arrows are the control points' tangents (their
+normals):
 
 a) positive umbilic (all 0.5, 0.5), b) negative umbilic, c) hyperbolic (0.5, -0.5),
 d) hyperbolic with alternating signs.

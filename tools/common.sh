@@ -6,7 +6,7 @@ REPO_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${BUILD_DIR:-$REPO_DIR/build}"
 JOBS="${JOBS:-$(nproc)}"
 
-# Debian 12 packages: ParaView 5.11 with its own VTK 9.2 (RECIPE.md), MPI, the test and benchmark
+# Debian 12 packages: ParaView 5.11 with its own VTK 9.2, MPI, the test and benchmark
 # libraries, Xvfb for headless rendering, and the dev packages ParaView's CMake config looks for.
 DEBIAN_PACKAGES=(
   build-essential cmake git

@@ -12,8 +12,9 @@ def parse_arguments():
     parser.add_argument("--plugin", required=True, help="path of BoostedSurfaces.so")
     parser.add_argument("--baseline", help="baseline PNG to compare with")
     parser.add_argument("--output-dir", default=".", help="where rendered images are written")
-    parser.add_argument("--threshold", type=float, default=0.05,
-                        help="largest accepted vtkImageDifference thresholded error")
+    parser.add_argument("--threshold", type=float, required=True,
+                        help="largest accepted vtkImageDifference thresholded error (CMake passes "
+                             "BOOSTEDSURFACES_IMAGE_THRESHOLD, the one policy of every image test)")
     return parser.parse_args()
 
 

@@ -31,7 +31,7 @@ common.check_defaults(source, defaults, failures)
 common.check_table(source, "Generator", common.GENERATOR_COLUMNS, failures)
 
 # One generator off the grid's symmetry: the field must be the closed form, an SCT about x of
-# weight u = -w v / (k |p - x|^2 + eps) (SPEC.md section 2).
+# weight u = -w v / (k |p - x|^2 + eps) (docs/conventions.md section 2).
 x, v, w, k, eps = (0.3, -0.2, 0.0), (0.0, 1.0, 0.0), 0.8, 1.5, 0.05
 source.GeneratorList = list(x) + list(v) + [w]
 source.Falloff = k

@@ -1,6 +1,6 @@
 """The plugin in pvpython or pvbatch: the Point Pair Deformation filter exists with its documented
-defaults, one generator of the table gives the closed form of SPEC.md section 2, the optional
-Generators input and the selected-generator handle act as documented, and the Fig 11 sphere
+defaults, one generator of the table gives the closed form of docs/conventions.md section 2, the
+optional Generators input and the selected-generator handle act as documented, and the Fig 11 sphere
 renders like the baseline."""
 import math
 import os

@@ -38,8 +38,9 @@ def parse_image_arguments(description, figures=None):
         parser.add_argument("--figure", required=True, choices=sorted(figures))
     parser.add_argument("--baseline", required=True, help="absolute path of the baseline PNG")
     parser.add_argument("--output-dir", required=True, help="where the rendered image goes")
-    parser.add_argument("--threshold", type=float, default=10.0,
-                        help="vtkTesting error threshold (10, as vtkRegressionTestImage)")
+    parser.add_argument("--threshold", type=float, required=True,
+                        help="largest accepted vtkImageDifference thresholded error (CMake passes "
+                             "BOOSTEDSURFACES_IMAGE_THRESHOLD, the one policy of every image test)")
     return parser.parse_args()
 
 

@@ -19,7 +19,7 @@ from boostedsurfaces import vtkPointPairDeformationFilter
 
 import python_test_common as common
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Examples"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "Examples"))
 
 
 def sct_about(x, u, p):

@@ -13,7 +13,7 @@ from boostedsurfaces import vtkBoostedSurfaceSource
 import python_test_common as common
 
 # The horn test uses the parameters of the example script.
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Examples"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "Examples"))
 
 TOLERANCE = 1e-9
 

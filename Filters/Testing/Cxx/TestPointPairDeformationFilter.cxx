@@ -6,6 +6,7 @@
 #include "EventCounter.h"
 #include "ProgressLog.h"
 #include "vtkAOSDataArrayTemplate.h"
+#include "TestSupport.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -50,30 +51,7 @@ struct Generator
   double weight;
 };
 
-class Random
-{
-public:
-  explicit Random(unsigned seed)
-    : Engine(seed)
-  {
-  }
-  double uniform(double lo, double hi) { return std::uniform_real_distribution<>(lo, hi)(Engine); }
-  Vec3 vec3(double half) { return { uniform(-half, half), uniform(-half, half), uniform(-half, half) }; }
-  Vec3 unit()
-  {
-    for (;;)
-    {
-      const Vec3 v = vec3(1.0);
-      if (cga::norm(v) > 0.1 && cga::norm(v) <= 1.0)
-      {
-        return v / cga::norm(v);
-      }
-    }
-  }
-
-private:
-  std::mt19937 Engine;
-};
+using cgatest::Random; // the kernel tests' seeded inputs (CGA/Testing/TestSupport.h)
 
 std::vector<Generator> randomGenerators(Random& random, int count, double maxWeight)
 {

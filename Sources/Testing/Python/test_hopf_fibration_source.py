@@ -15,7 +15,7 @@ from boostedsurfaces import vtkHopfFibrationSource
 
 import python_test_common as common
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Examples"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "Examples"))
 
 
 def fiber_ids(output):

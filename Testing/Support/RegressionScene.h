@@ -1,6 +1,6 @@
 // Shared by the C++ regression-image tests: a white scene in a window of a given size, the two
 // kinds of actor they draw, and the comparison with the baseline named by `-V` (the rendered image
-// goes to `-T`), as vtkRegressionTestImage does.
+// goes to `-T`), as vtkRegressionTestImage does, under the project's one image threshold.
 #ifndef RegressionScene_h
 #define RegressionScene_h
 
@@ -45,7 +45,8 @@ struct RegressionScene
   int RenderAndCompare(int argc, char* argv[])
   {
     window->Render();
-    const int result = vtkRegressionTestImage(window);
+    // The one threshold of every image test, from CMake/BoostedSurfacesTesting.cmake.
+    const int result = vtkRegressionTestImageThreshold(window, BOOSTEDSURFACES_IMAGE_THRESHOLD);
     if (result == vtkRegressionTester::DO_INTERACTOR)
     {
       interactor->Start();
