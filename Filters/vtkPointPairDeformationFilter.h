@@ -28,8 +28,8 @@
  * Bad input: points that are NaN or infinite pass through unchanged (Displacement 0) and are
  * counted in one warning; so are points whose image would be at infinity. Generators with a zero
  * or non-finite direction, location or weight are ignored with one warning. No generators (or
- * Strength 0) is the identity. A missing or wrongly typed array on the Generators port, or a
- * non-finite Strength, or a NaN Falloff or Epsilon, is an error and gives an empty output.
+ * Strength 0) is the identity. A missing or wrongly typed array on the Generators port (or one
+ * with another number of tuples than the port's points), a non-finite Strength, or a NaN Falloff or Epsilon, is an error and gives an empty output.
  *
  * The per-point work runs in vtkSMPTools. Note that Debian's VTK uses the Sequential backend
  * unless the environment sets VTK_SMP_BACKEND_IN_USE=STDThread; the filter does not change the
