@@ -3,6 +3,7 @@
 #include "TestSupport.h"
 
 #include "cga/CompactAlgebra.h"
+#include "cga/CompactConversion.h"
 #include "cga/Conformal.h"
 #include "cga/Exponential.h"
 #include "cga/PointPairs.h"
@@ -409,5 +410,65 @@ TEST(Exponential, NonFiniteInputGivesNaN)
   EXPECT_FALSE(expExact(b).isFinite());
   InvariantDecomposition split;
   EXPECT_FALSE(invariantDecomposition(b, split));
+}
+} // namespace
+
+namespace
+{
+bool sameEven(const Even& a, const Even& b)
+{
+  bool same = a.scalar == b.scalar;
+  for (int i = 0; i < Bivector::Count; ++i)
+  {
+    same = same && a.bivector[i] == b.bivector[i];
+  }
+  for (int i = 0; i < Quadvector::Count; ++i)
+  {
+    same = same && a.quadvector[i] == b.quadvector[i];
+  }
+  return same;
+}
+
+TEST(Exponential, OfANullPairAtTheOriginIsOnePlusItToTheBit)
+{
+  // The Hopf boost 1 + k tau(0, v) goes through expExact: its squares vanish exactly.
+  Random random(95);
+  for (int n = 0; n < 1000; ++n)
+  {
+    const double k = std::ldexp(random.uniform(-1.0, 1.0), static_cast<int>(random.uniform(-20, 20)));
+    const Bivector b = k * nullPointPairCompact({ 0, 0, 0 }, random.unit());
+    Even onePlus = Even::fromBivector(b);
+    onePlus.scalar = 1.0;
+    ASSERT_TRUE(sameEven(expExact(b), onePlus)) << "k " << k;
+  }
+}
+
+TEST(Exponential, PaperRuleOfARotationIsCosPlusSinToTwoUlps)
+{
+  // The Hopf rotations cos a + sin a U go through expPaper: the same cos and sin calls from
+  // x = 0.01 on (bit for bit), the power series of both below.
+  const Bivector planes[] = { toBivector(Multivector::basisBlade(blade::e1 | blade::e2)),
+                              toBivector(Multivector::basisBlade(blade::e1 | blade::e3)),
+                              toBivector(Multivector::basisBlade(blade::e2 | blade::ep)) };
+  Random random(96);
+  for (const Bivector& u : planes)
+  {
+    ASSERT_EQ(scalarSquare(u), -1.0);
+    for (int n = 0; n < 2000; ++n)
+    {
+      const double a = n % 2 ? random.uniform(-7.0, 7.0) : random.uniform(-0.02, 0.02);
+      const Even k = expPaper(a * u);
+      Even expected = Even::fromBivector(std::sin(a) * u);
+      expected.scalar = std::cos(a);
+      if (std::fabs(a) >= 0.01)
+      {
+        ASSERT_TRUE(sameEven(k, expected)) << "a " << a;
+      }
+      else
+      {
+        EXPECT_LE((k - expected).maxAbs(), 4.5e-16) << "a " << a;
+      }
+    }
+  }
 }
 } // namespace

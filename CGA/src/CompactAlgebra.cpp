@@ -1,12 +1,40 @@
 #include "cga/CompactAlgebra.h"
 
 #include "CompactLayout.h"
+#include "PointMapCore.h"
 #include "SparseProduct.h"
 
 namespace cga
 {
 using detail::EvenArray;
 using detail::SparseProduct;
+
+namespace
+{
+// The products of the exponentials and of the sandwich, each built once (detail::boostTables).
+struct BoostProducts
+{
+  SparseProduct wedge{ Bivector::kBlades, Bivector::kBlades, Quadvector::kBlades };
+  SparseProduct quadvectorSquare{ Quadvector::kBlades, Quadvector::kBlades, detail::kScalarBlade };
+  SparseProduct rightContraction{ Quadvector::kBlades, Bivector::kBlades, Bivector::kBlades };
+  SparseProduct evenTimesVector{ detail::kEvenBlades, ConformalVector::kBlades, detail::kOddBlades };
+  SparseProduct oddTimesEvenToVector{ detail::kOddBlades, detail::kEvenBlades,
+                                      ConformalVector::kBlades };
+  detail::BoostTables tables{ wedge.terms(), quadvectorSquare.terms(), rightContraction.terms(),
+                              evenTimesVector.terms(), oddTimesEvenToVector.terms() };
+};
+
+const BoostProducts& boostProducts()
+{
+  static const BoostProducts products;
+  return products;
+}
+} // namespace
+
+const detail::BoostTables& detail::boostTables()
+{
+  return boostProducts().tables;
+}
 
 Even reverse(const Even& k)
 {
@@ -21,7 +49,7 @@ Even operator*(const Even& a, const Even& b)
   const EvenArray pa = detail::pack(a);
   const EvenArray pb = detail::pack(b);
   EvenArray r{};
-  table.accumulate(pa.data(), pb.data(), r.data());
+  table.apply(pa.data(), pb.data(), r.data());
   return detail::unpack(r);
 }
 
@@ -29,40 +57,33 @@ Even operator*(const Bivector& a, const Bivector& b)
 {
   static const SparseProduct table(Bivector::kBlades, Bivector::kBlades, detail::kEvenBlades);
   EvenArray r{};
-  table.accumulate(a.c.data(), b.c.data(), r.data());
+  table.apply(a.c.data(), b.c.data(), r.data());
   return detail::unpack(r);
 }
 
 double scalarSquare(const Bivector& b)
 {
-  using B = Bivector;
-  // e_ij^2 = -1; (e_i no)(e_i ni) and (e_i ni)(e_i no) have scalar part 1; (no^ni)^2 = 1.
-  return -(b[B::E12] * b[B::E12] + b[B::E13] * b[B::E13] + b[B::E23] * b[B::E23]) +
-    2.0 * (b[B::E1NO] * b[B::E1NI] + b[B::E2NO] * b[B::E2NI] + b[B::E3NO] * b[B::E3NI]) +
-    b[B::NONI] * b[B::NONI];
+  return core::scalarSquare(b.c.data());
 }
 
 double scalarSquare(const Quadvector& q)
 {
-  static const SparseProduct table(Quadvector::kBlades, Quadvector::kBlades, detail::kScalarBlade);
   double r = 0.0;
-  table.accumulate(q.c.data(), q.c.data(), &r);
+  detail::applyTerms(boostProducts().tables.quadvectorSquare, 1, q.c.data(), q.c.data(), &r);
   return r;
 }
 
 Quadvector wedge(const Bivector& a, const Bivector& b)
 {
-  static const SparseProduct table(Bivector::kBlades, Bivector::kBlades, Quadvector::kBlades);
   Quadvector r;
-  table.accumulate(a.c.data(), b.c.data(), r.c.data());
+  boostProducts().wedge.apply(a.c.data(), b.c.data(), r.c.data());
   return r;
 }
 
 Bivector rightContraction(const Quadvector& q, const Bivector& b)
 {
-  static const SparseProduct table(Quadvector::kBlades, Bivector::kBlades, Bivector::kBlades);
   Bivector r;
-  table.accumulate(q.c.data(), b.c.data(), r.c.data());
+  boostProducts().rightContraction.apply(q.c.data(), b.c.data(), r.c.data());
   return r;
 }
 

@@ -2,7 +2,9 @@
 
 #include "cga/CompactAlgebra.h"
 
+#include "CompactLayout.h"
 #include "ExponentialScalars.h"
+#include "PointMapCore.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,71 +25,28 @@ Even nanEven()
   k.quadvector.c.fill(nan);
   return k;
 }
-
-// exp(B) = a0 + a4 W + b0 B + b4 <W B>_2 from the power series in B^2 = s + W
-// (detail::seriesCoefficients).
-Even seriesExp(const Bivector& b)
-{
-  const Quadvector w = wedge(b, b);
-  const detail::SeriesCoefficients<double> c =
-    detail::seriesCoefficients(scalarSquare(b), scalarSquare(w));
-  Even k;
-  k.scalar = c.a0;
-  k.quadvector = c.a4 * w;
-  k.bivector = c.b0 * b + c.b4 * rightContraction(w, b);
-  return k;
-}
 } // namespace
 
+// Both rules are the templates of PointMapCore.h, instantiated for double: the block kernel
+// computes K through the same source.
 Even expPaper(const Bivector& b, ExpScaling scaling)
 {
-  const double m = b.maxAbs();
-  if (!std::isfinite(m))
+  if (!b.isFinite())
   {
     return nanEven();
   }
-  if (m == 0.0)
-  {
-    return Even::identity();
-  }
-  const Bivector unit = b / m;
-  const detail::PlaneFunctions f =
-    detail::planeFunctions(m, scalarSquare(unit), scaling == ExpScaling::AvoidOverflow);
   Even k;
-  k.scalar = f.c;
-  k.bivector = f.sHat * unit;
+  k.bivector = b;
+  core::paperExponential(k.bivector.c.data(), k.scalar, scaling == ExpScaling::AvoidOverflow);
   return k;
 }
 
 Even expExact(const Bivector& b, ExpScaling scaling)
 {
-  const double m = b.maxAbs();
-  if (!std::isfinite(m))
-  {
-    return nanEven();
-  }
-  if (m == 0.0)
-  {
-    return Even::identity();
-  }
-  // Invariants of the unit-scaled u = B/m: squares of B are m^2 times those of u.
-  const Bivector u = b / m;
-  const Quadvector w = wedge(u, u);
-  double l1 = 0.0, l2 = 0.0;
-  detail::planeSquares(scalarSquare(u), scalarSquare(w), l1, l2);
-  if (detail::exactUsesSeries(m, l1, l2))
-  {
-    return seriesExp(b);
-  }
-  // In terms of u: exp(B) = a0 + a4' w + b0' u + b4' <w u>_2 with the primed coefficients carrying
-  // the powers of m (a4 W = a4 m^2 w, ...), which planeFunctions' sHat = m S absorbs.
-  const detail::ExactCoefficients c =
-    detail::exactCoefficients(m, l1, l2, scaling == ExpScaling::AvoidOverflow);
-  Even k;
-  k.scalar = c.scalar;
-  k.quadvector = c.quadvector * w;
-  k.bivector = c.bivector * u + c.bivectorW * rightContraction(w, u);
-  return k;
+  detail::EvenArray k;
+  core::exactExponential(
+    detail::boostTables(), b.c.data(), scaling == ExpScaling::AvoidOverflow, k.data());
+  return detail::unpack(k);
 }
 
 bool invariantDecomposition(const Bivector& b, InvariantDecomposition& out)

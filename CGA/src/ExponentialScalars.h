@@ -1,8 +1,7 @@
-// Internal: the scalar arithmetic of the closed-form exponentials (Exponential.cpp): the squares
-// of the two commuting planes of a bivector, each plane's cosh/sinh (cos/sin) factors, the
-// coefficients of expExact and of its power series. Exponential.cpp and the block kernel
-// (PointPairKernelLanes.h) both compute K through these, so they round alike operation for
-// operation.
+// Internal: the scalar arithmetic of the closed-form exponentials: the squares of the two
+// commuting planes of a bivector, each plane's cosh/sinh (cos/sin) factors, the coefficients of
+// expExact and of its power series, sinc. The templates of PointMapCore.h call these per lane;
+// Logarithm.cpp uses planeSquares and sinc.
 //
 // Everything has internal linkage (an unnamed namespace) and uses only builtins and libm: the
 // kernel includes this file in translation units compiled for AVX2 and AVX-512, whose copies of a

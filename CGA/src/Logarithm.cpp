@@ -2,6 +2,8 @@
 
 #include "cga/CompactAlgebra.h"
 
+#include "ExponentialScalars.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,30 +12,6 @@ namespace cga
 {
 namespace
 {
-// Roots s1 >= s2 of s^2 - sum s + prod = 0 (real for a versor; a negative discriminant is
-// rounding of a double root), the smaller-magnitude root from the product to avoid cancellation.
-void roots(double sum, double prod, double& s1, double& s2)
-{
-  const double disc = sum * sum - 4.0 * prod;
-  if (!(disc > 0.0))
-  {
-    // A double root, possibly split into a complex pair by rounding.
-    s1 = s2 = 0.5 * sum;
-    return;
-  }
-  const double r = std::sqrt(disc);
-  if (sum >= 0.0)
-  {
-    s1 = 0.5 * (sum + r);
-    s2 = s1 != 0.0 ? prod / s1 : 0.0;
-  }
-  else
-  {
-    s2 = 0.5 * (sum - r);
-    s1 = prod / s2;
-  }
-}
-
 // g = (angle of the plane)/sqrt|s| for a factor C + u with u^2 = s, C^2 = 1 + s: the rotation angle
 // atan2(sqrt(-s), C) in [0, pi], or the rapidity asinh(sqrt s).
 // False for a factor -1 or -exp(boost), which have no real logarithm of this form.
@@ -70,10 +48,6 @@ bool planeLogFactor(double s, double c, double& g)
   return true;
 }
 
-double sinc(double x)
-{
-  return std::fabs(x) < 1e-4 ? 1.0 - x * x / 6.0 : std::sin(x) / x;
-}
 } // namespace
 
 bool logVersor(const Even& k, Bivector& out, double versorTolerance)
@@ -98,8 +72,9 @@ bool logVersor(const Even& k, Bivector& out, double versorTolerance)
   const double y2 = scalarSquare(y);
   const double sum = scalarSquare(x) - 2.0 * y2;
   const double prod = y2;
+  // The squares s1 >= s2 of the two planes: the roots of s^2 - sum s + prod = 0.
   double s1 = 0.0, s2 = 0.0;
-  roots(sum, prod, s1, s2);
+  detail::planeSquares(sum, 4.0 * prod, s1, s2);
   const double largest = std::max(std::fabs(s1), std::fabs(s2));
 
   double cX = 0.0, cXY = 0.0;
@@ -137,7 +112,7 @@ bool logVersor(const Even& k, Bivector& out, double versorTolerance)
       // cXY = (cos t1/(sin t1 sinc(t2 - t1)) - t2/(sin t1 sin t2))/sin(t1 + t2).
       const double sin1 = std::sqrt(-s1), sin2 = std::sqrt(-s2);
       const double t1 = std::atan2(sin1, c1), t2 = std::atan2(sin2, c2);
-      const double sincDiff = sinc(t2 - t1);
+      const double sincDiff = detail::sinc(t2 - t1);
       const double sinSum = std::sin(t1 + t2);
       cX = (sin2 * c1 / sincDiff + t1) / sinSum;
       cXY = (c1 / (sin1 * sincDiff) - t2 / (sin1 * sin2)) / sinSum;

@@ -4,9 +4,8 @@
 #include "cga/PointPairs.h"
 #include "cga/PointSandwich.h"
 
-#include "CompactLayout.h"
 #include "PointPairKernelDispatch.h"
-#include "SparseProduct.h"
+#include "PointMapCore.h"
 
 #include <algorithm>
 
@@ -17,6 +16,30 @@ Even exponential(const Bivector& b, ExponentialRule rule)
   return rule == ExponentialRule::Exact ? expExact(b) : expPaper(b);
 }
 
+FieldGenerator FieldGenerator::pointPair(Vec3 location, Vec3 direction, double weight)
+{
+  return { location, nullPointPairCompact(location, direction), weight };
+}
+
+namespace
+{
+// The point pairs as field generators; one with a zero or non-finite direction gets a NaN weight,
+// which the field skips.
+std::vector<FieldGenerator> pointPairs(const PointPairGenerator* generators, std::size_t count)
+{
+  std::vector<FieldGenerator> pairs;
+  pairs.reserve(count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const PointPairGenerator& g = generators[i];
+    const bool usable = isFinite(g.direction) && norm2(g.direction) != 0.0;
+    pairs.push_back(FieldGenerator::pointPair(
+      g.location, usable ? g.direction : Vec3{}, usable ? g.weight : std::nan("")));
+  }
+  return pairs;
+}
+} // namespace
+
 PointPairField::PointPairField(const PointPairGenerator* generators,
                                std::size_t count,
                                double falloff,
@@ -24,36 +47,58 @@ PointPairField::PointPairField(const PointPairGenerator* generators,
   : Falloff(falloff)
   , Epsilon(epsilon)
 {
-  static_assert(kernel::kGeneratorStride == 3 + Bivector::Count, "location, then the pair");
-  this->Locations.reserve(count);
-  this->WeightedPairs.reserve(count);
-  this->PackedGenerators.reserve(count * kernel::kGeneratorStride);
+  const std::vector<FieldGenerator> pairs = pointPairs(generators, count);
+  this->add(pairs.data(), pairs.size());
+}
+
+PointPairField::PointPairField(const FieldGenerator* generators,
+                               std::size_t count,
+                               double falloff,
+                               double epsilon)
+  : Falloff(falloff)
+  , Epsilon(epsilon)
+{
+  this->add(generators, count);
+}
+
+void PointPairField::add(const FieldGenerator* generators, std::size_t count)
+{
+  static_assert(kernel::kGeneratorStride == 3 + Bivector::Count, "location, then the bivector");
+  this->Generators.reserve(count * kernel::kGeneratorStride);
   for (std::size_t i = 0; i < count; ++i)
   {
-    const PointPairGenerator& g = generators[i];
-    if (!isFinite(g.location) || !isFinite(g.direction) || !std::isfinite(g.weight) ||
-      norm2(g.direction) == 0.0)
+    const FieldGenerator& g = generators[i];
+    if (!isFinite(g.location) || !g.bivector.isFinite() || !std::isfinite(g.weight) ||
+      g.bivector.maxAbs() == 0.0)
     {
       ++this->Skipped;
       continue;
     }
-    this->Locations.push_back(g.location);
-    this->WeightedPairs.push_back(g.weight * nullPointPairCompact(g.location, g.direction));
-    const Bivector& pair = this->WeightedPairs.back();
-    this->PackedGenerators.insert(
-      this->PackedGenerators.end(), { g.location.x, g.location.y, g.location.z });
-    this->PackedGenerators.insert(this->PackedGenerators.end(), pair.c.begin(), pair.c.end());
+    const Bivector weighted = g.weight * g.bivector;
+    this->Generators.insert(this->Generators.end(), { g.location.x, g.location.y, g.location.z });
+    this->Generators.insert(this->Generators.end(), weighted.c.begin(), weighted.c.end());
+    ++this->Count;
   }
+}
+
+kernel::FieldArgs PointPairField::args(double strength, ExponentialRule rule) const
+{
+  kernel::FieldArgs args;
+  args.generators = this->Generators.data();
+  args.generatorCount = this->Count;
+  args.falloff = this->Falloff;
+  args.epsilon = this->Epsilon;
+  args.strength = strength;
+  args.exactRule = rule == ExponentialRule::Exact;
+  args.tables = &detail::boostTables();
+  return args;
 }
 
 Bivector PointPairField::generatorAt(Vec3 p) const
 {
+  const double xyz[3] = { p.x, p.y, p.z };
   Bivector b;
-  for (std::size_t i = 0; i < this->Locations.size(); ++i)
-  {
-    const double d2 = norm2(p - this->Locations[i]);
-    b += this->WeightedPairs[i] * (1.0 / (this->Falloff * d2 + this->Epsilon));
-  }
+  core::fieldBivector(this->args(1.0, ExponentialRule::Exact), xyz, 1.0, b.c.data());
   return b;
 }
 
@@ -68,63 +113,26 @@ bool PointPairField::map(Vec3 p, double strength, ExponentialRule rule, Vec3& ou
   {
     return false;
   }
-  if (this->Locations.empty() || strength == 0.0)
+  if (this->Count == 0 || strength == 0.0)
   {
     out = p;
     return true;
   }
-  return sandwichPoint(this->boostAt(p, strength, rule), p, out);
+  // core::mapPoint for one point: the block kernel instantiates the same template for its lanes.
+  const double xyz[3] = { p.x, p.y, p.z };
+  double image[3];
+  bool mapped = false;
+  core::mapPoint(this->args(strength, rule), xyz, image, &mapped);
+  if (!mapped)
+  {
+    return false;
+  }
+  out = { image[0], image[1], image[2] };
+  return true;
 }
 
 namespace
 {
-// The terms of a sparse product (SparseProduct.h), as plain data for the block kernel, grouped
-// by result slot (a stable sort: each slot still sums its terms in SparseProduct's order, so the
-// kernel's sums round exactly as accumulate()'s).
-class TermTable
-{
-public:
-  explicit TermTable(const detail::SparseProduct& product)
-  {
-    for (int t = 0; t < product.size(); ++t)
-    {
-      const detail::ProductTerm& term = product.term(t);
-      this->Terms[t] = { term.a, term.b, term.r, term.coefficient };
-    }
-    this->Size = product.size();
-    std::stable_sort(this->Terms.begin(),
-                     this->Terms.begin() + this->Size,
-                     [](const kernel::KernelTerm& x, const kernel::KernelTerm& y) { return x.r < y.r; });
-  }
-
-  kernel::KernelTerms view() const { return { this->Terms.data(), this->Size }; }
-
-private:
-  std::array<kernel::KernelTerm, 512> Terms{};
-  int Size = 0;
-};
-
-// The products of expExact and sandwichGrade1, with the same blade lists as there.
-struct ExactRuleTables
-{
-  TermTable wedge{ detail::SparseProduct(
-    Bivector::kBlades, Bivector::kBlades, Quadvector::kBlades) };
-  TermTable quadvectorSquare{ detail::SparseProduct(
-    Quadvector::kBlades, Quadvector::kBlades, detail::kScalarBlade) };
-  TermTable rightContraction{ detail::SparseProduct(
-    Quadvector::kBlades, Bivector::kBlades, Bivector::kBlades) };
-  TermTable evenTimesVector{ detail::SparseProduct(
-    detail::kEvenBlades, ConformalVector::kBlades, detail::kOddBlades) };
-  TermTable oddTimesEvenToVector{ detail::SparseProduct(
-    detail::kOddBlades, detail::kEvenBlades, ConformalVector::kBlades) };
-};
-
-const ExactRuleTables& exactRuleTables()
-{
-  static const ExactRuleTables tables;
-  return tables;
-}
-
 template <typename In, typename Out>
 void copyPoint(const In* in, Out* out)
 {
@@ -155,7 +163,7 @@ std::size_t copyPoints(const In* in, Out* out, std::size_t count)
 }
 
 template <typename In, typename Out>
-std::size_t mapPointsInBlocks(const kernel::KernelArgs& args,
+std::size_t mapPointsInBlocks(const kernel::FieldArgs& args,
                               const In* in,
                               Out* out,
                               std::size_t count)
@@ -199,61 +207,41 @@ std::size_t mapPointsInBlocks(const kernel::KernelArgs& args,
   return unchanged;
 }
 
+} // namespace
+
 template <typename In, typename Out>
-std::size_t mapPointsWith(const PointPairField& field,
-                          const std::vector<double>& packedGenerators,
-                          const In* in,
-                          Out* out,
-                          std::size_t count,
-                          double strength,
-                          ExponentialRule rule)
+std::size_t PointPairField::mapPointsOf(
+  const In* in, Out* out, std::size_t count, double strength, ExponentialRule rule) const
 {
-  if (field.size() == 0 || strength == 0.0)
+  if (this->Count == 0 || strength == 0.0)
   {
     return copyPoints(in, out, count);
   }
-  kernel::KernelArgs args;
-  args.generators = packedGenerators.data();
-  args.generatorCount = field.size();
-  args.falloff = field.falloff();
-  args.epsilon = field.epsilon();
-  args.strength = strength;
-  args.exactRule = rule == ExponentialRule::Exact;
-  if (args.exactRule)
-  {
-    const ExactRuleTables& tables = exactRuleTables();
-    args.wedge = tables.wedge.view();
-    args.quadvectorSquare = tables.quadvectorSquare.view();
-    args.rightContraction = tables.rightContraction.view();
-    args.evenTimesVector = tables.evenTimesVector.view();
-    args.oddTimesEvenToVector = tables.oddTimesEvenToVector.view();
-  }
-  return mapPointsInBlocks(args, in, out, count);
+  return mapPointsInBlocks(this->args(strength, rule), in, out, count);
 }
-} // namespace
 
 std::size_t PointPairField::mapPoints(
   const double* in, double* out, std::size_t count, double strength, ExponentialRule rule) const
 {
-  return mapPointsWith(*this, this->PackedGenerators, in, out, count, strength, rule);
+  return this->mapPointsOf(in, out, count, strength, rule);
 }
 
 std::size_t PointPairField::mapPoints(
   const float* in, float* out, std::size_t count, double strength, ExponentialRule rule) const
 {
-  return mapPointsWith(*this, this->PackedGenerators, in, out, count, strength, rule);
+  return this->mapPointsOf(in, out, count, strength, rule);
 }
 
 std::size_t PointPairField::mapPoints(
   const float* in, double* out, std::size_t count, double strength, ExponentialRule rule) const
 {
-  return mapPointsWith(*this, this->PackedGenerators, in, out, count, strength, rule);
+  return this->mapPointsOf(in, out, count, strength, rule);
 }
 
 std::size_t PointPairField::mapPoints(
   const double* in, float* out, std::size_t count, double strength, ExponentialRule rule) const
 {
-  return mapPointsWith(*this, this->PackedGenerators, in, out, count, strength, rule);
+  return this->mapPointsOf(in, out, count, strength, rule);
 }
 
 std::vector<std::string> mapPointsInstructionSets()

@@ -3,42 +3,29 @@
 #include "cga/CompactAlgebra.h"
 
 #include "CompactLayout.h"
-#include "SparseProduct.h"
+#include "PointMapCore.h"
 
 namespace cga
 {
-using detail::SparseProduct;
-
 ConformalVector sandwichGrade1(const Even& k, const ConformalVector& x)
 {
-  // K X has grades 1, 3 and 5; of (K X) ~K only grade 1 is formed.
-  static const SparseProduct evenTimesVector(
-    detail::kEvenBlades, ConformalVector::kBlades, detail::kOddBlades);
-  static const SparseProduct oddTimesEvenToVector(
-    detail::kOddBlades, detail::kEvenBlades, ConformalVector::kBlades);
   const detail::EvenArray kk = detail::pack(k);
-  const detail::EvenArray rev = detail::pack(reverse(k));
-  std::array<double, detail::kOddBlades.size()> odd{};
-  evenTimesVector.accumulate(kk.data(), x.c.data(), odd.data());
   ConformalVector r;
-  oddTimesEvenToVector.accumulate(odd.data(), rev.data(), r.c.data());
+  core::sandwichEven(detail::boostTables(), kk.data(), x.c.data(), r.c.data());
   return r;
 }
 
 bool normalizePoint(const ConformalVector& p, Vec3& out)
 {
-  const double alpha = p.weight();
-  if (alpha == 0.0 || !std::isfinite(alpha))
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  double image[3];
+  bool mapped = false;
+  core::normalize(origin, p.c.data(), image, &mapped);
+  if (mapped)
   {
-    return false;
+    out = { image[0], image[1], image[2] };
   }
-  const Vec3 x = p.euclidean() / alpha;
-  if (!isFinite(x))
-  {
-    return false;
-  }
-  out = x;
-  return true;
+  return mapped;
 }
 
 bool sandwichPoint(const Even& k, Vec3 p, Vec3& out)

@@ -3,23 +3,20 @@
 // The operands and the result are given as lists of null blades (the kBlades of Compact.h).
 // Products that land on a blade missing from the result list are dropped: that is how grade
 // projections such as <K X ~K>_1 are computed without forming the other grades.
+// The terms are kept sorted by result slot (ProductTerms.h), the form the block kernel reads too.
 #pragma once
 
 #include "cga/NullBasis.h"
 
+#include "ProductTerms.h"
+
+#include <algorithm>
 #include <array>
-#include <cstdint>
 
 namespace cga
 {
 namespace detail
 {
-struct ProductTerm
-{
-  std::uint8_t a = 0, b = 0, r = 0;
-  double coefficient = 0.0;
-};
-
 class SparseProduct
 {
 public:
@@ -54,25 +51,25 @@ public:
         }
       }
     }
+    // Stable: each slot sums its terms in the order of the blade pairs.
+    std::stable_sort(Terms.begin(), Terms.begin() + Size,
+                     [](const ProductTerm& x, const ProductTerm& y) { return x.r < y.r; });
+    Results = static_cast<int>(NR);
   }
 
-  /// r += a * b (only the kept terms). r must hold as many values as the result list.
-  void accumulate(const double* a, const double* b, double* r) const
+  /// r = a * b (only the kept terms). r must hold as many values as the result list.
+  void apply(const double* a, const double* b, double* r) const
   {
-    for (int t = 0; t < Size; ++t)
-    {
-      const ProductTerm& term = Terms[t];
-      r[term.r] += term.coefficient * a[term.a] * b[term.b];
-    }
+    applyTerms(this->terms(), Results, a, b, r);
   }
 
-  int size() const { return Size; }
-  const ProductTerm& term(int i) const { return Terms[i]; }
+  ProductTerms terms() const { return { Terms.data(), Size }; }
 
 private:
   // 16 x 16 slot pairs with at most two terms each.
   std::array<ProductTerm, 512> Terms{};
   int Size = 0;
+  int Results = 0;
 };
 } // namespace detail
 } // namespace cga

@@ -1,6 +1,7 @@
-// A field of point-pair generators (SPEC.md section 3 item 9, eq 23; also items 8 and 12):
-// at a point p the generators sum, each weighted by its inverse squared distance, into
-//   B(p) = sum_i w_i tau(x_i, v_i) / (k |p - x_i|^2 + eps),
+// A field of generators (docs/conventions.md section 3 (item 9), eq 23; also items 8 and 12): at a
+// point p the generators sum, each weighted by its inverse squared distance, into
+//   B(p) = sum_i w_i G_i / (k |p - x_i|^2 + eps),
+// with G_i the null point pair tau(x_i, v_i) (or any bivector: FieldGenerator),
 // and p moves to fn(K up(p) ~K) with K = exp(-strength B(p)).
 //
 // This is the one implementation the deformation filter, the dipole field and the curvature
@@ -16,6 +17,11 @@
 
 namespace cga
 {
+namespace kernel
+{
+struct FieldArgs;
+}
+
 /// Which exponential turns B(p) into K (SPEC.md section 2).
 enum class ExponentialRule
 {
@@ -26,8 +32,22 @@ enum class ExponentialRule
 /// exp(b) by the chosen rule (expExact or expPaper, overflow-safe scaling).
 Even exponential(const Bivector& b, ExponentialRule rule);
 
-/// One generator: the null point pair tau(location, direction) with a weight. The direction's
-/// length multiplies the weight.
+/// One generator of the field: a bivector G placed at a location x, with a weight w; it adds
+/// w G / (k |p - x|^2 + eps) to B(p). A point pair is one kind of G (pointPair()); a dual line
+/// (rotation, twist), a flat point (dilation) or a translation bivector is another term of the same
+/// sum.
+struct FieldGenerator
+{
+  Vec3 location;
+  Bivector bivector;
+  double weight = 1.0;
+
+  /// The null point pair tau(location, direction) (nullPointPairCompact); the direction's length
+  /// multiplies the weight.
+  static FieldGenerator pointPair(Vec3 location, Vec3 direction, double weight = 1.0);
+};
+
+/// A point-pair generator as the filter and the sources describe one (FieldGenerator::pointPair).
 struct PointPairGenerator
 {
   Vec3 location;
@@ -39,8 +59,9 @@ class PointPairField
 {
 public:
   /// falloff k >= 0 and epsilon > 0 (enforced by the callers; epsilon keeps B finite on a
-  /// generator's location). Generators with a zero or non-finite direction, location or weight
-  /// are skipped; skippedGenerators() counts them.
+  /// generator's location). Generators with a zero or non-finite direction, location or weight,
+  /// or whose pair tau overflows (a location beyond about 1e154), are skipped;
+  /// skippedGenerators() counts them.
   PointPairField(const PointPairGenerator* generators,
                  std::size_t count,
                  double falloff,
@@ -51,8 +72,14 @@ public:
     : PointPairField(generators.data(), generators.size(), falloff, epsilon)
   {
   }
+  /// The same for generators of any bivector: those with a non-finite location, weight or
+  /// bivector, or a zero bivector, are skipped.
+  PointPairField(const FieldGenerator* generators,
+                 std::size_t count,
+                 double falloff,
+                 double epsilon);
 
-  std::size_t size() const { return this->Locations.size(); }
+  std::size_t size() const { return this->Count; }
   std::size_t skippedGenerators() const { return this->Skipped; }
   double falloff() const { return this->Falloff; }
   double epsilon() const { return this->Epsilon; }
@@ -71,9 +98,9 @@ public:
   /// xyz interleaved, from `in` to `out` (which may be the same array when the types match).
   /// A point that is not finite, or whose image is not finite, is copied unchanged; the return
   /// value counts them. `out` is written for every point. No heap allocation.
-  /// The points go through a vectorized block kernel (B(p) and K bit for bit as map() computes
-  /// them, the sandwich equal up to rounding), compiled for several instruction sets and chosen
-  /// for the running CPU: see mapPointsInstructionSets().
+  /// The points go through a vectorized block kernel, the same source as map() instantiated for
+  /// a vector of points (every image bit for bit as map() gives it), compiled for several
+  /// instruction sets and chosen for the running CPU: see mapPointsInstructionSets().
   std::size_t mapPoints(
     const double* in, double* out, std::size_t count, double strength, ExponentialRule rule) const;
   std::size_t mapPoints(
@@ -84,9 +111,16 @@ public:
     const double* in, float* out, std::size_t count, double strength, ExponentialRule rule) const;
 
 private:
-  std::vector<Vec3> Locations;
-  std::vector<Bivector> WeightedPairs; // w_i tau(x_i, v_i)
-  std::vector<double> PackedGenerators; // per generator: location, then WeightedPairs (13 doubles)
+  void add(const FieldGenerator* generators, std::size_t count);
+  kernel::FieldArgs args(double strength, ExponentialRule rule) const;
+  template <typename In, typename Out>
+  std::size_t mapPointsOf(
+    const In* in, Out* out, std::size_t count, double strength, ExponentialRule rule) const;
+
+  // The one layout of the generators, read by map() and the block kernel alike: per generator 13
+  // doubles, the location x_i, then the ten components of w_i G_i.
+  std::vector<double> Generators;
+  std::size_t Count = 0;
   double Falloff = 1.0;
   double Epsilon = 1e-2;
   std::size_t Skipped = 0;

@@ -44,12 +44,10 @@ Multivector classicalPlanes()
     Multivector::basisBlade(blade::e2 | blade::ep);
 }
 
-/// exp of a multiple of a unit 2-blade U with U^2 = -1: cos a + sin a U.
+/// exp(a U) of a unit 2-blade U, U^2 = -1: cos a + sin a U (expPaper is exact on a 2-blade).
 Even rotation(const Bivector& unitPlane, double angle)
 {
-  Even r = Even::fromBivector(std::sin(angle) * unitPlane);
-  r.scalar = std::cos(angle);
-  return r;
+  return expPaper(angle * unitPlane);
 }
 } // namespace
 
@@ -172,8 +170,9 @@ bool HopfFibration::versor(double theta, double phi, Even& out) const
   }
   const double k = hopfBoostParameter(phi);
   const Even twist = expExact((0.5 * k) * log, ExpScaling::None);
-  Even boost = Even::fromBivector(k * nullPointPairCompact({ 0, 0, 0 }, boostDirection(theta)));
-  boost.scalar = 1.0;
+  // 1 + k tau: the null pair at the origin has exactly zero squares, so expExact sums its series
+  // to 1 + B to the bit.
+  const Even boost = expExact(k * nullPointPairCompact({ 0, 0, 0 }, boostDirection(theta)));
   out = twist * boost;
   return true;
 }
