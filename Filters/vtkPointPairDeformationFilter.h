@@ -8,7 +8,7 @@
  *   B(p) = sum_i w_i tau(x_i, v_i) / (Falloff |p - x_i|^2 + Epsilon),
  *
  * tau the null point pair (the tangent no ^ v_i translated to x_i; |v_i| multiplies the weight),
- * and p moves to p' = fn(K up(p) ~K) with K = exp(-Strength B(p)) (SPEC.md section 3 item 9).
+ * and p moves to p' = fn(K up(p) ~K) with K = exp(-Strength B(p)) (docs/conventions.md section 3 item 9).
  *
  * ExponentialRule: EXACT (default) uses the true exponential of B, so K is a versor and every image
  * point is null (each K is a conformal map); PAPER uses eq 9-10 of the paper, cosh/sinh of

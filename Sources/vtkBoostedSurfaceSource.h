@@ -4,7 +4,7 @@
  *
  * A circle (center, normal, radius) is transformed by the boosts K(lambda) = exp(lambda tau) =
  * 1 + lambda tau, where tau = tau(BoostLocation, BoostDirection) is a null point pair: the tangent
- * no ^ BoostDirection translated to BoostLocation (SPEC.md section 1). The length of
+ * no ^ BoostDirection translated to BoostLocation (docs/conventions.md section 1). The length of
  * BoostDirection is the generator's weight. Each lambda of LambdaRange gives one image circle;
  * together they make a surface.
  *

@@ -5,7 +5,7 @@
  * The patch p(a, b) = Origin + a u + b v, a in [-Size[0]/2, Size[0]/2], b in [-Size[1]/2,
  * Size[1]/2] (u, v the orthonormalized UDirection and VDirection, n = u x v) is sampled on a
  * (UResolution + 1) x (VResolution + 1) grid and every sample is moved by a boost
- * K = exp(E(a, b)): p' = fn(<K up(p) ~K>_1). E depends on the Method (SPEC.md section 3):
+ * K = exp(E(a, b)): p' = fn(<K up(p) ~K>_1). E depends on the Method (docs/conventions.md section 3):
  *
  * - BENT_LINE (eq 15, Fig 6): each u row is bent with curvature KappaU at its point on the v axis,
  *   K = 1 - KappaU/2 tau(p, n). A row becomes the circle of radius 1/|KappaU| tangent at p, center

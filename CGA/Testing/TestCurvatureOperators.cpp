@@ -1,4 +1,4 @@
-// The curvature operators of SPEC.md section 3 items 5-8, 10, 11 (eq 15-18, 21-22, 24-26), checked
+// The curvature operators of docs/conventions.md section 3 items 5-8, 10, 11 (eq 15-18, 21-22, 24-26), checked
 // against closed forms (circles, a quadric fit of the surface) and against the full Multivector
 // product built from Conformal.h (an independent construction of every generator).
 #include "TestSupport.h"
@@ -47,7 +47,7 @@ TEST(CurvatureOperators, BentLineIsTheOsculatingCircle)
     const double b = random.uniform(-1.0, 1.0);
     const Vec3 p = patch.frame.at(0.0, b);
     const Vec3 center = p - patch.frame.normal / patch.kappaU;
-    // reference: the full product with K = 1 - kappa/2 tau(p, n) (SPEC.md item 5)
+    // reference: the full product with K = 1 - kappa/2 tau(p, n) (docs/conventions.md item 5)
     const Multivector k =
       Multivector::scalar(1.0) - 0.5 * patch.kappaU * nullPointPair(p, patch.frame.normal);
     for (double a = -5.0; a <= 5.0; a += 0.25)

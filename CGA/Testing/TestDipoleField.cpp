@@ -1,5 +1,5 @@
-// The dipole displacement field (DipoleField.h, SPEC.md section 3 item 12) against the closed form
-// of one generator (p -> x + SCT(p - x), SPEC.md section 2) and the full multivector product.
+// The dipole displacement field (DipoleField.h, docs/conventions.md section 3 item 12) against the closed form
+// of one generator (p -> x + SCT(p - x), docs/conventions.md section 2) and the full multivector product.
 #include "TestSupport.h"
 
 #include "cga/Conformal.h"
@@ -45,13 +45,13 @@ Vec3 referenceSummedGenerators(const std::vector<PointPairGenerator>& generators
 }
 
 // Two dipoles as in Fig 14: at (-1, 0, 0) pointing up and at (1, 0, 0) pointing right, weights
-// giving displacements of the size SPEC.md item 12 reports.
+// giving displacements of the size docs/conventions.md item 12 reports.
 std::vector<PointPairGenerator> fig14Generators()
 {
   return { { { -1, 0, 0 }, { 0, 1, 0 }, 0.35 }, { { 1, 0, 0 }, { 1, 0, 0 }, 0.35 } };
 }
 
-// The 11 x 11 grid of [-2, 2]^2 (z = 0) that SPEC.md item 12 measured on; no point on a generator.
+// The 11 x 11 grid of [-2, 2]^2 (z = 0) that docs/conventions.md item 12 measured on; no point on a generator.
 std::vector<Vec3> grid11()
 {
   std::vector<Vec3> points;
@@ -152,7 +152,7 @@ TEST(DipoleField, SummedGeneratorsMatchTheFullProductForBothRules)
 
 TEST(DipoleField, TwoNonParallelGeneratorsMethodsDifferByAMeasuredAmount)
 {
-  // SPEC.md item 12: on an 11 x 11 grid with two generators the mean difference was 0.09-0.13
+  // docs/conventions.md item 12: on an 11 x 11 grid with two generators the mean difference was 0.09-0.13
   // against mean displacements of 0.26-0.41.
   const DipoleField field(fig14Generators(), 1.0, 0.1);
   double difference = 0.0, displacementA = 0.0, displacementB = 0.0;
@@ -168,7 +168,7 @@ TEST(DipoleField, TwoNonParallelGeneratorsMethodsDifferByAMeasuredAmount)
   difference /= points.size();
   displacementA /= points.size();
   displacementB /= points.size();
-  // Measured here: 0.107 against 0.363 (a) and 0.399 (b), the regime SPEC.md reports.
+  // Measured here: 0.107 against 0.363 (a) and 0.399 (b), the regime docs/conventions.md reports.
   EXPECT_GT(difference, 0.2 * displacementB);
   EXPECT_LT(difference, 0.5 * displacementB);
   EXPECT_GT(displacementA, 0.25);

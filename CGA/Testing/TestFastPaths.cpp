@@ -138,7 +138,7 @@ TEST(FastPaths, PointMapMatchesTheSandwich)
 
 TEST(FastPaths, SandwichFailsCleanlyAtInfinityAndOnNaN)
 {
-  // K = 1 + no e1 sends -e1 to infinity (SPEC.md section 2: -v/|v|^2).
+  // K = 1 + no e1 sends -e1 to infinity (docs/conventions.md section 2: -v/|v|^2).
   Even k = Even::identity();
   k.bivector = toBivector(no() * e1());
   Vec3 out{ 42, 42, 42 };

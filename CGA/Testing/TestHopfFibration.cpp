@@ -1,4 +1,4 @@
-// The Hopf fibration of SPEC.md section 4 (HopfFibration.h): the paper's boost-and-twist
+// The Hopf fibration of docs/conventions.md section 4 (HopfFibration.h): the paper's boost-and-twist
 // construction against the full multivector product, fibers that are circles, disjoint and linked
 // once, the poles, and the classical mode against the stereographic images of S^3 great circles.
 #include "TestSupport.h"

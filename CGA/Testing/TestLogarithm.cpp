@@ -205,7 +205,7 @@ TEST(Logarithm, NearlyIsoclinicRotations)
 
 TEST(Logarithm, MotorBetweenTwoLines)
 {
-  // SPEC.md section 4: the twist carrying one line onto another from the ratio of dual lines.
+  // docs/conventions.md section 4: the twist carrying one line onto another from the ratio of dual lines.
   // With unit dual lines (L^2 = -1), the motor M = exp(log(L2 L1^-1) / 2) has M L1 ~M = L2.
   Random random(57);
   for (int n = 0; n < 200; ++n)

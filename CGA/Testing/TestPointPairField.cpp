@@ -1,5 +1,5 @@
 // The field of point-pair generators (PointPairField.h) against the full multivector product and
-// against the closed form of one generator (SPEC.md section 2: p -> x + SCT(p - x)).
+// against the closed form of one generator (docs/conventions.md section 2: p -> x + SCT(p - x)).
 #include "TestSupport.h"
 
 #include "cga/CompactConversion.h"

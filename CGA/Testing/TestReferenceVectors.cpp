@@ -1,4 +1,5 @@
-// The reference vectors computed with ganja.js (Data/*.json, see shared/vectors/README.md).
+// The reference vectors computed with the independent ganja.js geometric-algebra library (Data/*.json:
+// each file names its conventions, seed and the checks it passed there).
 #include "TestSupport.h"
 
 #include "cga/CompactAlgebra.h"

@@ -1,4 +1,4 @@
-// Every (verified) fact of SPEC.md sections 1-3, checked with the kernel's own paths.
+// Every (verified) fact of docs/conventions.md sections 1-3, checked with the kernel's own paths.
 #include "TestSupport.h"
 
 #include "cga/CompactAlgebra.h"
@@ -17,7 +17,7 @@ using cgatest::pointsNear;
 using cgatest::Random;
 using cgatest::relativeDifference;
 
-// The transversion of SPEC.md section 2: x' = (x + v|x|^2)/(1 + 2 v.x + |v|^2 |x|^2).
+// The transversion of docs/conventions.md section 2: x' = (x + v|x|^2)/(1 + 2 v.x + |v|^2 |x|^2).
 Vec3 specialConformal(Vec3 v, Vec3 x)
 {
   return (x + norm2(x) * v) / (1.0 + 2.0 * dot(v, x) + norm2(v) * norm2(x));

@@ -1,5 +1,5 @@
 // Compact named types for the hot loops: only the grades a boost needs, stored in the null basis
-// (NullBasis.h) in the component order of SPEC.md section 5 and of the test vectors' *_null keys.
+// (NullBasis.h) in the component order of docs/conventions.md section 5 and of the test vectors' *_null keys.
 //
 // Each type lists, in kBlades, the null blade index of every component; conversions to and from
 // the full Multivector live in CompactConversion.h, products in CompactAlgebra.h.

@@ -1,4 +1,4 @@
-// Constructors and readers of the conformal model (SPEC.md section 1).
+// Constructors and readers of the conformal model (docs/conventions.md section 1).
 //
 // Conventions: no = (e- + e+)/2, ni = e- - e+ (no.ni = -1); up(x) = no + x + |x|^2/2 ni;
 // fn(P) = P / (-ni.P); T(d) = 1 - d ni / 2 translates by +d; R = exp(-theta B / 2).

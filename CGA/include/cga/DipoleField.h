@@ -1,4 +1,4 @@
-// The dipole displacement field of section 7 (SPEC.md section 3 item 12, eq 27-28, Fig 13-14):
+// The dipole displacement field of section 7 (docs/conventions.md section 3 item 12, eq 27-28, Fig 13-14):
 // at a point p the displacement v = p' - p of the boost built from point-pair generators, computed
 // two ways that agree for one generator and differ for several:
 //   (a) summed generators:    p' = fn(K up(p) ~K),  K = exp(-s sum_i w_i tau_i / d_i^2)  (the paper's)

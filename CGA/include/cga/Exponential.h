@@ -1,4 +1,4 @@
-// Exponentials of bivectors (SPEC.md section 2, eq 9-10).
+// Exponentials of bivectors (docs/conventions.md section 2, eq 9-10).
 //
 // Two rules, both returning an even element K (scalar + bivector + 4-vector):
 //  * expPaper: the paper's formula with s = <B B>_0. Exact when B is a 2-blade; for a sum of point

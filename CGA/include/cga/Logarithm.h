@@ -1,5 +1,5 @@
 // Logarithm of an even versor: the bivector B with exp(B) = K (Exponential.h), for rotors,
-// translators, motors (screws), boosts, dilators and their products (SPEC.md section 4 needs it
+// translators, motors (screws), boosts, dilators and their products (docs/conventions.md section 4 needs it
 // for the Hopf twist M = exp(k log(L / L_theta))). For unit dual lines L1, L2 (L^2 = -1) the ratio
 // L2 L1^-1 = -L2 L1 is the square of the motor M = exp(log(L2 L1^-1) / 2) with M L1 ~M = L2.
 //

@@ -1,4 +1,4 @@
-// The null basis {e1, e2, e3, no, ni} of SPEC.md section 1, in which the compact types store and
+// The null basis {e1, e2, e3, no, ni} of docs/conventions.md section 1, in which the compact types store and
 // multiply their coefficients.
 //
 // A null basis blade is a 5-bit index like an orthonormal blade mask (Basis.h), except that bit 3

@@ -22,7 +22,7 @@ namespace kernel
 struct FieldArgs;
 }
 
-/// Which exponential turns B(p) into K (SPEC.md section 2).
+/// Which exponential turns B(p) into K (docs/conventions.md section 2).
 enum class ExponentialRule
 {
   Exact, ///< the true exponential: a conformal map, every image point null

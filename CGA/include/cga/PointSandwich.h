@@ -1,7 +1,7 @@
 // Fast paths for fn(<K up(p) ~K>_1): the image of a point under an even element K.
 //
 // K need not be a versor: the paper's exponential of a sum of point pairs is scalar + bivector +
-// 4-vector with K ~K != 1. SPEC.md then takes the grade-1 part of K up(p) ~K before normalizing,
+// 4-vector with K ~K != 1. docs/conventions.md then takes the grade-1 part of K up(p) ~K before normalizing,
 // and so do these functions. Everything is computed in the null basis without heap allocation.
 #pragma once
 

@@ -1,6 +1,6 @@
 // vtkPointPairDeformationFilter against independent references: the full multivector product with
 // a series exponential (Exact) or eq 9-10 written out (Paper), the closed form of one generator
-// (SPEC.md section 2), null image points and angle preservation; and its bad-input behaviour.
+// (docs/conventions.md section 2), null image points and angle preservation; and its bad-input behaviour.
 #include "vtkPointPairDeformationFilter.h"
 
 #include "EventCounter.h"

@@ -1,5 +1,5 @@
 """Tests of the Python-wrapped vtkPointPairDeformationFilter: one generator against the closed form
-of SPEC.md section 2, the Generators input from a Python pipeline, SOA point arrays (the AOS result
+of docs/conventions.md section 2, the Generators input from a Python pipeline, SOA point arrays (the AOS result
 bit for bit), errors Python can see, and the two exponential rules on the Fig 11 example. Plain
 Python, no numpy.
 
@@ -23,7 +23,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 
 
 def sct_about(x, u, p):
-    """x + SCT_u(p - x) (SPEC.md section 2)."""
+    """x + SCT_u(p - x) (docs/conventions.md section 2)."""
     y = [p[i] - x[i] for i in range(3)]
     y2 = sum(c * c for c in y)
     uy = sum(u[i] * y[i] for i in range(3))

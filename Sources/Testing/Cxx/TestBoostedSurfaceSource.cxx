@@ -1,4 +1,4 @@
-// Numerical tests of vtkBoostedSurfaceSource against the closed forms of SPEC.md section 3 items 1-3.
+// Numerical tests of vtkBoostedSurfaceSource against the closed forms of docs/conventions.md section 3 items 1-3.
 #include "vtkBoostedSurfaceSource.h"
 
 #include "BadParameterCases.h"
@@ -38,7 +38,7 @@ std::map<double, std::vector<std::array<double, 3>>> pointsByLambda(vtkPolyData*
   return groups;
 }
 
-// x' = x + SCT_u(p - x), SCT_u(y) = (y + u|y|^2) / (1 + 2 u.y + |u|^2 |y|^2) (SPEC.md section 2).
+// x' = x + SCT_u(p - x), SCT_u(y) = (y + u|y|^2) / (1 + 2 u.y + |u|^2 |y|^2) (docs/conventions.md section 2).
 std::array<double, 3> homogeneousBoost(const double x[3], const double u[3], const double p[3])
 {
   double y[3];

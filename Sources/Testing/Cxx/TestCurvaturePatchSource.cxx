@@ -1,4 +1,4 @@
-// Tests of vtkCurvaturePatchSource against the closed forms of SPEC.md section 3 items 5-6 (the
+// Tests of vtkCurvaturePatchSource against the closed forms of docs/conventions.md section 3 items 5-6 (the
 // bent line is a circle, a zero curvature leaves the plane flat), and its arrays, pieces,
 // clamping and bad input.
 #include "vtkCurvaturePatchSource.h"

@@ -1,4 +1,4 @@
-// vtkDipoleFieldSource: its arrays against the closed form of one generator (SPEC.md section 2),
+// vtkDipoleFieldSource: its arrays against the closed form of one generator (docs/conventions.md section 2),
 // sub-extents against the whole field, time steps, precision and bad input.
 #include "vtkDipoleFieldSource.h"
 
@@ -31,7 +31,7 @@ const char* const ArrayNames[] = { "DisplacementSummedGenerators",
   "DipolePotential" };
 
 // The displacement of one generator in closed form: an SCT of weight
-// u = -s w v / (k |p - x|^2 + eps) about x (SPEC.md section 2 and section 3 item 12).
+// u = -s w v / (k |p - x|^2 + eps) about x (docs/conventions.md section 2 and section 3 item 12).
 std::array<double, 3> closedForm(const double x[3], const double v[3], double w, double k,
   double eps, double s, const double p[3])
 {

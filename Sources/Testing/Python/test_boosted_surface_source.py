@@ -1,4 +1,4 @@
-"""Tests of the Python-wrapped vtkBoostedSurfaceSource against the closed forms of SPEC.md section 3
+"""Tests of the Python-wrapped vtkBoostedSurfaceSource against the closed forms of docs/conventions.md section 3
 items 1-3. Plain Python, no numpy: it must run wherever the wrapping does.
 
     PYTHONPATH=<build>/lib/python3.11/site-packages python3 test_boosted_surface_source.py -v

@@ -1,5 +1,5 @@
 """Tests of the Python-wrapped vtkDipoleFieldSource: the class imports from the package, its
-one-generator field is the closed form of SPEC.md section 2, errors reach Python, the time steps
+one-generator field is the closed form of docs/conventions.md section 2, errors reach Python, the time steps
 scale the weights, and the methods differ for two generators. Plain Python, no numpy.
 
     PYTHONPATH=<build>/lib/python3.11/site-packages python3 test_dipole_field_source.py -v

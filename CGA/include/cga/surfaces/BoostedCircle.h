@@ -1,5 +1,5 @@
 // A circle carried by the one-parameter family of boosts K(lambda) = exp(lambda tau) = 1 + lambda tau,
-// tau = tau(location, direction) a null point pair (SPEC.md section 3 items 1-3, Fig 1-3).
+// tau = tau(location, direction) a null point pair (docs/conventions.md section 3 items 1-3, Fig 1-3).
 //
 // Because tau is null, exp(lambda tau) = 1 + lambda tau exactly, so no exponential rule is involved.
 // The family maps a fixed circle point to a curve; sweeping lambda over a range gives a surface.

@@ -1,11 +1,11 @@
-// The paper's curvature operators (SPEC.md section 3 items 5-8, 10, 11; eq 15-18, 21-22, 24-26):
+// The paper's curvature operators (docs/conventions.md section 3 items 5-8, 10, 11; eq 15-18, 21-22, 24-26):
 // generators built from null point pairs that bend a plane patch to stated curvatures.
 //
 // Every operator returns the exponent E of its boost, K = exp(E), at one patch point, together
 // with the local generator weight w (E = -sum_i w_i tau_i with tau_i of unit direction). The patch
 // is p(a, b) = origin + a u + b v with orthonormal u, v and normal n = u x v.
 //
-// Sign convention (SPEC.md item 5): a positive curvature kappa puts the center of curvature on the
+// Sign convention (docs/conventions.md item 5): a positive curvature kappa puts the center of curvature on the
 // -n side (center p - n/kappa); the same kappa is the true curvature of the bent line (0.5 gives
 // radius 2).
 #pragma once
@@ -46,7 +46,7 @@ CurvatureGenerator bentLine(const PatchFrame& frame, double kappa, double b);
 
 /// Eq 16: K = exp(-1/2 (kappaU tau(o + b v, n) + kappaV tau(o + a u, n))). The tangent translated
 /// along v bends the u lines, so the principal curvatures at the origin are kappaU along u and
-/// kappaV along v (SPEC.md writes the same sum with the tangents named by where they are moved).
+/// kappaV along v (docs/conventions.md writes the same sum with the tangents named by where they are moved).
 CurvatureGenerator translatedTangents(const PatchFrame& frame, double kappaU, double kappaV, double a, double b);
 
 /// A control point of eq 17 and 21: location, unit normal, unit u direction (orthogonal to the

@@ -1,6 +1,6 @@
 // A plane patch bent by one of the paper's curvature operators (CurvatureOperators.h): the grid
 // point p(a, b) = origin + a u + b v, a in [-sizeU/2, sizeU/2], b in [-sizeV/2, sizeV/2], goes to
-// fn(<K up(p) ~K>_1) with K = exp(E(a, b)) by the Exact or Paper rule (SPEC.md section 2).
+// fn(<K up(p) ~K>_1) with K = exp(E(a, b)) by the Exact or Paper rule (docs/conventions.md section 2).
 #pragma once
 
 #include "cga/PointPairField.h"

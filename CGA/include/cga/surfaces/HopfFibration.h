@@ -1,4 +1,4 @@
-// The Hopf fibration of SPEC.md section 4 (paper eq 11-14, Fig 4-5): every point (theta, phi) of the
+// The Hopf fibration of docs/conventions.md section 4 (paper eq 11-14, Fig 4-5): every point (theta, phi) of the
 // base 2-sphere (theta the longitude, phi the latitude in [-pi/2, pi/2]) gets a fiber, the image of
 // a base circle C under a versor KH(theta, phi).
 //
