@@ -65,7 +65,9 @@ with_x() {
   if [ -n "${DISPLAY:-}" ] && [ -z "${CI:-}" ]; then
     "$@"
   else
-    xvfb-run -a -s "-screen 0 1280x1024x24" "$@"
+    # -noreset: by default Xvfb resets when its last client leaves, and a render window opening
+    # during that reset fails ("bad X server connection"); the serialized rendering tests hit it.
+    xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$@"
   fi
 }
 
