@@ -2,6 +2,7 @@
 
 #include "vtkAOSDataArrayTemplate.h"
 #include "vtkArrayDispatch.h"
+#include "vtkBoostedBlockLoop.h"
 #include "vtkBoostedExponentialRule.h"
 #include "vtkBoostedRowList.h"
 #include "vtkBoostedSurfacesAbort.h"
@@ -20,7 +21,6 @@
 #include "vtkRectilinearGrid.h"
 #include "vtkRectilinearGridToPointSet.h"
 #include "vtkSOADataArrayTemplate.h"
-#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStructuredGrid.h"
@@ -38,10 +38,6 @@ vtkStandardNewMacro(vtkPointPairDeformationFilter);
 
 namespace
 {
-// Points handed to vtkSMPTools per progress step: large enough that the scheduling cost vanishes,
-// small enough that progress and abort are seen often on big meshes.
-constexpr vtkIdType PointsPerStep = 1 << 16;
-
 bool isFinite(double x, double y, double z)
 {
   return std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
@@ -72,19 +68,10 @@ struct DeformWorker
   template <typename InArray>
   void operator()(InArray* points)
   {
-    const vtkIdType count = points->GetNumberOfTuples();
-    // Progress and abort are checked on this thread between steps; vtkSMPTools splits each step.
-    for (vtkIdType begin = 0; begin < count; begin += PointsPerStep)
-    {
-      if (vtkBoostedSurfacesCheckAbort(this->Filter))
-      {
-        break;
-      }
-      const vtkIdType end = std::min(count, begin + PointsPerStep);
-      vtkSMPTools::For(begin, end, 1024,
-        [this, points](vtkIdType first, vtkIdType last) { this->mapRange(points, first, last); });
-      this->Filter->UpdateProgress(static_cast<double>(end) / count);
-    }
+    // The project's one work loop: blocks with progress and abort between them, each block split
+    // by vtkSMPTools. An aborted update is caught by the caller (CheckAbort).
+    vtkBoostedBlockLoop::For(this->Filter, 0, points->GetNumberOfTuples(), 1,
+      [this, points](vtkIdType first, vtkIdType last) { this->mapRange(points, first, last); });
   }
 
   template <typename InArray>
