@@ -58,6 +58,10 @@ int vtkBoostedSurfaceSource::RequestData(
   {
     problem = "LambdaRange must be finite";
   }
+  if (problem.empty())
+  {
+    problem = family.boostProblem(this->LambdaRange[0], this->LambdaRange[1]);
+  }
   const long long rows = this->LambdaResolution + 1LL;
   const long long columns = this->ThetaResolution + 1LL; // the last column repeats the first (seam)
   vtkBoostedGridDriver driver(

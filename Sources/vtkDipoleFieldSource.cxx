@@ -88,9 +88,8 @@ struct FieldFunctor
       this->SummedGenerators->SetTuple(id, &a[3 * i]);
       this->SummedDisplacements->SetTuple(id, &b[3 * i]);
       this->Difference->SetTuple(id, difference);
-      this->DifferenceMagnitude->SetTuple1(id,
-        std::sqrt(difference[0] * difference[0] + difference[1] * difference[1] +
-          difference[2] * difference[2]));
+      this->DifferenceMagnitude->SetTuple1(
+        id, cga::norm({ difference[0], difference[1], difference[2] })); // no spurious overflow
       this->Potential->SetTuple1(id, phi[i]);
     }
   }
@@ -139,6 +138,11 @@ std::string vtkDipoleFieldSource::Validate() const
     if (!std::isfinite(this->Origin[c]))
     {
       return "Origin must be finite";
+    }
+    // The grid's last point, computed as RequestData computes every point.
+    if (!std::isfinite(this->Origin[c] + (this->Dimensions[c] - 1) * this->Spacing[c]))
+    {
+      return "the grid overflows: Origin + (Dimensions - 1) Spacing is not finite in every direction";
     }
   }
   if (!std::isfinite(this->Falloff) || !std::isfinite(this->Epsilon))

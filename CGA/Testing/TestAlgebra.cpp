@@ -174,3 +174,81 @@ TEST(NullBasis, CoefficientConversionRoundTrip)
   }
 }
 } // namespace
+
+namespace
+{
+// |a| in long double, whose exponent range holds the squares of 1e+-300 (an independent reference).
+long double longDoubleNorm(Vec3 a)
+{
+  const long double x = a.x, y = a.y, z = a.z;
+  return std::sqrt(x * x + y * y + z * z);
+}
+} // namespace
+
+TEST(Vec3, LengthsAndDirectionsOfHugeAndTinyVectorsDoNotOverflowOrUnderflow)
+{
+  if (std::numeric_limits<long double>::max_exponent < 4 * std::numeric_limits<double>::max_exponent)
+  {
+    GTEST_SKIP() << "long double cannot hold the squares of the reference";
+  }
+  Random random(15);
+  for (const double scale : { 1e-320, 1e-300, 1e-200, 1e-160, 1e160, 1e200, 1e300 })
+  {
+    for (int k = 0; k < 50; ++k)
+    {
+      const Vec3 a = scale * random.vec3(1.0);
+      const long double length = longDoubleNorm(a);
+      ASSERT_GT(length, 0.0L);
+      const double tolerance = 4e-16;
+      // A subnormal length is rounded to the subnormal grid: at most half its spacing off.
+      const long double lengthTolerance =
+        std::max<long double>(tolerance * length, 0.5L * std::numeric_limits<double>::denorm_min());
+      EXPECT_LE(std::fabs(norm(a) - length), lengthTolerance) << "scale " << scale;
+      const Vec3 u = normalized(a);
+      EXPECT_NEAR(norm(u), 1.0, tolerance) << "scale " << scale;
+      for (int i = 0; i < 3; ++i)
+      {
+        EXPECT_NEAR(u[i], static_cast<double>(a[i] / length), tolerance) << "scale " << scale;
+      }
+    }
+  }
+  // The largest finite vector and the smallest subnormal have a length and a direction.
+  const double big = std::numeric_limits<double>::max();
+  EXPECT_EQ(norm(Vec3{ big, 0, 0 }), big);
+  EXPECT_EQ(norm(Vec3{ big, big, big }), std::numeric_limits<double>::infinity()); // |a| itself overflows
+  EXPECT_NEAR(normalized(Vec3{ big, big, big }).x, 1.0 / std::sqrt(3.0), 1e-16);
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  EXPECT_EQ(norm(Vec3{ 0, tiny, 0 }), tiny);
+  EXPECT_EQ(normalized(Vec3{ 0, 0, -tiny }).z, -1.0);
+}
+
+TEST(Vec3, OrdinaryLengthsKeepThePlainFormulaBitForBit)
+{
+  Random random(16);
+  for (const double scale : { 1e-130, 1e-3, 1.0, 1e6, 1e150 })
+  {
+    for (int k = 0; k < 200; ++k)
+    {
+      const Vec3 a = scale * random.vec3(1.0);
+      const double plain = std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
+      EXPECT_EQ(norm(a), plain);
+      const Vec3 u = normalized(a);
+      EXPECT_EQ(u.x, a.x / plain);
+      EXPECT_EQ(u.y, a.y / plain);
+      EXPECT_EQ(u.z, a.z / plain);
+    }
+  }
+}
+
+TEST(Vec3, ZeroAndNonFiniteVectorsHaveNoDirection)
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const Vec3 a : { Vec3{}, Vec3{ NAN, 1, 0 }, Vec3{ inf, 0, 0 }, Vec3{ 1e300, -inf, 1 } })
+  {
+    const Vec3 u = normalized(a);
+    EXPECT_EQ(u.x, 0.0);
+    EXPECT_EQ(u.y, 0.0);
+    EXPECT_EQ(u.z, 0.0);
+  }
+  EXPECT_EQ(norm(Vec3{}), 0.0);
+}

@@ -490,4 +490,30 @@ TEST(CurvatureOperators, BadInputIsReported)
     p.corners[2].weight = nan;
   }).empty());
 }
+
+TEST(CurvatureOperators, DirectionsOfAnyNonZeroLengthGiveTheSameFrame)
+{
+  const Vec3 origin{ 1, 2, 3 }, u = Vec3{ 2, -1, 2 } / 3.0, v{ 0, 0, 1 };
+  PatchFrame reference;
+  ASSERT_TRUE(PatchFrame::fromDirections(origin, u, v, reference).empty());
+  auto expectSameFrame = [&reference](const PatchFrame& f, double length) {
+    EXPECT_LT(norm(f.u - reference.u), 1e-15) << "length " << length;
+    EXPECT_LT(norm(f.v - reference.v), 1e-15) << "length " << length;
+    EXPECT_LT(norm(f.normal - reference.normal), 1e-15) << "length " << length;
+  };
+  for (const double length : { 1e-300, 1e-200, 1e160, 1e200, 1e307 })
+  {
+    PatchFrame frame;
+    const std::string problem = PatchFrame::fromDirections(origin, length * u, length * v, frame);
+    EXPECT_TRUE(problem.empty()) << "length " << length << ": " << problem;
+    expectSameFrame(frame, length);
+
+    CurvatureControlPoint point;
+    point.normal = length * reference.normal;
+    point.uDirection = length * reference.u;
+    EXPECT_TRUE(point.normalize().empty()) << "length " << length;
+    EXPECT_LT(norm(point.normal - reference.normal), 1e-15) << "length " << length;
+    EXPECT_LT(norm(point.uDirection - reference.u), 1e-15) << "length " << length;
+  }
+}
 } // namespace

@@ -398,4 +398,18 @@ TEST(HopfFibration, BadParameters)
   EXPECT_FALSE(hopf.fiberPoints(0.0, std::nan(""), 8, points));
   EXPECT_TRUE(points.empty());
 }
+
+TEST(HopfFibration, CircleNormalOfAnyNonZeroLengthGivesTheSameFrame)
+{
+  HopfFibration unit;
+  unit.normal = Vec3{ 1, 2, 2 } / 3.0;
+  const Vec3 p{ 0.3, -0.4, 0.5 };
+  for (const double length : { 1e-300, 1e-200, 1e200, 1e307 })
+  {
+    HopfFibration scaled = unit;
+    scaled.normal = length * unit.normal;
+    EXPECT_TRUE(scaled.validate().empty()) << "length " << length << ": " << scaled.validate();
+    EXPECT_LT(norm(scaled.toWorld(p) - unit.toWorld(p)), 1e-15) << "length " << length;
+  }
+}
 } // namespace

@@ -118,6 +118,18 @@ TEST(HopfSampling, BadGridsAreRefused)
   EXPECT_EQ(problem([](HopfSampling&) {}), "");
 }
 
+TEST(HopfSampling, AnOverflowingThetaSpanIsNamedAsSuch)
+{
+  HopfSampling s = grid(4, 3, false);
+  s.thetaRange[0] = -1e308;
+  s.thetaRange[1] = 1e308; // both finite, their difference is not
+  HopfRows rows;
+  const std::string problem = s.sample(rows);
+  EXPECT_NE(problem.find("ThetaRange's span (maximum - minimum) overflows"), std::string::npos)
+    << problem;
+  EXPECT_EQ(problem.find("finite"), std::string::npos) << problem;
+}
+
 TEST(HopfSampling, BasePointsAreTakenInOrderAsOneStrip)
 {
   HopfSampling s;

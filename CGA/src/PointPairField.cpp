@@ -32,7 +32,7 @@ std::vector<FieldGenerator> pointPairs(const PointPairGenerator* generators, std
   for (std::size_t i = 0; i < count; ++i)
   {
     const PointPairGenerator& g = generators[i];
-    const bool usable = isFinite(g.direction) && norm2(g.direction) != 0.0;
+    const bool usable = isFinite(g.direction) && norm(g.direction) != 0.0;
     pairs.push_back(FieldGenerator::pointPair(
       g.location, usable ? g.direction : Vec3{}, usable ? g.weight : std::nan("")));
   }

@@ -2,8 +2,10 @@
 
 #include "cga/Conformal.h"
 #include "cga/PointPairs.h"
+#include "cga/PointSandwich.h"
 
 #include <cmath>
+#include <sstream>
 
 namespace cga
 {
@@ -25,6 +27,27 @@ std::string BoostedCircle::validate() const
   if (!(norm(boostDirection) > 0.0))
   {
     return "the boost direction must not be the zero vector";
+  }
+  return {};
+}
+
+std::string BoostedCircle::boostProblem(double lambdaMin, double lambdaMax) const
+{
+  // The map's entries are sums of products of 1 and lambda tau's components, so they are largest
+  // (and overflow first) at the ends of the range.
+  for (const double lambda : { lambdaMin, lambdaMax })
+  {
+    for (const double entry : PointMap(this->boostCompact(lambda)).matrix())
+    {
+      if (!std::isfinite(entry))
+      {
+        std::ostringstream message;
+        message << "the boost overflows at lambda = " << lambda << ": |lambda| times the boost "
+                << "direction's length " << norm(boostDirection)
+                << " (its weight) is too large; shorten the boost direction or the lambda range";
+        return message.str();
+      }
+    }
   }
   return {};
 }

@@ -62,7 +62,7 @@ std::string CurvatureControlPoint::normalize()
     return "a control point has a zero normal";
   }
   const Vec3 inPlane = uDirection - dot(uDirection, n) * n;
-  if (norm(inPlane) <= 1e-9 * norm(uDirection) || norm2(inPlane) == 0.0)
+  if (norm(inPlane) <= 1e-9 * norm(uDirection)) // also a zero inPlane or uDirection
   {
     return "a control point's u direction is zero or parallel to its normal";
   }

@@ -46,6 +46,10 @@ std::string gridProblem(const HopfSampling& s)
   {
     return "PhiRange must lie within [-pi/2, pi/2]";
   }
+  if (!std::isfinite(s.thetaRange[1] - s.thetaRange[0]))
+  {
+    return "ThetaRange's span (maximum - minimum) overflows: its ends must lie closer together";
+  }
   return {};
 }
 

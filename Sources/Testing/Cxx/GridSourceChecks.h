@@ -1,5 +1,5 @@
-// Shared by the sources' GoogleTests: out-of-range piece requests, and the exact cut at the clip
-// sphere (vtkBoostedGridDriver).
+// Shared by the sources' GoogleTests: out-of-range piece requests, the exact cut at the clip
+// sphere (vtkBoostedGridDriver), and outputs that must agree point for point.
 #ifndef GridSourceChecks_h
 #define GridSourceChecks_h
 
@@ -133,6 +133,21 @@ inline void ExpectCutExactlyAtTheSphere(vtkPolyData* output, const double center
     output->GetPoint(i, p);
     EXPECT_LE(std::fabs(RelativeSphereExcess(p, center, radius)), 1e-12)
       << what << ": cut point " << i << " at (" << p[0] << ", " << p[1] << ", " << p[2] << ")";
+  }
+}
+
+// `actual` has the points of `expected`, in the same order, each within `tolerance`.
+inline void ExpectSamePoints(vtkDataSet* expected, vtkDataSet* actual, double tolerance,
+                             const std::string& what)
+{
+  ASSERT_GT(expected->GetNumberOfPoints(), 0) << what;
+  ASSERT_EQ(actual->GetNumberOfPoints(), expected->GetNumberOfPoints()) << what;
+  for (vtkIdType i = 0; i < expected->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    expected->GetPoint(i, p);
+    actual->GetPoint(i, q);
+    ASSERT_LE(std::sqrt(vtkMath::Distance2BetweenPoints(p, q)), tolerance) << what << ": point " << i;
   }
 }
 

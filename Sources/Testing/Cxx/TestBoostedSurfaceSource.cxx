@@ -389,3 +389,64 @@ TEST(BoostedSurfaceSource, OutOfRangePiecesAreEmpty)
       [type](vtkBoostedSurfaceSource* s) { s->SetOutputType(type); });
   }
 }
+
+TEST(BoostedSurfaceSource, CircleNormalOfAnyNonZeroLengthGivesTheSameSurface)
+{
+  vtkNew<vtkBoostedSurfaceSource> unit;
+  unit->SetCircleNormal(1.0 / 3, 2.0 / 3, 2.0 / 3);
+  unit->Update();
+  for (const double length : { 1e-300, 1e-200, 1e160, 1e200, 1e307 })
+  {
+    vtkNew<vtkBoostedSurfaceSource> scaled;
+    EventCounter events(scaled);
+    scaled->SetCircleNormal(length / 3, 2 * length / 3, 2 * length / 3);
+    scaled->Update();
+    EXPECT_EQ(events.errors, 0) << "length " << length << ": " << events.lastError;
+    ExpectSamePoints(unit->GetOutput(), scaled->GetOutput(), 1e-12, "normal length " + std::to_string(length));
+  }
+}
+
+TEST(BoostedSurfaceSource, AnOverflowingBoostIsAnErrorNotASurfaceOfOneRow)
+{
+  for (const double length : { 1e160, 1e200, 1e300 })
+  {
+    vtkNew<vtkBoostedSurfaceSource> source;
+    EventCounter events(source);
+    source->SetBoostDirection(length, 0, 0);
+    source->Update();
+    EXPECT_EQ(events.errors, 1) << "length " << length;
+    EXPECT_NE(events.lastError.find("the boost overflows"), std::string::npos) << events.lastError;
+    EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
+    EXPECT_EQ(source->GetOutput()->GetNumberOfCells(), 0);
+  }
+  // A finite lambda range far too wide for a unit boost is the same overflow.
+  vtkNew<vtkBoostedSurfaceSource> wide;
+  EventCounter events(wide);
+  wide->SetLambdaRange(-1e200, 1e200);
+  wide->Update();
+  EXPECT_EQ(events.errors, 1);
+  EXPECT_EQ(wide->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+TEST(BoostedSurfaceSource, ATinyBoostDirectionIsAWeakBoostNotAZeroVector)
+{
+  // |d| = 1e-200: K(lambda) = 1 + lambda tau moves the circle by about 1e-200, every row remains.
+  vtkNew<vtkBoostedSurfaceSource> source;
+  EventCounter events(source);
+  source->SetBoostDirection(1e-200, 0, 0);
+  source->SetLambdaRange(-3, 3);
+  source->SetLambdaResolution(6);
+  source->SetOutputTypeToCircles();
+  source->Update();
+  EXPECT_EQ(events.errors, 0) << events.lastError;
+  const auto rows = pointsByLambda(source->GetOutput());
+  EXPECT_EQ(rows.size(), 7u);
+  const double* center = source->GetCircleCenter();
+  for (const auto& row : rows)
+  {
+    for (const auto& p : row.second)
+    {
+      EXPECT_NEAR(std::sqrt(vtkMath::Distance2BetweenPoints(p.data(), center)), source->GetCircleRadius(), 1e-15);
+    }
+  }
+}

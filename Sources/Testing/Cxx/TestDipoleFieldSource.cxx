@@ -296,6 +296,8 @@ TEST(DipoleFieldSource, BadInputGivesAnErrorAndAnEmptyOutput)
     NaNEpsilon,
     NaNTranslation,
     HugeDimensions,
+    GridOverflowsFromTheOrigin,
+    GridSpanOverflows,
     Cases
   };
   for (int which = 0; which < Cases; ++which)
@@ -314,6 +316,16 @@ TEST(DipoleFieldSource, BadInputGivesAnErrorAndAnEmptyOutput)
       case NaNTranslation: source->SetGeneratorsTranslation(0, 0, nan); break;
       // 8e27 points (their count overflows vtkIdType): refused before anything is allocated
       case HugeDimensions: source->SetDimensions(2000000000, 2000000000, 2000000000); break;
+      // finite Origin and Spacing whose last grid point is not: 1.7e308 + 20 * 1e306
+      case GridOverflowsFromTheOrigin:
+        source->SetOrigin(0, 1.7e308, 0);
+        source->SetSpacing(1, 1e306, 1);
+        break;
+      // 20 * 1e307 overflows although the sum with the origin would not
+      case GridSpanOverflows:
+        source->SetOrigin(-1e308, 0, 0);
+        source->SetSpacing(1e307, 1, 1);
+        break;
     }
     source->Update();
     EXPECT_EQ(counter.errors, 1) << "case " << which;
@@ -460,4 +472,34 @@ TEST(DipoleFieldSource, PotentialIsTheClosedFormSumOfDipolePotentials)
 TEST(DipoleFieldSource, OutOfRangePiecesAreEmpty)
 {
   ExpectOutOfRangePiecesEmpty<vtkDipoleFieldSource>([](vtkDipoleFieldSource*) {});
+}
+
+TEST(DipoleFieldSource, AGridNearTheLargestDoubleIsAnErrorOnlyWhereItOverflows)
+{
+  // Origin -1e308, 20 steps of 5e306: the grid ends at 0, every point finite.
+  vtkNew<vtkDipoleFieldSource> source;
+  EventCounter counter(source);
+  source->SetOrigin(-1e308, 0, 0);
+  source->SetSpacing(5e306, 0.2, 1);
+  source->Update();
+  EXPECT_EQ(counter.errors, 0) << counter.lastError;
+  vtkImageData* output = source->GetOutput();
+  ASSERT_EQ(output->GetNumberOfPoints(), 21 * 21);
+  double bounds[6];
+  output->GetBounds(bounds);
+  for (double b : bounds)
+  {
+    EXPECT_TRUE(std::isfinite(b));
+  }
+  EXPECT_EQ(bounds[0], -1e308);
+  EXPECT_EQ(bounds[1], -1e308 + 20 * 5e306);
+
+  // One step more overflows: an error naming it, and an empty output with no bounds.
+  source->SetDimensions(22, 21, 1);
+  source->SetSpacing(1e307, 0.2, 1);
+  source->SetOrigin(-1e308, 0, 0);
+  source->Update();
+  EXPECT_EQ(counter.errors, 1);
+  EXPECT_NE(counter.lastError.find("the grid overflows"), std::string::npos) << counter.lastError;
+  EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
 }

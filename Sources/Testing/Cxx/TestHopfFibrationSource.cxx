@@ -551,3 +551,31 @@ TEST(HopfFibrationSource, TwistorMeshOfOneFiberPerStripWarnsAndIsEmpty)
     EXPECT_EQ(source->GetOutput()->GetNumberOfCells(), 0) << "case " << k;
   }
 }
+
+TEST(HopfFibrationSource, AnOverflowingThetaSpanSaysSo)
+{
+  vtkNew<vtkHopfFibrationSource> source;
+  EventCounter events(source);
+  source->SetThetaRange(-1e308, 1e308); // finite ends, infinite span
+  source->Update();
+  EXPECT_EQ(events.errors, 1);
+  EXPECT_NE(events.lastError.find("span (maximum - minimum) overflows"), std::string::npos) << events.lastError;
+  EXPECT_EQ(events.lastError.find("NaN"), std::string::npos) << events.lastError;
+  EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+TEST(HopfFibrationSource, CircleNormalOfAnyNonZeroLengthGivesTheSameFibers)
+{
+  vtkNew<vtkHopfFibrationSource> unit;
+  unit->SetCircleNormal(1.0 / 3, 2.0 / 3, 2.0 / 3);
+  unit->Update();
+  for (const double length : { 1e-300, 1e-200, 1e200, 1e307 })
+  {
+    vtkNew<vtkHopfFibrationSource> scaled;
+    EventCounter events(scaled);
+    scaled->SetCircleNormal(length / 3, 2 * length / 3, 2 * length / 3);
+    scaled->Update();
+    EXPECT_EQ(events.errors, 0) << "length " << length << ": " << events.lastError;
+    ExpectSamePoints(unit->GetOutput(), scaled->GetOutput(), 1e-12, "normal length " + std::to_string(length));
+  }
+}

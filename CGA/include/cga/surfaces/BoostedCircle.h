@@ -24,6 +24,11 @@ struct BoostedCircle
   /// Empty when the parameters describe a valid family, otherwise what is wrong with them.
   std::string validate() const;
 
+  /// Empty when K(lambda) has a finite point map for every lambda in [lambdaMin, lambdaMax],
+  /// otherwise why not: |lambda| times the boost direction's length (its weight) so large that the
+  /// sandwich overflows, which would leave nothing of the surface but lambda = 0.
+  std::string boostProblem(double lambdaMin, double lambdaMax) const;
+
   /// Unit vectors (a, b) spanning the circle's plane with a x b along the normal; theta = 0 is a.
   void planeFrame(Vec3& a, Vec3& b) const;
 
