@@ -151,4 +151,25 @@ inline void ExpectSamePoints(vtkDataSet* expected, vtkDataSet* actual, double to
   }
 }
 
+// Directions that only count as directions: `setDirections(source, length)` sets them `length`
+// long, and every length must give the points that length 1 gives (a plain |d|^2 overflows beyond
+// about 1e154 and underflows below about 1e-154).
+template <class Source>
+void ExpectTheSamePointsAtEveryDirectionLength(
+  const std::function<void(Source*, double)>& setDirections)
+{
+  vtkNew<Source> unit;
+  setDirections(unit, 1.0);
+  unit->Update();
+  for (const double length : { 1e-300, 1e-200, 1e160, 1e200, 1e307 })
+  {
+    vtkNew<Source> scaled;
+    EventCounter events(scaled);
+    setDirections(scaled, length);
+    scaled->Update();
+    EXPECT_EQ(events.errors, 0) << "length " << length << ": " << events.lastError;
+    ExpectSamePoints(unit->GetOutput(), scaled->GetOutput(), 1e-12, "length " + std::to_string(length));
+  }
+}
+
 #endif
