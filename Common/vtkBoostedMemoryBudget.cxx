@@ -103,13 +103,24 @@ std::string vtkBoostedMemoryBudget::Problem(double bytes, const std::string& wha
   {
     return problem;
   }
-  if (bytes <= budget) // NaN or inf are never within the budget
+  if (!(bytes <= budget)) // NaN or inf are never within the budget
   {
-    return {};
+    return what + " needs about " + Format(bytes) + ", more than the memory budget of " +
+      Format(budget) + " (" + EnvironmentVariable +
+      ", default half of the physical memory): lower the resolution or request smaller pieces";
   }
-  return what + " needs about " + Format(bytes) + ", more than the memory budget of " +
-    Format(budget) + " (" + EnvironmentVariable +
-    ", default half of the physical memory): lower the resolution or request smaller pieces";
+  // The probe: one block of the whole estimate, freed at once. It only reserves address space
+  // (no page is touched), and when it fails the update's own allocations would fail too; VTK's
+  // arrays abort the process then instead of throwing (Debian's VTK is built without NDEBUG).
+  void* probe = bytes > 0.0 && bytes < 9e18 ? std::malloc(static_cast<size_t>(bytes)) : nullptr;
+  if (bytes > 0.0 && !probe)
+  {
+    return what + " needs about " + Format(bytes) +
+      ", which this process cannot allocate now (an address-space limit or other processes): "
+      "lower the resolution or request smaller pieces";
+  }
+  std::free(probe);
+  return {};
 }
 
 bool vtkBoostedMemoryBudget::Run(vtkAlgorithm* algorithm, const std::function<void()>& work)

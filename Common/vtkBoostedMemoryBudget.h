@@ -15,9 +15,12 @@
  * update (not a silent default). The variable is read at each update, so a running session may
  * change it.
  *
- * Allocation can still fail below the budget (an address-space limit, other processes): Run
- * turns std::bad_alloc, which VTK's arrays also throw when they cannot allocate, into the same
- * kind of error, so no update aborts the process.
+ * Allocation can still fail below the budget (an address-space limit such as `ulimit -v`, other
+ * processes). VTK's arrays abort the process then (the abort() branch of vtkGenericDataArray, as
+ * Debian builds VTK), so Problem also probes: it allocates the whole estimate once and frees it
+ * (address space only, no page is touched), and a failed probe is the same kind of error. Run
+ * turns a std::bad_alloc (std::vector, or a VTK built to throw) into an error too, so no update
+ * aborts the process.
  */
 #ifndef vtkBoostedMemoryBudget_h
 #define vtkBoostedMemoryBudget_h
@@ -45,8 +48,9 @@ public:
   /// finite positive size.
   static double Parse(const std::string& text);
 
-  /// Empty when an update of `bytes` fits the budget, otherwise the error to report; `what`
-  /// names the work ("the twistor mesh of 1000 x 1001 samples").
+  /// Empty when an update of `bytes` fits the budget and the process can allocate that much now
+  /// (the probe), otherwise the error to report; `what` names the work ("the twistor mesh of
+  /// 1000 x 1001 samples").
   static std::string Problem(double bytes, const std::string& what);
 
   /// Runs `work`; a std::bad_alloc becomes an error of `algorithm` and false (the caller empties
