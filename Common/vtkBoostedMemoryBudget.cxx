@@ -67,7 +67,7 @@ double vtkBoostedMemoryBudget::Parse(const std::string& text)
 double vtkBoostedMemoryBudget::Bytes(std::string& problem)
 {
   const char* text = std::getenv(EnvironmentVariable);
-  if (!text)
+  if (!text || !*text) // unset, or set to nothing (VAR= command): the default
   {
     return DefaultBytes();
   }

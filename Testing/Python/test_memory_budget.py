@@ -86,7 +86,7 @@ class MemoryBudgetTest(unittest.TestCase):
                 self.assertEqual(len(errors), 1, errors)
 
     def test_an_invalid_budget_is_an_error_and_an_empty_output(self):
-        for value in ["banana", "", "-5", "0", "12X", "5KK", "nan", "inf", "1e400", "GB"]:
+        for value in ["banana", " ", "-5", "0", "12X", "5KK", "nan", "inf", "1e400", "GB"]:
             for name, make in ALGORITHMS.items():
                 with self.subTest(value=value, algorithm=name):
                     algorithm = make()
@@ -95,6 +95,15 @@ class MemoryBudgetTest(unittest.TestCase):
                     self.assertEqual(point_count(algorithm), 0)
                     self.assertEqual(len(errors), 1, errors)
                     self.assertIn(BUDGET + " is '" + value + "'", errors[0])
+
+    def test_an_empty_budget_is_the_default(self):
+        for name, make in ALGORITHMS.items():
+            with self.subTest(name):
+                algorithm = make()
+                errors = common.ErrorRecorder(algorithm).messages
+                os.environ[BUDGET] = ""
+                self.assertGreater(point_count(algorithm), 0)
+                self.assertEqual(errors, [])
 
     def test_sizes_with_units(self):
         # Just above and just below a source's estimate: the hopf mesh's default grid is 72 x 129
