@@ -8,9 +8,9 @@
  *
  * The budget: the environment variable BOOSTEDSURFACES_MEMORY_BUDGET when it is set and not
  * empty, in bytes ("2000000000") or with a binary unit suffix, case-insensitive, optionally
- * followed by "B" or "iB" ("512M", "8GiB", "1.5T"); otherwise half of the machine's physical memory (12 GiB on a
- * 24 GiB machine; 8 GiB when the physical memory is unknown). Half, because an update's peak is
- * not the whole story: the pipeline keeps the previous output until the new one replaces it, and
+ * followed by "B" or "iB" ("512M", "8GiB", "1.5T"); otherwise half of the machine's physical
+ * memory (12 GiB on a 24 GiB machine; 8 GiB when the physical memory is unknown). Half, because
+ * an update's peak is not the whole story: the pipeline keeps the previous output until the new one replaces it, and
  * ParaView's rendering copies the points again. A value that cannot be read is an error of every
  * update (not a silent default). The variable is read at each update, so a running session may
  * change it.

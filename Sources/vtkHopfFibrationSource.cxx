@@ -132,7 +132,8 @@ int vtkHopfFibrationSource::RequestData(
         std::to_string(sampling.rowCount()) + " x " + std::to_string(columns) + " samples");
   }
   cga::HopfRows base;
-  if (problem.empty() && !vtkBoostedMemoryBudget::Run(this, [&] { problem = sampling.sample(base); }))
+  if (problem.empty() &&
+    !vtkBoostedMemoryBudget::Run(this, [&] { problem = sampling.sample(base); }))
   {
     return 1; // out of memory: the output stays empty
   }
