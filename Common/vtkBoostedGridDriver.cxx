@@ -2,6 +2,7 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkBoostedBlockLoop.h"
+#include "vtkBoostedMemoryBudget.h"
 #include "vtkBoostedSphereClip.h"
 #include "vtkInformation.h"
 #include "vtkNew.h"
@@ -48,6 +49,12 @@ bool vtkBoostedGridDriver::Prepare(const std::string& sourceProblem, long long r
   {
     problem = vtkBoostedGridBuilder::SizeProblem(rows, columns);
   }
+  if (problem.empty() && this->BytesPerSample > 0.0)
+  {
+    problem = vtkBoostedMemoryBudget::Problem(
+      static_cast<double>(rows) * static_cast<double>(columns) * this->BytesPerSample,
+      "a grid of " + std::to_string(rows) + " x " + std::to_string(columns) + " samples");
+  }
   if (!problem.empty())
   {
     vtkErrorWithObjectMacro(this->Source, << problem);
@@ -69,7 +76,12 @@ bool vtkBoostedGridDriver::Prepare(const std::string& sourceProblem, long long r
   this->Columns = static_cast<int>(columns);
   this->SampleFirst = surface ? std::max(0, this->FirstRow - 1) : this->FirstRow;
   this->SampleLast = surface ? std::min(rowCount - 1, this->LastRow + 1) : this->LastRow;
-  this->Builder.reset(new vtkBoostedGridBuilder(rowCount, this->Columns, periodicColumns));
+  if (!vtkBoostedMemoryBudget::Run(this->Source, [&] {
+        this->Builder.reset(new vtkBoostedGridBuilder(rowCount, this->Columns, periodicColumns));
+      }))
+  {
+    return false; // the output stays empty
+  }
   if (rowsPerStrip > 0)
   {
     this->Builder->SetRowsPerBlock(rowsPerStrip);
@@ -108,14 +120,22 @@ void vtkBoostedGridDriver::Build(vtkPolyData* output)
   {
     return; // never hand on a half-computed grid
   }
-  vtkNew<vtkPolyData> sampled;
-  if (this->Surface)
+  const bool built = vtkBoostedMemoryBudget::Run(this->Source, [&] {
+    vtkNew<vtkPolyData> sampled;
+    if (this->Surface)
+    {
+      this->Builder->BuildSurface(
+        sampled, this->FirstRow, this->LastRow, this->OutputPointsPrecision);
+    }
+    else
+    {
+      this->Builder->BuildCurves(
+        sampled, this->FirstRow, this->LastRow, this->OutputPointsPrecision);
+    }
+    vtkBoostedSphereClip::Clip(sampled, this->ClipCenter, this->ClipRadius, output);
+  });
+  if (!built)
   {
-    this->Builder->BuildSurface(sampled, this->FirstRow, this->LastRow, this->OutputPointsPrecision);
+    output->Initialize(); // never hand on a half-built output
   }
-  else
-  {
-    this->Builder->BuildCurves(sampled, this->FirstRow, this->LastRow, this->OutputPointsPrecision);
-  }
-  vtkBoostedSphereClip::Clip(sampled, this->ClipCenter, this->ClipRadius, output);
 }

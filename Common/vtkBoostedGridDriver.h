@@ -4,8 +4,10 @@
  *
  * A grid source (Boosted Surface, Curvature Patch, Hopf Fibration) validates its own parameters,
  * then hands the rest to this class:
- * 1. Prepare: reports the source's problem, a bad clip radius or a grid beyond
- *    vtkBoostedGridBuilder::MaximumSamples as one error (the output stays empty), and finds the
+ * 1. Prepare: reports the source's problem, a bad clip radius, a grid beyond
+ *    vtkBoostedGridBuilder::MaximumSamples or an estimate beyond the memory budget
+ *    (vtkBoostedMemoryBudget, from the source's SetBytesPerSample) as one error (the output stays
+ *    empty), and finds the
  *    rows of the requested piece (an out-of-range piece is empty, as in VTK's sources). A surface
  *    also samples one halo row on each side, which the normals at the band's edge need.
  * 2. SampleRows or SampleGrid: the source computes its samples, in vtkBoostedBlockLoop's blocks
@@ -13,7 +15,7 @@
  * 3. Build: quads or polylines (vtkBoostedGridBuilder), cut exactly at the clip sphere
  *    (vtkBoostedSphereClip): every finite sample is kept until the cut, so the output ends on the
  *    sphere (to round-off), not at the last whole grid cell inside it. An aborted update stays
- *    empty.
+ *    empty, and so does one whose allocation fails (an error, not an abort).
  *
  * The clip sphere has one meaning in every source: radius ClipRadius (an absolute length) about
  * the construction's center (the circle's center, the patch's origin).
@@ -39,6 +41,10 @@ public:
   vtkBoostedGridDriver(vtkAlgorithm* source, vtkInformation* outputInformation,
     const double clipCenter[3], double clipRadius, int outputPointsPrecision);
   ~vtkBoostedGridDriver();
+
+  /// The update's memory per grid sample (all the rows, not only the piece's: the builder holds
+  /// the whole grid), for Prepare's estimate; each source measures its own. 0: no estimate.
+  void SetBytesPerSample(double bytesPerSample) { this->BytesPerSample = bytesPerSample; }
 
   /// Step 1. `problem`: the source's own validation (empty when its parameters are valid). A
   /// surface makes quads between rows (and needs at least two); otherwise each row is a polyline.
@@ -77,6 +83,7 @@ private:
   int FirstRow = 0, LastRow = -1;     // this piece's rows
   int SampleFirst = 0, SampleLast = -1; // with the halo
   bool Aborted = false;
+  double BytesPerSample = 0.0;
 };
 
 #endif

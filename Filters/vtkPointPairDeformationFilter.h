@@ -44,6 +44,11 @@
 #include <memory> // for the generator list
 
 class vtkBoostedRowList;
+class vtkDataSet;
+namespace cga
+{
+class PointPairField;
+}
 
 class BOOSTEDSURFACESFILTERS_EXPORT vtkPointPairDeformationFilter : public vtkPointSetAlgorithm
 {
@@ -159,6 +164,10 @@ protected:
   int OutputPointsPrecision = DEFAULT_PRECISION;
 
 private:
+  /// RequestData's allocating part, after the validation and the memory estimate: the explicit
+  /// copy of an image or rectilinear grid, the output points and Displacement, the deformation.
+  void Deform(vtkDataSet* input, const cga::PointPairField& field, vtkPointSet* output);
+
   vtkPointPairDeformationFilter(const vtkPointPairDeformationFilter&) = delete;
   void operator=(const vtkPointPairDeformationFilter&) = delete;
 };

@@ -62,7 +62,8 @@ public:
 
   ///@{
   /// The grid. Defaults: origin (-2, -2, 0), spacing (0.2, 0.2, 1), dimensions (21, 21, 1).
-  /// An update computes at most 1e8 points (more is an error): stream larger grids in pieces.
+  /// An update computes at most 1e8 points, within the memory budget (vtkBoostedMemoryBudget,
+  /// Common/; more is an error): stream larger grids in pieces.
   vtkSetVector3Macro(Origin, double);
   vtkGetVector3Macro(Origin, double);
   vtkSetVector3Macro(Spacing, double);
