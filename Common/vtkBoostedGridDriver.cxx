@@ -37,6 +37,19 @@ std::string vtkBoostedGridDriver::ClipSphereProblem(const double center[3], doub
   return {};
 }
 
+std::string vtkBoostedGridDriver::GridProblem(
+  long long rows, long long columns, double bytesPerSample, const std::string& what)
+{
+  std::string problem = vtkBoostedGridBuilder::SizeProblem(rows, columns);
+  if (problem.empty() && bytesPerSample > 0.0)
+  {
+    problem = vtkBoostedMemoryBudget::Problem(
+      static_cast<double>(rows) * static_cast<double>(columns) * bytesPerSample,
+      what + " of " + std::to_string(rows) + " x " + std::to_string(columns) + " samples");
+  }
+  return problem;
+}
+
 bool vtkBoostedGridDriver::Prepare(const std::string& sourceProblem, long long rows,
   long long columns, bool periodicColumns, bool surface, int rowsPerStrip)
 {
@@ -47,13 +60,7 @@ bool vtkBoostedGridDriver::Prepare(const std::string& sourceProblem, long long r
   }
   if (problem.empty())
   {
-    problem = vtkBoostedGridBuilder::SizeProblem(rows, columns);
-  }
-  if (problem.empty() && this->BytesPerSample > 0.0)
-  {
-    problem = vtkBoostedMemoryBudget::Problem(
-      static_cast<double>(rows) * static_cast<double>(columns) * this->BytesPerSample,
-      "a grid of " + std::to_string(rows) + " x " + std::to_string(columns) + " samples");
+    problem = GridProblem(rows, columns, this->BytesPerSample);
   }
   if (!problem.empty())
   {

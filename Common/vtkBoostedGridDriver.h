@@ -46,6 +46,13 @@ public:
   /// the whole grid), for Prepare's estimate; each source measures its own. 0: no estimate.
   void SetBytesPerSample(double bytesPerSample) { this->BytesPerSample = bytesPerSample; }
 
+  /// The size checks of Prepare, for a source that must know them before it can count its rows
+  /// exactly (Hopf samples its base points first): a grid beyond
+  /// vtkBoostedGridBuilder::MaximumSamples, or rows x columns x bytesPerSample beyond the memory
+  /// budget (bytesPerSample 0: no estimate). `what` names the grid in the message. Empty when fine.
+  static std::string GridProblem(long long rows, long long columns, double bytesPerSample,
+    const std::string& what = "a grid");
+
   /// Step 1. `problem`: the source's own validation (empty when its parameters are valid). A
   /// surface makes quads between rows (and needs at least two); otherwise each row is a polyline.
   /// `rowsPerStrip` > 0 splits the rows into strips (vtkBoostedGridBuilder::SetRowsPerBlock).

@@ -17,14 +17,6 @@
 
 vtkStandardNewMacro(vtkBoostedSurfaceSource);
 
-namespace
-{
-cga::Vec3 toVec3(const double v[3])
-{
-  return { v[0], v[1], v[2] };
-}
-}
-
 vtkBoostedSurfaceSource::vtkBoostedSurfaceSource()
 {
   this->SetNumberOfInputPorts(0);
@@ -43,12 +35,12 @@ int vtkBoostedSurfaceSource::RequestData(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
 
   cga::BoostedCircle family;
-  family.center = toVec3(this->CircleCenter);
-  family.normal = toVec3(this->CircleNormal);
+  family.center = cga::toVec3(this->CircleCenter);
+  family.normal = cga::toVec3(this->CircleNormal);
   family.radius = this->CircleRadius;
-  family.boostDirection = toVec3(this->BoostDirection);
+  family.boostDirection = cga::toVec3(this->BoostDirection);
   family.boostLocation =
-    this->BoostAtCircleCenter ? family.center : toVec3(this->BoostLocation);
+    this->BoostAtCircleCenter ? family.center : cga::toVec3(this->BoostLocation);
   std::string problem = family.validate();
   if (problem.empty() && !(this->LambdaRange[0] <= this->LambdaRange[1]))
   {

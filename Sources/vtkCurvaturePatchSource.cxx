@@ -16,14 +16,6 @@
 
 vtkStandardNewMacro(vtkCurvaturePatchSource);
 
-namespace
-{
-cga::Vec3 toVec3(const double v[3])
-{
-  return { v[0], v[1], v[2] };
-}
-}
-
 vtkCurvaturePatchSource::vtkCurvaturePatchSource()
   : ControlPoints(new vtkBoostedRowList(
       this, "ControlPoint", { 0, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0 }))
@@ -62,9 +54,9 @@ int vtkCurvaturePatchSource::RequestData(
   cga::CurvaturePatch patch;
   patch.method = static_cast<cga::CurvatureMethod>(this->Method);
   patch.rule = vtkBoostedExponentialRule<vtkCurvaturePatchSource>(this->ExponentialRule);
-  patch.frame.origin = toVec3(this->Origin);
-  patch.frame.u = toVec3(this->UDirection);
-  patch.frame.v = toVec3(this->VDirection);
+  patch.frame.origin = cga::toVec3(this->Origin);
+  patch.frame.u = cga::toVec3(this->UDirection);
+  patch.frame.v = cga::toVec3(this->VDirection);
   patch.sizeU = this->Size[0];
   patch.sizeV = this->Size[1];
   patch.kappaU = this->KappaU;
@@ -82,13 +74,13 @@ int vtkCurvaturePatchSource::RequestData(
     const double* location = this->ControlPoints->Location(
       i, this->SelectedControlPoint, this->SelectedControlPointLocation);
     patch.controlPoints.push_back(
-      { toVec3(location), { c[3], c[4], c[5] }, { c[6], c[7], c[8] }, c[9], c[10] });
+      { cga::toVec3(location), { c[3], c[4], c[5] }, { c[6], c[7], c[8] }, c[9], c[10] });
   }
   const double* directions[4] = { this->Corner1Direction, this->Corner2Direction,
     this->Corner3Direction, this->Corner4Direction };
   for (int i = 0; i < 4; ++i)
   {
-    patch.corners[i] = { toVec3(directions[i]), this->CornerWeights[i] };
+    patch.corners[i] = { cga::toVec3(directions[i]), this->CornerWeights[i] };
   }
   const long long rows = patch.sizeV > 0.0 ? this->VResolution + 1LL : 1LL;
   const long long columns = this->UResolution + 1LL;

@@ -100,8 +100,8 @@ int vtkHopfFibrationSource::RequestData(
   const bool mesh = this->OutputType == TWISTOR_MESH;
 
   cga::HopfFibration hopf;
-  hopf.center = { this->CircleCenter[0], this->CircleCenter[1], this->CircleCenter[2] };
-  hopf.normal = { this->CircleNormal[0], this->CircleNormal[1], this->CircleNormal[2] };
+  hopf.center = cga::toVec3(this->CircleCenter);
+  hopf.normal = cga::toVec3(this->CircleNormal);
   hopf.radius = this->CircleRadius;
   hopf.mode = this->Mode == CLASSICAL ? cga::HopfMode::Classical : cga::HopfMode::Paper;
   const cga::HopfSampling sampling = this->Sampling(input);
@@ -115,21 +115,15 @@ int vtkHopfFibrationSource::RequestData(
   {
     problem = this->BasePoints->Problem(); // a refused list
   }
-  if (problem.empty()) // before sampling: the base points alone could exhaust memory
-  {
-    problem = vtkBoostedGridBuilder::SizeProblem(sampling.rowCount(), columns);
-  }
   // The update's memory per grid sample, for the memory budget (vtkBoostedMemoryBudget): the peak
   // resident memory at the 1e8-sample cap, double precision, measured once for issue 15 (14 and
   // 23 GB; 84 and 138 bytes a sample at 4000 fibers of 1000 points, where the arrays' growth by
   // doubling overshoots less).
   const double bytesPerSample = mesh ? 230 : 140;
-  if (problem.empty())
+  if (problem.empty()) // before sampling: the base points alone could exhaust memory
   {
-    problem = vtkBoostedMemoryBudget::Problem(
-      static_cast<double>(sampling.rowCount()) * static_cast<double>(columns) * bytesPerSample,
-      std::string(mesh ? "the twistor mesh" : "the fibers") + " of " +
-        std::to_string(sampling.rowCount()) + " x " + std::to_string(columns) + " samples");
+    problem = vtkBoostedGridDriver::GridProblem(sampling.rowCount(), columns, bytesPerSample,
+      mesh ? "the twistor mesh" : "the fibers");
   }
   cga::HopfRows base;
   if (problem.empty() &&
@@ -211,7 +205,7 @@ cga::HopfSampling vtkHopfFibrationSource::Sampling(vtkPointSet* input) const
   {
     sampling.basePoints = this->BasePoints->GetValues();
   }
-  sampling.sphereCenter = { this->SphereCenter[0], this->SphereCenter[1], this->SphereCenter[2] };
+  sampling.sphereCenter = cga::toVec3(this->SphereCenter);
   if (input)
   {
     sampling.inputCount = static_cast<std::size_t>(input->GetNumberOfPoints());

@@ -29,6 +29,12 @@ struct Vec3
   friend constexpr Vec3 operator/(Vec3 a, double s) { return { a.x / s, a.y / s, a.z / s }; }
 };
 
+/// The Vec3 of a C array of three numbers (what VTK's setters and points hold).
+constexpr Vec3 toVec3(const double v[3])
+{
+  return { v[0], v[1], v[2] };
+}
+
 constexpr double dot(Vec3 a, Vec3 b)
 {
   return a.x * b.x + a.y * b.y + a.z * b.z;
