@@ -3,6 +3,7 @@
 // closed form (Rodrigues' rotation, the screw, the scaling, the translation), sums of kinds
 // against the series exponential of the full product, conformality of Exact, and where the Paper
 // rule is exact.
+#include "GeneratorKindReference.h"
 #include "TestSupport.h"
 
 #include "cga/CompactConversion.h"
@@ -20,43 +21,9 @@ namespace
 using namespace cga;
 using cgatest::Random;
 
-constexpr GeneratorKind kAllKinds[] = { GeneratorKind::PointPair, GeneratorKind::Rotation,
-                                        GeneratorKind::Twist, GeneratorKind::Dilation,
-                                        GeneratorKind::Translation };
-
-// G of each kind built on the full Multivector from its definition: the independent reference.
-Multivector referenceBivector(const GeneratorParameters& g)
-{
-  const Multivector t = translator(g.location);
-  const Multivector axisPlane = vector(g.direction) * euclideanPseudoscalar();
-  switch (g.kind)
-  {
-    case GeneratorKind::PointPair:
-      return nullPointPair(g.location, g.direction);
-    case GeneratorKind::Rotation:
-      return 0.5 * sandwich(t, axisPlane);
-    case GeneratorKind::Twist:
-      return 0.5 * sandwich(t, axisPlane) + (0.5 * g.pitch) * (vector(g.direction) * ni());
-    case GeneratorKind::Dilation:
-      return (-0.5 * norm(g.direction)) * sandwich(t, minkowskiPlane());
-    case GeneratorKind::Translation:
-      return 0.5 * (vector(g.direction) * ni());
-  }
-  return Multivector();
-}
-
-Multivector referenceField(const std::vector<GeneratorParameters>& generators,
-                           Vec3 p,
-                           double k,
-                           double eps)
-{
-  Multivector b;
-  for (const GeneratorParameters& g : generators)
-  {
-    b += referenceBivector(g) * (g.weight / (k * norm2(p - g.location) + eps));
-  }
-  return b;
-}
+using cgatest::kAllKinds;
+using cgatest::referenceBivector;
+using cgatest::referenceField;
 
 Vec3 referenceImage(const Multivector& k, Vec3 p)
 {
