@@ -88,6 +88,21 @@ error = largest_distance(points_of(moved), points_of(deformation))
 if error > 1e-12:
     failures.append("the selected generator did not take the handle's location (%g)" % error)
 
+# The Kind column: a Rotation row (kind 1) turns p about the axis through x along v by
+# w |v| / (k |p - x|^2 + eps) radians, right-handed (here v is z: a turn in the xy plane).
+rotation = PointPairDeformation(Input=sphere, GeneratorList=list(x) + [0, 0, 2.0, w, 1, 0],  # noqa: F821
+                                Falloff=k, Epsilon=eps)
+expected = []
+for p in source_points:
+    c = w * 2.0 / (k * sum((p[i] - x[i]) ** 2 for i in range(3)) + eps)
+    y = [p[i] - x[i] for i in range(3)]
+    expected.append([x[0] + math.cos(c) * y[0] - math.sin(c) * y[1],
+                     x[1] + math.sin(c) * y[0] + math.cos(c) * y[1], p[2]])
+error = largest_distance(points_of(rotation), expected)
+print("a Rotation row vs closed form: %g" % error)
+if error > 1e-5:  # the sphere's points are float
+    failures.append("a Rotation row differs from the closed form by %g" % error)
+
 # Fig 11 style image: four generators around the sphere.
 deformation.GeneratorList = [0.0, 0.0, 1.4, 0, 0, 1, 0.6, 0, 0,
                              1.4, 0.0, 0.2, 1, 0, 0, -0.5, 0, 0,
