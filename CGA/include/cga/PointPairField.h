@@ -1,7 +1,8 @@
 // A field of generators (docs/conventions.md section 3 (item 9), eq 23; also items 8 and 12): at a
 // point p the generators sum, each weighted by its inverse squared distance, into
 //   B(p) = sum_i w_i G_i / (k |p - x_i|^2 + eps),
-// with G_i the null point pair tau(x_i, v_i) (or any bivector: FieldGenerator),
+// with G_i the null point pair tau(x_i, v_i), a generator of another kind (GeneratorKind:
+// rotation, twist, dilation, translation; docs/conventions.md section 2 item 11) or any bivector,
 // and p moves to fn(K up(p) ~K) with K = exp(-strength B(p)).
 //
 // This is the one implementation the deformation filter, the dipole field and the curvature
