@@ -2,6 +2,7 @@
 
 #include "vtkBoostedBlockLoop.h"
 #include "vtkBoostedExponentialRule.h"
+#include "vtkBoostedGeneratorRows.h"
 #include "vtkBoostedMemoryBudget.h"
 #include "vtkBoostedRowList.h"
 #include "vtkDataArray.h"
@@ -20,6 +21,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -86,16 +88,27 @@ struct FieldFunctor
     }
     *this->Failures +=
       this->Field->sampleMany(points.data(), n, this->WeightScale, a.data(), b.data(), phi.data(), scratch.data());
+    // Huge weights of translations, twists or dilations move points by up to ~1e308, and sums of
+    // such displacements overflow: every value saturates at the largest of the output precision.
+    const double limit = this->SummedGenerators->GetDataType() == VTK_FLOAT
+      ? static_cast<double>(std::numeric_limits<float>::max())
+      : std::numeric_limits<double>::max();
+    const auto saturated = [limit](double value)
+    { return std::isnan(value) ? 0.0 : std::max(-limit, std::min(limit, value)); };
+    for (std::vector<double>* values : { &a, &b, &phi })
+    {
+      std::transform(values->begin(), values->end(), values->begin(), saturated);
+    }
     for (vtkIdType id = begin; id < end; ++id)
     {
       const std::size_t i = static_cast<std::size_t>(id - begin);
-      const double difference[3] = { a[3 * i] - b[3 * i], a[3 * i + 1] - b[3 * i + 1],
-        a[3 * i + 2] - b[3 * i + 2] };
+      const double difference[3] = { saturated(a[3 * i] - b[3 * i]),
+        saturated(a[3 * i + 1] - b[3 * i + 1]), saturated(a[3 * i + 2] - b[3 * i + 2]) };
       this->SummedGenerators->SetTuple(id, &a[3 * i]);
       this->SummedDisplacements->SetTuple(id, &b[3 * i]);
       this->Difference->SetTuple(id, difference);
       this->DifferenceMagnitude->SetTuple1(
-        id, cga::norm({ difference[0], difference[1], difference[2] })); // no spurious overflow
+        id, saturated(cga::norm({ difference[0], difference[1], difference[2] })));
       this->Potential->SetTuple1(id, phi[i]);
     }
   }
@@ -103,8 +116,9 @@ struct FieldFunctor
 } // namespace
 
 vtkDipoleFieldSource::vtkDipoleFieldSource()
-  : Generators(new vtkBoostedRowList(this, "Generator", std::vector<double>(7, 0.0)))
+  : Generators(new vtkBoostedRowList(this, "Generator", vtkBoostedGeneratorRows::BlankRow()))
 {
+  static_assert(vtkBoostedGeneratorKinds<vtkDipoleFieldSource>(), "");
   this->SetNumberOfInputPorts(0);
   this->AddGenerator(0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.5);
 }
@@ -114,13 +128,25 @@ vtkDipoleFieldSource::~vtkDipoleFieldSource() = default;
 int vtkDipoleFieldSource::AddGenerator(
   double x, double y, double z, double dx, double dy, double dz, double weight)
 {
-  return this->Generators->Add({ x, y, z, dx, dy, dz, weight });
+  return this->AddGenerator(x, y, z, dx, dy, dz, weight, POINT_PAIR, 0.0);
+}
+
+int vtkDipoleFieldSource::AddGenerator(double x, double y, double z, double dx, double dy,
+  double dz, double weight, double kind, double pitch)
+{
+  return this->Generators->Add({ x, y, z, dx, dy, dz, weight, kind, pitch });
 }
 
 void vtkDipoleFieldSource::SetGenerator(
   int index, double x, double y, double z, double dx, double dy, double dz, double weight)
 {
-  this->Generators->Set(index, { x, y, z, dx, dy, dz, weight });
+  this->SetGenerator(index, x, y, z, dx, dy, dz, weight, POINT_PAIR, 0.0);
+}
+
+void vtkDipoleFieldSource::SetGenerator(int index, double x, double y, double z, double dx,
+  double dy, double dz, double weight, double kind, double pitch)
+{
+  this->Generators->Set(index, { x, y, z, dx, dy, dz, weight, kind, pitch });
 }
 
 vtkBoostedRowListMethods(vtkDipoleFieldSource, Generator, Generators)
@@ -172,6 +198,13 @@ std::string vtkDipoleFieldSource::Validate() const
         message << "generator " << i << " has a value that is not finite";
         return message.str();
       }
+    }
+    cga::GeneratorKind kind;
+    std::string problem;
+    if (!vtkBoostedGeneratorRows::ReadKind(this->Generators->Row(i)[vtkBoostedGeneratorRows::KindValue],
+          "generator row " + std::to_string(i), kind, problem))
+    {
+      return problem;
     }
   }
   return {};
@@ -271,15 +304,18 @@ int vtkDipoleFieldSource::RequestData(
     output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), t);
   }
 
-  std::vector<cga::PointPairGenerator> generators;
+  // The rows were validated (finite values, known kinds) by Validate().
+  std::vector<cga::GeneratorParameters> generators(this->GetNumberOfGenerators());
   for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
   {
     const double* g = this->Generators->Row(i);
     const double* t = this->GeneratorsTranslation;
-    generators.push_back({ { g[0] + t[0], g[1] + t[1], g[2] + t[2] }, { g[3], g[4], g[5] }, g[6] });
+    const double location[3] = { g[0] + t[0], g[1] + t[1], g[2] + t[2] };
+    std::string problem;
+    vtkBoostedGeneratorRows::Read(g, location, i, generators[i], problem);
   }
-  const cga::DipoleField field(generators, this->Falloff, this->Epsilon,
-    vtkBoostedExponentialRule<vtkDipoleFieldSource>(this->ExponentialRule));
+  const cga::DipoleField field(generators.data(), generators.size(), this->Falloff,
+    this->Epsilon, vtkBoostedExponentialRule<vtkDipoleFieldSource>(this->ExponentialRule));
 
   const vtkIdType n = output->GetNumberOfPoints();
   const int precision = this->OutputPointsPrecision;
