@@ -5,6 +5,7 @@
 #include "vtkBoostedBlockLoop.h"
 #include "vtkBoostedExponentialRule.h"
 #include "vtkBoostedMemoryBudget.h"
+#include "vtkBoostedTimeSweep.h"
 #include "vtkBoostedRowList.h"
 #include "vtkBoostedSurfacesAbort.h"
 #include "vtkCellData.h"
@@ -354,6 +355,18 @@ int vtkPointPairDeformationFilter::RequestDataObject(
   return this->Superclass::RequestDataObject(request, inputVector, outputVector);
 }
 
+int vtkPointPairDeformationFilter::ExecuteInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  // Without time steps of its own the filter keeps its input's (the executive copied them).
+  if (this->NumberOfTimeSteps > 0)
+  {
+    vtkBoostedTimeSweep::ReportTimeSteps(
+      outputVector->GetInformationObject(0), this->NumberOfTimeSteps);
+  }
+  return 1;
+}
+
 int vtkPointPairDeformationFilter::ComputeInputUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
@@ -434,15 +447,20 @@ int vtkPointPairDeformationFilter::RequestData(
     vtkErrorMacro(<< memoryProblem);
     return 1; // the output stays empty
   }
-  if (!vtkBoostedMemoryBudget::Run(this, [&] { this->Deform(input, field, output); }))
+  // The time sweep grows Strength from 0 (the identity) to its value.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const double strength =
+    this->Strength * vtkBoostedTimeSweep::Fraction(outInfo, this->NumberOfTimeSteps);
+  if (!vtkBoostedMemoryBudget::Run(this, [&] { this->Deform(input, field, strength, output); }))
   {
     output->Initialize(); // no half-built output
   }
+  vtkBoostedTimeSweep::StampTime(outInfo, this->NumberOfTimeSteps, output);
   return 1;
 }
 
 void vtkPointPairDeformationFilter::Deform(
-  vtkDataSet* input, const cga::PointPairField& field, vtkPointSet* output)
+  vtkDataSet* input, const cga::PointPairField& field, double strength, vtkPointSet* output)
 {
   // Same topology, cells and arrays; normals would be wrong after the warp, so they are dropped.
   vtkSmartPointer<vtkPointSet> source = asPointSet(input);
@@ -481,7 +499,7 @@ void vtkPointPairDeformationFilter::Deform(
     vtkBoostedExponentialRule<vtkPointPairDeformationFilter>(this->ExponentialRule);
   vtkIdType unchanged = 0, nonFiniteInputs = 0;
   (outputType == VTK_FLOAT ? deformPoints<float> : deformPoints<double>)(this, field,
-    inPoints->GetData(), outPoints->GetData(), displacement, this->Strength, rule, unchanged,
+    inPoints->GetData(), outPoints->GetData(), displacement, strength, rule, unchanged,
     nonFiniteInputs);
   if (vtkBoostedSurfacesCheckAbort(this))
   {
@@ -512,6 +530,7 @@ void vtkPointPairDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
      << (this->GeneratorWeightArrayName ? this->GeneratorWeightArrayName : "(none)") << "\n";
   os << indent << "UseGeneratorWeightArray: " << this->UseGeneratorWeightArray << "\n";
   os << indent << "Strength: " << this->Strength << "\n";
+  os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
   os << indent << "Falloff: " << this->Falloff << "\n";
   os << indent << "Epsilon: " << this->Epsilon << "\n";
   os << indent << "ExponentialRule: " << (this->ExponentialRule == PAPER ? "PAPER" : "EXACT")
