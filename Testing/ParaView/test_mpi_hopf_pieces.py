@@ -53,7 +53,15 @@ for mode in ("Paper", "Classical"):
             # mesh bands repeat their shared row: every point of one process appears, and only those
             wanted = {p for points in expected.values() for p in points}
             have = {p for points in got.values() for p in points}
-            if wanted != have:
+            if extra:
+                # merged: a strip's closing fiber on another rank than its first keeps its
+                # points (theta0 + 2 pi), equal to the first fiber's to round-off only
+                extra_points = have - wanted
+                if not wanted <= have or any(
+                        min(max(abs(a - b) for a, b in zip(p, q)) for q in wanted) > 1e-9
+                        for p in extra_points):
+                    failures.append("%s: the mesh points differ" % label)
+            elif wanted != have:
                 failures.append("%s: the mesh points differ" % label)
 
 common.report(failures, "Hopf Fibration over MPI ranks")

@@ -69,13 +69,10 @@ def play(label, factory, parameters, start, array=None, make_input=None):
     scene = simple.GetAnimationScene()
     scene.UpdateAnimationUsingDataTimeSteps()
     frames = []
-    scene.GoToFirst()
-    while True:
+    for time in times:  # each frame of the animation, as the VCR's Next gives them
+        scene.AnimationTime = time
         simple.Render(view)  # the representation updates the proxy at the scene's time
-        frames.append((scene.AnimationTime, output_copy(proxy)))
-        if scene.AnimationTime >= times[-1]:
-            break
-        scene.GoToNext()
+        frames.append((time, output_copy(proxy)))
     if len(frames) != STEPS:
         failures.append("%s: %d frames played, expected %d" % (label, len(frames), STEPS))
     first = static_output(factory, dict(parameters, **dict(start, **extra)))
