@@ -18,6 +18,53 @@
 #include <cmath>
 #include <limits>
 
+namespace
+{
+// Merged rows can leave points no cell uses (a pole between two poles, a row that repeats its
+// neighbour through infinity): they are dropped, so that an export (STL keeps only what its
+// triangles use) keeps every point.
+void dropUnusedPoints(vtkPolyData* mesh)
+{
+  const vtkIdType count = mesh->GetNumberOfPoints();
+  vtkDataArray* connectivity = mesh->GetPolys()->GetConnectivityArray();
+  std::vector<vtkIdType> newIds(count, -1);
+  for (vtkIdType k = 0; k < connectivity->GetNumberOfValues(); ++k)
+  {
+    newIds[static_cast<vtkIdType>(connectivity->GetComponent(k, 0))] = 0;
+  }
+  vtkIdType used = 0;
+  for (vtkIdType& id : newIds)
+  {
+    id = id < 0 ? -1 : used++;
+  }
+  if (used == count)
+  {
+    return;
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataType(mesh->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(used);
+  vtkNew<vtkPointData> data;
+  data->CopyAllocate(mesh->GetPointData(), used);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    if (newIds[i] >= 0)
+    {
+      points->SetPoint(newIds[i], mesh->GetPoint(i));
+      data->CopyData(mesh->GetPointData(), i, newIds[i]);
+    }
+  }
+  for (vtkIdType k = 0; k < connectivity->GetNumberOfValues(); ++k)
+  {
+    connectivity->SetComponent(
+      k, 0, static_cast<double>(newIds[static_cast<vtkIdType>(connectivity->GetComponent(k, 0))]));
+  }
+  mesh->GetPolys()->Modified();
+  mesh->SetPoints(points);
+  mesh->GetPointData()->ShallowCopy(data);
+}
+} // namespace
+
 vtkBoostedGridBuilder::vtkBoostedGridBuilder(int rows, int columns, bool periodicColumns)
   : Rows(rows)
   , Columns(columns)
@@ -291,6 +338,10 @@ void vtkBoostedGridBuilder::BuildSurface(
     }
   }
   output->SetPolys(quads);
+  if (this->MergeSeam)
+  {
+    dropUnusedPoints(output);
+  }
 }
 
 void vtkBoostedGridBuilder::FindMergedRows(

@@ -16,7 +16,8 @@
  * the repeated seam column of periodic columns is column 0; a row that repeats the row before it
  * in its block, or the block's first row (a strip closed over a full turn), is that row; a row
  * whose samples all coincide (a pole) is one point. Quads that then use a point twice become
- * triangles, and those with fewer than three distinct points are left out. "Repeats" and
+ * triangles, those with fewer than three distinct points are left out, and so are the points
+ * no cell then uses. "Repeats" and
  * "coincide" are geometric (within 1e-9 of the rows' size), so no source has to declare them.
  * Only the piece's own rows are merged: a piece boundary is not a seam (a strip's closing row
  * whose first row is on another piece keeps its points). Merged points have one texture

@@ -180,7 +180,7 @@ public:
   /// TWISTOR_MESH only: the mesh shares the points of its closed directions instead of repeating
   /// them (vtkBoostedGridBuilder::SetMergeSeam): each fiber's seam, a latitude strip's closing
   /// fiber over a full turn of ThetaRange, and a strip's repeated fibers (a latitude strip at a
-  /// pole, where every fiber is the same, has no area and no cells), so Latitudes tori come out
+  /// pole, where every fiber is the same, has no area: no cells, no points), so Latitudes tori come out
   /// closed and manifold (watertight exports). TextureCoordinates are then left out. Default off.
   vtkSetMacro(MergeSeam, bool);
   vtkGetMacro(MergeSeam, bool);
