@@ -98,6 +98,24 @@ class TimeSweeps(unittest.TestCase):
             return deformation
         self.check(make, lambda f: f.SetStrength(0.0))
 
+    def test_the_filter_keeps_its_inputs_time_steps_unless_it_has_its_own(self):
+        source = vtkBoostedSurfaceSource()
+        source.SetNumberOfTimeSteps(3)
+        deformation = vtkPointPairDeformationFilter()
+        deformation.SetInputConnection(source.GetOutputPort())
+        key = vtkStreamingDemandDrivenPipeline.TIME_STEPS()
+        for steps, expected in ((0, 3), (5, 5)):
+            deformation.SetNumberOfTimeSteps(steps)
+            deformation.UpdateInformation()
+            self.assertEqual(deformation.GetOutputInformation(0).Length(key), expected)
+        # its time reaches the input too: at t = 0 the input is the first circle, undeformed
+        deformation.AddGenerator(0, 0, 0.7, 0, 0, 1, 0.5)
+        deformation.UpdateTimeStep(0.0)
+        first = vtkBoostedSurfaceSource()
+        first.SetLambdaRange(0.0, 0.0)
+        first.Update()
+        self.assertEqual(points(deformation.GetOutput()), points(first.GetOutput()))
+
 
 class MergedSeams(unittest.TestCase):
     def test_hopf_tori_are_closed(self):
