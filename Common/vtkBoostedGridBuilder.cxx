@@ -14,8 +14,56 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+
+namespace
+{
+// Merged rows can leave points no cell uses (a pole between two poles, a row that repeats its
+// neighbour through infinity): they are dropped, so that an export (STL keeps only what its
+// triangles use) keeps every point.
+void dropUnusedPoints(vtkPolyData* mesh)
+{
+  const vtkIdType count = mesh->GetNumberOfPoints();
+  vtkDataArray* connectivity = mesh->GetPolys()->GetConnectivityArray();
+  std::vector<vtkIdType> newIds(count, -1);
+  for (vtkIdType k = 0; k < connectivity->GetNumberOfValues(); ++k)
+  {
+    newIds[static_cast<vtkIdType>(connectivity->GetComponent(k, 0))] = 0;
+  }
+  vtkIdType used = 0;
+  for (vtkIdType& id : newIds)
+  {
+    id = id < 0 ? -1 : used++;
+  }
+  if (used == count)
+  {
+    return;
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataType(mesh->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(used);
+  vtkNew<vtkPointData> data;
+  data->CopyAllocate(mesh->GetPointData(), used);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    if (newIds[i] >= 0)
+    {
+      points->SetPoint(newIds[i], mesh->GetPoint(i));
+      data->CopyData(mesh->GetPointData(), i, newIds[i]);
+    }
+  }
+  for (vtkIdType k = 0; k < connectivity->GetNumberOfValues(); ++k)
+  {
+    connectivity->SetComponent(
+      k, 0, static_cast<double>(newIds[static_cast<vtkIdType>(connectivity->GetComponent(k, 0))]));
+  }
+  mesh->GetPolys()->Modified();
+  mesh->SetPoints(points);
+  mesh->GetPointData()->ShallowCopy(data);
+}
+} // namespace
 
 vtkBoostedGridBuilder::vtkBoostedGridBuilder(int rows, int columns, bool periodicColumns)
   : Rows(rows)
@@ -158,6 +206,15 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
     parameters.push_back(array);
   }
 
+  // Curves never repeat the seam (see below), so only surfaces merge.
+  const bool merge = this->MergeSeam && withSurfaceAttributes;
+  const bool withTCoords = withSurfaceAttributes && !merge;
+  std::vector<int> sameAs;
+  std::vector<char> pole;
+  if (merge)
+  {
+    this->FindMergedRows(firstRow, lastRow, sameAs, pole);
+  }
   const double uScale = this->Columns > 1 ? 1.0 / (this->Columns - 1) : 0.0;
   const double vScale = this->BlockRows() > 1 ? 1.0 / (this->BlockRows() - 1) : 0.0;
   // Curves need no texture seam: the repeated last column of periodic grids is left out.
@@ -165,18 +222,44 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
     (this->PeriodicColumns && !withSurfaceAttributes) ? this->Columns - 1 : this->Columns;
   for (int r = firstRow; r <= lastRow; ++r)
   {
+    if (merge && sameAs[r - firstRow] != r)
+    {
+      for (int c = 0; c < columns; ++c)
+      {
+        ids[this->Index(r, c)] = ids[this->Index(sameAs[r - firstRow], c)];
+      }
+      continue;
+    }
+    long long poleId = -1;
     for (int c = 0; c < columns; ++c)
     {
       if (!this->Usable(r, c))
       {
         continue;
       }
+      if (merge && this->PeriodicColumns && c == this->Columns - 1)
+      {
+        ids[this->Index(r, c)] = ids[this->Index(r, 0)];
+        continue;
+      }
+      if (poleId >= 0)
+      {
+        ids[this->Index(r, c)] = poleId;
+        continue;
+      }
       ids[this->Index(r, c)] = points->InsertNextPoint(&this->Points[3 * this->Index(r, c)]);
+      if (merge && pole[r - firstRow])
+      {
+        poleId = ids[this->Index(r, c)];
+      }
       if (withSurfaceAttributes)
       {
         double n[3];
         this->ComputeNormal(r, c, n);
         normals->InsertNextTuple(n);
+      }
+      if (withTCoords)
+      {
         const double uv[2] = { c * uScale, (r % this->BlockRows()) * vScale };
         tcoords->InsertNextTuple(uv);
       }
@@ -197,6 +280,9 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
   if (withSurfaceAttributes)
   {
     output->GetPointData()->SetNormals(normals);
+  }
+  if (withTCoords)
+  {
     output->GetPointData()->SetTCoords(tcoords);
   }
   for (auto& array : parameters)
@@ -226,13 +312,128 @@ void vtkBoostedGridBuilder::BuildSurface(
     {
       const vtkIdType quad[4] = { ids[this->Index(r, c)], ids[this->Index(r, c + 1)],
         ids[this->Index(r + 1, c + 1)], ids[this->Index(r + 1, c)] };
-      if (quad[0] >= 0 && quad[1] >= 0 && quad[2] >= 0 && quad[3] >= 0)
+      if (quad[0] < 0 || quad[1] < 0 || quad[2] < 0 || quad[3] < 0)
       {
-        quads->InsertNextCell(4, quad);
+        continue;
+      }
+      // Merged points: a quad with a point twice is a triangle, one with fewer than three a
+      // degenerate cell that is left out (without merging all four are distinct).
+      vtkIdType cell[4];
+      vtkIdType size = 0;
+      for (int k = 0; k < 4; ++k)
+      {
+        if (size == 0 || cell[size - 1] != quad[k])
+        {
+          cell[size++] = quad[k];
+        }
+      }
+      while (size > 1 && cell[size - 1] == cell[0])
+      {
+        --size;
+      }
+      if ((size == 4 && cell[0] != cell[2] && cell[1] != cell[3]) || size == 3)
+      {
+        quads->InsertNextCell(size, cell);
       }
     }
   }
   output->SetPolys(quads);
+  if (this->MergeSeam)
+  {
+    dropUnusedPoints(output);
+  }
+}
+
+void vtkBoostedGridBuilder::FindMergedRows(
+  int firstRow, int lastRow, std::vector<int>& sameAs, std::vector<char>& pole) const
+{
+  // Two samples coincide within 1e-9 of the rows' bounding box (and at least within the
+  // round-off of their coordinates): far below any grid step (resolutions are at most 1e5), far
+  // above the round-off by which a sweep's last sample misses its first (2 pi = 0 up to ulps).
+  double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  double largest = 0.0;
+  for (int r = firstRow; r <= lastRow; ++r)
+  {
+    for (int c = 0; c < this->Columns; ++c)
+    {
+      if (this->Usable(r, c))
+      {
+        const double* p = &this->Points[3 * this->Index(r, c)];
+        for (int i = 0; i < 3; ++i)
+        {
+          lo[i] = std::min(lo[i], p[i]);
+          hi[i] = std::max(hi[i], p[i]);
+          largest = std::max(largest, std::abs(p[i]));
+        }
+      }
+    }
+  }
+  double diagonal = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    diagonal = std::max(diagonal, hi[i] - lo[i]);
+  }
+  const double tolerance = std::max(1e-9 * diagonal, 1e-13 * largest);
+  auto coincide = [&](int r0, int c0, int r1, int c1) {
+    const bool u0 = this->Usable(r0, c0), u1 = this->Usable(r1, c1);
+    if (!u0 || !u1)
+    {
+      return !u0 && !u1;
+    }
+    const double* a = &this->Points[3 * this->Index(r0, c0)];
+    const double* b = &this->Points[3 * this->Index(r1, c1)];
+    for (int i = 0; i < 3; ++i)
+    {
+      if (!(std::abs(a[i] - b[i]) <= tolerance))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  auto sameRow = [&](int a, int b) {
+    for (int c = 0; c < this->Columns; ++c)
+    {
+      if (!coincide(a, c, b, c))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+
+  const int count = lastRow - firstRow + 1;
+  sameAs.assign(count, 0);
+  pole.assign(count, 0);
+  for (int r = firstRow; r <= lastRow; ++r)
+  {
+    const int i = r - firstRow;
+    sameAs[i] = r;
+    const int blockFirst = r - r % this->BlockRows();
+    const bool blockLast = r + 1 == this->Rows || !this->SameBlock(r, r + 1);
+    if (r > firstRow && this->SameBlock(r - 1, r) && sameRow(r - 1, r))
+    {
+      sameAs[i] = sameAs[i - 1]; // a repeated row: its quads are degenerate and left out
+      continue;
+    }
+    if (blockLast && blockFirst >= firstRow && blockFirst < r && sameRow(blockFirst, r))
+    {
+      sameAs[i] = sameAs[blockFirst - firstRow]; // the strip closes on its first row
+      continue;
+    }
+    int first = -1;
+    bool collapsed = true;
+    for (int c = 0; c < this->Columns && collapsed; ++c)
+    {
+      if (this->Usable(r, c))
+      {
+        first = first < 0 ? c : first;
+        collapsed = coincide(r, first, r, c);
+      }
+    }
+    pole[i] = collapsed && first >= 0;
+  }
 }
 
 void vtkBoostedGridBuilder::BuildCurves(

@@ -10,6 +10,18 @@
  * unusable sample are left out, so the surface is cut there rather than stretched to infinity.
  * Only the points that are used are written. The cut at a clip sphere is vtkBoostedSphereClip's,
  * applied to this class's output (vtkBoostedGridDriver does both).
+ *
+ * Merged seams (SetMergeSeam): the grid's closed directions share their points instead of
+ * repeating them, so that a closed surface comes out closed and manifold (watertight exports):
+ * the repeated seam column of periodic columns is column 0; a row that repeats the row before it
+ * in its block, or the block's first row (a strip closed over a full turn), is that row; a row
+ * whose samples all coincide (a pole) is one point. Quads that then use a point twice become
+ * triangles, those with fewer than three distinct points are left out, and so are the points
+ * no cell then uses. "Repeats" and
+ * "coincide" are geometric (within 1e-9 of the rows' size), so no source has to declare them.
+ * Only the piece's own rows are merged: a piece boundary is not a seam (a strip's closing row
+ * whose first row is on another piece keeps its points). Merged points have one texture
+ * coordinate for two (u = 0 and 1), so TextureCoordinates are left out.
  */
 #ifndef vtkBoostedGridBuilder_h
 #define vtkBoostedGridBuilder_h
@@ -41,6 +53,9 @@ public:
   void BuildSurface(vtkPolyData* output, int firstRow, int lastRow, int outputPointsPrecision) const;
   /// One polyline per row in [firstRow, lastRow], split where samples are unusable.
   void BuildCurves(vtkPolyData* output, int firstRow, int lastRow, int outputPointsPrecision) const;
+
+  /// Merge the seam, closed strips and poles (see the class description). Default off.
+  void SetMergeSeam(bool mergeSeam) { this->MergeSeam = mergeSeam; }
 
   /// Splits the rows into consecutive blocks of `rowsPerBlock` rows, each its own strip: no quad
   /// and no normal difference crosses from one block to the next, and the texture coordinate v
@@ -76,9 +91,15 @@ private:
   std::vector<long long> WritePoints(
     vtkPolyData* output, int firstRow, int lastRow, int precision, bool withSurfaceAttributes) const;
 
+  /// With MergeSeam: for each row of [firstRow, lastRow], the row whose points it reuses (itself
+  /// when none), and whether the row is a pole (one point).
+  void FindMergedRows(int firstRow, int lastRow, std::vector<int>& sameAs,
+    std::vector<char>& pole) const;
+
   int Rows;
   int Columns;
   bool PeriodicColumns;
+  bool MergeSeam = false;
   std::vector<double> Points;
   std::vector<double> FallbackNormals;
   std::vector<Parameter> Parameters;

@@ -93,6 +93,7 @@ bool vtkBoostedGridDriver::Prepare(const std::string& sourceProblem, long long r
   {
     this->Builder->SetRowsPerBlock(rowsPerStrip);
   }
+  this->Builder->SetMergeSeam(this->MergeSeam);
   return true;
 }
 

@@ -46,6 +46,9 @@ public:
   /// the whole grid), for Prepare's estimate; each source measures its own. 0: no estimate.
   void SetBytesPerSample(double bytesPerSample) { this->BytesPerSample = bytesPerSample; }
 
+  /// Surfaces share the points of their closed directions (vtkBoostedGridBuilder::SetMergeSeam).
+  void SetMergeSeam(bool mergeSeam) { this->MergeSeam = mergeSeam; }
+
   /// The size checks of Prepare, for a source that must know them before it can count its rows
   /// exactly (Hopf samples its base points first): a grid beyond
   /// vtkBoostedGridBuilder::MaximumSamples, or rows x columns x bytesPerSample beyond the memory
@@ -91,6 +94,7 @@ private:
   int SampleFirst = 0, SampleLast = -1; // with the halo
   bool Aborted = false;
   double BytesPerSample = 0.0;
+  bool MergeSeam = false;
 };
 
 #endif

@@ -6,6 +6,7 @@
 #include "vtkBoostedExponentialRule.h"
 #include "vtkBoostedGeneratorRows.h"
 #include "vtkBoostedMemoryBudget.h"
+#include "vtkBoostedTimeSweep.h"
 #include "vtkBoostedRowList.h"
 #include "vtkBoostedSurfacesAbort.h"
 #include "vtkCellData.h"
@@ -422,6 +423,18 @@ int vtkPointPairDeformationFilter::RequestDataObject(
   return this->Superclass::RequestDataObject(request, inputVector, outputVector);
 }
 
+int vtkPointPairDeformationFilter::ExecuteInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  // Without time steps of its own the filter keeps its input's (the executive copied them).
+  if (this->NumberOfTimeSteps > 0)
+  {
+    vtkBoostedTimeSweep::ReportTimeSteps(
+      outputVector->GetInformationObject(0), this->NumberOfTimeSteps);
+  }
+  return 1;
+}
+
 int vtkPointPairDeformationFilter::ComputeInputUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
@@ -508,15 +521,20 @@ int vtkPointPairDeformationFilter::RequestData(
     vtkErrorMacro(<< memoryProblem);
     return 1; // the output stays empty
   }
-  if (!vtkBoostedMemoryBudget::Run(this, [&] { this->Deform(input, field, output); }))
+  // The time sweep grows Strength from 0 (the identity) to its value.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const double strength =
+    this->Strength * vtkBoostedTimeSweep::Fraction(outInfo, this->NumberOfTimeSteps);
+  if (!vtkBoostedMemoryBudget::Run(this, [&] { this->Deform(input, field, strength, output); }))
   {
     output->Initialize(); // no half-built output
   }
+  vtkBoostedTimeSweep::StampTime(outInfo, this->NumberOfTimeSteps, output);
   return 1;
 }
 
 void vtkPointPairDeformationFilter::Deform(
-  vtkDataSet* input, const cga::PointPairField& field, vtkPointSet* output)
+  vtkDataSet* input, const cga::PointPairField& field, double strength, vtkPointSet* output)
 {
   // Same topology, cells and arrays; normals would be wrong after the warp, so they are dropped.
   vtkSmartPointer<vtkPointSet> source = asPointSet(input);
@@ -555,7 +573,7 @@ void vtkPointPairDeformationFilter::Deform(
     vtkBoostedExponentialRule<vtkPointPairDeformationFilter>(this->ExponentialRule);
   vtkIdType unchanged = 0, nonFiniteInputs = 0;
   (outputType == VTK_FLOAT ? deformPoints<float> : deformPoints<double>)(this, field,
-    inPoints->GetData(), outPoints->GetData(), displacement, this->Strength, rule, unchanged,
+    inPoints->GetData(), outPoints->GetData(), displacement, strength, rule, unchanged,
     nonFiniteInputs);
   if (vtkBoostedSurfacesCheckAbort(this))
   {
@@ -590,6 +608,7 @@ void vtkPointPairDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
      << (this->GeneratorPitchArrayName ? this->GeneratorPitchArrayName : "(none)") << "\n";
   os << indent << "UseGeneratorWeightArray: " << this->UseGeneratorWeightArray << "\n";
   os << indent << "Strength: " << this->Strength << "\n";
+  os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
   os << indent << "Falloff: " << this->Falloff << "\n";
   os << indent << "Epsilon: " << this->Epsilon << "\n";
   os << indent << "ExponentialRule: " << (this->ExponentialRule == PAPER ? "PAPER" : "EXACT")

@@ -151,6 +151,15 @@ public:
   ///@}
 
   ///@{
+  /// 0 (default): no time. N >= 1: the filter reports N time steps t in [0, 1]
+  /// (vtkBoostedTimeSweep), replacing its input's, and at time t deforms with t Strength, so the
+  /// deformation grows from the identity to Strength as an animation plays (the time requested
+  /// upstream is then t too: a time-dependent input sees the same t).
+  vtkSetClampMacro(NumberOfTimeSteps, int, 0, 100000);
+  vtkGetMacro(NumberOfTimeSteps, int);
+  ///@}
+
+  ///@{
   /// k of the weighting w / (k |p - x|^2 + eps). Default 1; k = 0 makes B the same everywhere.
   vtkSetClampMacro(Falloff, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Falloff, double);
@@ -184,6 +193,7 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int ExecuteInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int ComputeInputUpdateExtent(
     vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -201,11 +211,13 @@ protected:
   double Epsilon = 0.01;
   int ExponentialRule = EXACT;
   int OutputPointsPrecision = DEFAULT_PRECISION;
+  int NumberOfTimeSteps = 0;
 
 private:
   /// RequestData's allocating part, after the validation and the memory estimate: the explicit
   /// copy of an image or rectilinear grid, the output points and Displacement, the deformation.
-  void Deform(vtkDataSet* input, const cga::PointPairField& field, vtkPointSet* output);
+  void Deform(
+    vtkDataSet* input, const cga::PointPairField& field, double strength, vtkPointSet* output);
 
   vtkPointPairDeformationFilter(const vtkPointPairDeformationFilter&) = delete;
   void operator=(const vtkPointPairDeformationFilter&) = delete;

@@ -1,6 +1,7 @@
 #include "vtkBoostedSurfaceSource.h"
 
 #include "vtkBoostedGridDriver.h"
+#include "vtkBoostedTimeSweep.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
@@ -26,6 +27,8 @@ int vtkBoostedSurfaceSource::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   outputVector->GetInformationObject(0)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
+  vtkBoostedTimeSweep::ReportTimeSteps(
+    outputVector->GetInformationObject(0), this->NumberOfTimeSteps);
   return 1;
 }
 
@@ -50,9 +53,13 @@ int vtkBoostedSurfaceSource::RequestData(
   {
     problem = "LambdaRange must be finite";
   }
+  // The time sweep moves the range's upper end from its lower end to its value.
+  const double lambdaRange[2] = { this->LambdaRange[0],
+    vtkBoostedTimeSweep::Interpolate(this->LambdaRange[0], this->LambdaRange[1],
+      vtkBoostedTimeSweep::Fraction(outInfo, this->NumberOfTimeSteps)) };
   if (problem.empty())
   {
-    problem = family.boostProblem(this->LambdaRange[0], this->LambdaRange[1]);
+    problem = family.boostProblem(lambdaRange[0], lambdaRange[1]);
   }
   const long long rows = this->LambdaResolution + 1LL;
   const long long columns = this->ThetaResolution + 1LL; // the last column repeats the first (seam)
@@ -62,6 +69,7 @@ int vtkBoostedSurfaceSource::RequestData(
   // resident memory of a 2000 x 2000 grid, double precision, measured once (132 and 80 bytes;
   // 12 GB at the 1e8-sample cap for the surface in issue 15).
   driver.SetBytesPerSample(this->OutputType == SURFACE ? 132 : 80);
+  driver.SetMergeSeam(this->MergeSeam);
   if (!driver.Prepare(problem, rows, columns, true, this->OutputType == SURFACE))
   {
     return 1; // an error, or an empty piece
@@ -71,7 +79,7 @@ int vtkBoostedSurfaceSource::RequestData(
   for (int r = 0; r < rows; ++r)
   {
     const double t = rows > 1 ? static_cast<double>(r) / (rows - 1) : 0.0;
-    lambdas[r] = (1.0 - t) * this->LambdaRange[0] + t * this->LambdaRange[1];
+    lambdas[r] = (1.0 - t) * lambdaRange[0] + t * lambdaRange[1];
   }
   std::vector<cga::Vec3> circlePoints(columns);
   for (int c = 0; c < columns; ++c)
@@ -101,6 +109,7 @@ int vtkBoostedSurfaceSource::RequestData(
   grid.AddRowParameter("lambda", lambdas);
   grid.AddColumnParameter("theta", thetas);
   driver.Build(vtkPolyData::GetData(outInfo));
+  vtkBoostedTimeSweep::StampTime(outInfo, this->NumberOfTimeSteps, vtkPolyData::GetData(outInfo));
   return 1;
 }
 
@@ -124,4 +133,6 @@ void vtkBoostedSurfaceSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ClipRadius: " << this->ClipRadius << "\n";
   os << indent << "OutputType: " << (this->OutputType == SURFACE ? "SURFACE" : "CIRCLES") << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
+  os << indent << "MergeSeam: " << this->MergeSeam << "\n";
+  os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
 }

@@ -104,6 +104,23 @@ public:
   ///@}
 
   ///@{
+  /// SURFACE only: the seam column shares the points of the first column instead of repeating
+  /// them, so the surface is closed around the circle and manifold (watertight exports); the
+  /// TextureCoordinates are then left out (a seam point would need u = 0 and 1). Default off.
+  vtkSetMacro(MergeSeam, bool);
+  vtkGetMacro(MergeSeam, bool);
+  vtkBooleanMacro(MergeSeam, bool);
+  ///@}
+
+  ///@{
+  /// 0 (default): no time. N >= 1: N time steps t in [0, 1] (vtkBoostedTimeSweep); at time t the
+  /// swept range is [LambdaRange[0], LambdaRange[0] + t (LambdaRange[1] - LambdaRange[0])], so the
+  /// surface grows from its first circle to the whole LambdaRange as an animation plays.
+  vtkSetClampMacro(NumberOfTimeSteps, int, 0, 100000);
+  vtkGetMacro(NumberOfTimeSteps, int);
+  ///@}
+
+  ///@{
   /// vtkAlgorithm::SINGLE_PRECISION or DOUBLE_PRECISION (default) for the output points.
   vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DOUBLE_PRECISION);
   vtkGetMacro(OutputPointsPrecision, int);
@@ -128,6 +145,8 @@ protected:
   double ClipRadius = 20.0;
   int OutputType = SURFACE;
   int OutputPointsPrecision = DOUBLE_PRECISION;
+  bool MergeSeam = false;
+  int NumberOfTimeSteps = 0;
 
 private:
   vtkBoostedSurfaceSource(const vtkBoostedSurfaceSource&) = delete;

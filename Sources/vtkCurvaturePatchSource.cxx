@@ -2,6 +2,7 @@
 
 #include "vtkBoostedExponentialRule.h"
 #include "vtkBoostedGridDriver.h"
+#include "vtkBoostedTimeSweep.h"
 #include "vtkBoostedMemoryBudget.h"
 #include "vtkBoostedRowList.h"
 #include "vtkInformation.h"
@@ -43,6 +44,8 @@ int vtkCurvaturePatchSource::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   outputVector->GetInformationObject(0)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
+  vtkBoostedTimeSweep::ReportTimeSteps(
+    outputVector->GetInformationObject(0), this->NumberOfTimeSteps);
   return 1;
 }
 
@@ -66,6 +69,10 @@ int vtkCurvaturePatchSource::RequestData(
     cga::presetCurvatures(
       static_cast<cga::CurvaturePreset>(this->CurvaturePreset - 1), patch.kappaU, patch.kappaV);
   }
+  // The time sweep scales every curvature from 0 (the flat plane) to its value.
+  const double scale = vtkBoostedTimeSweep::Fraction(outInfo, this->NumberOfTimeSteps);
+  patch.kappaU *= scale;
+  patch.kappaV *= scale;
   patch.falloff = this->Falloff;
   patch.epsilon = this->Epsilon;
   for (int i = 0; i < this->GetNumberOfControlPoints(); ++i)
@@ -74,13 +81,14 @@ int vtkCurvaturePatchSource::RequestData(
     const double* location = this->ControlPoints->Location(
       i, this->SelectedControlPoint, this->SelectedControlPointLocation);
     patch.controlPoints.push_back(
-      { cga::toVec3(location), { c[3], c[4], c[5] }, { c[6], c[7], c[8] }, c[9], c[10] });
+      { cga::toVec3(location), { c[3], c[4], c[5] }, { c[6], c[7], c[8] }, scale * c[9],
+        scale * c[10] });
   }
   const double* directions[4] = { this->Corner1Direction, this->Corner2Direction,
     this->Corner3Direction, this->Corner4Direction };
   for (int i = 0; i < 4; ++i)
   {
-    patch.corners[i] = { cga::toVec3(directions[i]), this->CornerWeights[i] };
+    patch.corners[i] = { cga::toVec3(directions[i]), scale * this->CornerWeights[i] };
   }
   const long long rows = patch.sizeV > 0.0 ? this->VResolution + 1LL : 1LL;
   const long long columns = this->UResolution + 1LL;
@@ -137,6 +145,7 @@ int vtkCurvaturePatchSource::RequestData(
   grid.AddRowParameter("v", vs);
   grid.AddPointParameter("GeneratorWeight", weights);
   driver.Build(vtkPolyData::GetData(outInfo));
+  vtkBoostedTimeSweep::StampTime(outInfo, this->NumberOfTimeSteps, vtkPolyData::GetData(outInfo));
   return 1;
 }
 
@@ -178,4 +187,5 @@ void vtkCurvaturePatchSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ClipRadius: " << this->ClipRadius << "\n";
   os << indent << "OutputType: " << (this->OutputType == SURFACE ? "SURFACE" : "LINES") << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
+  os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
 }

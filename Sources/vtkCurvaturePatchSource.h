@@ -198,6 +198,15 @@ public:
   ///@}
 
   ///@{
+  /// 0 (default): no time. N >= 1: N time steps t in [0, 1] (vtkBoostedTimeSweep); at time t
+  /// every curvature (KappaU, KappaV or the preset's, each control point's, the CornerWeights) is
+  /// multiplied by t, so the patch bends from the flat plane to its curvatures as an animation
+  /// plays.
+  vtkSetClampMacro(NumberOfTimeSteps, int, 0, 100000);
+  vtkGetMacro(NumberOfTimeSteps, int);
+  ///@}
+
+  ///@{
   /// vtkAlgorithm::SINGLE_PRECISION or DOUBLE_PRECISION (default) for the output points.
   vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DOUBLE_PRECISION);
   vtkGetMacro(OutputPointsPrecision, int);
@@ -234,6 +243,7 @@ protected:
   double ClipRadius = 100.0;
   int OutputType = SURFACE;
   int OutputPointsPrecision = DOUBLE_PRECISION;
+  int NumberOfTimeSteps = 0;
 
 private:
   vtkCurvaturePatchSource(const vtkCurvaturePatchSource&) = delete;

@@ -5,6 +5,7 @@
 #include "vtkBoostedGeneratorRows.h"
 #include "vtkBoostedMemoryBudget.h"
 #include "vtkBoostedRowList.h"
+#include "vtkBoostedTimeSweep.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -229,20 +230,7 @@ int vtkDipoleFieldSource::RequestInformation(
   vtkDataObject::SetPointDataActiveScalarInfo(
     outInfo, this->OutputPointsPrecision == SINGLE_PRECISION ? VTK_FLOAT : VTK_DOUBLE, 1);
 
-  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
-  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
-  if (this->NumberOfTimeSteps > 0)
-  {
-    std::vector<double> times(this->NumberOfTimeSteps, 1.0);
-    for (int k = 0; k + 1 < this->NumberOfTimeSteps; ++k)
-    {
-      times[k] = static_cast<double>(k) / (this->NumberOfTimeSteps - 1);
-    }
-    const double range[2] = { times.front(), times.back() };
-    outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(),
-      static_cast<int>(times.size()));
-    outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
-  }
+  vtkBoostedTimeSweep::ReportTimeSteps(outInfo, this->NumberOfTimeSteps);
   return 1;
 }
 
@@ -296,13 +284,9 @@ int vtkDipoleFieldSource::RequestData(
   output->SetOrigin(this->Origin);
   output->SetSpacing(this->Spacing);
 
-  double weightScale = 1.0;
-  if (this->NumberOfTimeSteps > 0 && outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
-  {
-    const double t = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-    weightScale = std::isfinite(t) ? std::min(1.0, std::max(0.0, t)) : 1.0;
-    output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), t);
-  }
+  // The time sweep grows the weights from 0 to their values.
+  const double weightScale = vtkBoostedTimeSweep::Fraction(outInfo, this->NumberOfTimeSteps);
+  vtkBoostedTimeSweep::StampTime(outInfo, this->NumberOfTimeSteps, output);
 
   // The rows were validated (finite values, known kinds) by Validate().
   std::vector<cga::GeneratorParameters> generators(this->GetNumberOfGenerators());

@@ -3,6 +3,7 @@
 #include "vtkBoostedGridDriver.h"
 #include "vtkBoostedMemoryBudget.h"
 #include "vtkBoostedRowList.h"
+#include "vtkBoostedTimeSweep.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
@@ -73,6 +74,8 @@ int vtkHopfFibrationSource::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   outputVector->GetInformationObject(0)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
+  vtkBoostedTimeSweep::ReportTimeSteps(
+    outputVector->GetInformationObject(0), this->NumberOfTimeSteps);
   return 1;
 }
 
@@ -104,7 +107,14 @@ int vtkHopfFibrationSource::RequestData(
   hopf.normal = cga::toVec3(this->CircleNormal);
   hopf.radius = this->CircleRadius;
   hopf.mode = this->Mode == CLASSICAL ? cga::HopfMode::Classical : cga::HopfMode::Paper;
-  const cga::HopfSampling sampling = this->Sampling(input);
+  cga::HopfSampling sampling = this->Sampling(input);
+  // The time sweep moves the latitudes' upper end from their lower end to its value (a range
+  // in the wrong order stays as it is, for its error).
+  if (sampling.phiRange[0] <= sampling.phiRange[1])
+  {
+    sampling.phiRange[1] = vtkBoostedTimeSweep::Interpolate(sampling.phiRange[0],
+      sampling.phiRange[1], vtkBoostedTimeSweep::Fraction(outInfo, this->NumberOfTimeSteps));
+  }
   const long long columns = this->FiberResolution + 1LL; // the last column repeats the first (seam)
   std::string problem = hopf.validate();
   if (problem.empty() && this->FiberResolution < 3)
@@ -149,6 +159,7 @@ int vtkHopfFibrationSource::RequestData(
   }
   vtkBoostedGridDriver driver(
     this, outInfo, this->CircleCenter, this->ClipRadius, this->OutputPointsPrecision);
+  driver.SetMergeSeam(this->MergeSeam);
   if (!driver.Prepare(problem, static_cast<long long>(base.size()), columns, true, mesh,
         mesh ? base.rowsPerStrip : 0))
   {
@@ -189,6 +200,7 @@ int vtkHopfFibrationSource::RequestData(
     grid.AddRowIntegerParameter("StripId", base.strip);
   }
   driver.Build(vtkPolyData::GetData(outInfo));
+  vtkBoostedTimeSweep::StampTime(outInfo, this->NumberOfTimeSteps, vtkPolyData::GetData(outInfo));
   return 1;
 }
 
@@ -243,4 +255,6 @@ void vtkHopfFibrationSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MeshSweep: " << (this->MeshSweep == MERIDIANS ? "MERIDIANS" : "LATITUDES")
      << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
+  os << indent << "MergeSeam: " << this->MergeSeam << "\n";
+  os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
 }

@@ -177,6 +177,27 @@ public:
   ///@}
 
   ///@{
+  /// TWISTOR_MESH only: the mesh shares the points of its closed directions instead of repeating
+  /// them (vtkBoostedGridBuilder::SetMergeSeam): each fiber's seam, a latitude strip's closing
+  /// fiber over a full turn of ThetaRange, and a strip's repeated fibers (a latitude strip at a
+  /// pole, where every fiber is the same, has no area: no cells, no points), so Latitudes tori come out
+  /// closed and manifold (watertight exports). TextureCoordinates are then left out. Default off.
+  vtkSetMacro(MergeSeam, bool);
+  vtkGetMacro(MergeSeam, bool);
+  vtkBooleanMacro(MergeSeam, bool);
+  ///@}
+
+  ///@{
+  /// 0 (default): no time. N >= 1: N time steps t in [0, 1] (vtkBoostedTimeSweep); with GRID
+  /// sampling the latitudes at time t are [PhiRange[0], PhiRange[0] + t (PhiRange[1] -
+  /// PhiRange[0])], so as an animation plays k = 1/2 + phi/pi grows and the last fiber
+  /// straightens from the circle C into the axis line (Fig 4) while a Meridians mesh grows
+  /// behind it. Base points and input points have no sweep: time leaves them unchanged.
+  vtkSetClampMacro(NumberOfTimeSteps, int, 0, 100000);
+  vtkGetMacro(NumberOfTimeSteps, int);
+  ///@}
+
+  ///@{
   /// vtkAlgorithm::SINGLE_PRECISION or DOUBLE_PRECISION (default) for the output points.
   vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DOUBLE_PRECISION);
   vtkGetMacro(OutputPointsPrecision, int);
@@ -209,6 +230,8 @@ protected:
   int OutputType = FIBERS;
   int MeshSweep = MERIDIANS;
   int OutputPointsPrecision = DOUBLE_PRECISION;
+  bool MergeSeam = false;
+  int NumberOfTimeSteps = 0;
 
 private:
   vtkHopfFibrationSource(const vtkHopfFibrationSource&) = delete;

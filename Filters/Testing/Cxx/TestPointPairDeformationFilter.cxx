@@ -14,6 +14,7 @@
 #include "vtkFloatArray.h"
 #include "vtkGenericDataArray.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -21,6 +22,7 @@
 #include "vtkPolyData.h"
 #include "vtkRectilinearGrid.h"
 #include "vtkSOADataArrayTemplate.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 #include "vtkStructuredGrid.h"
 
@@ -726,6 +728,48 @@ TEST(PointPairDeformationFilter, NoGeneratorsOrZeroStrengthIsTheIdentity)
     for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
     {
       EXPECT_EQ(cga::norm(pointOf(filter->GetOutput(), i) - pointOf(mesh, i)), 0.0);
+    }
+  }
+}
+
+TEST(PointPairDeformationFilter, TimeStepsGrowStrengthFromTheIdentityToItsValue)
+{
+  // NumberOfTimeSteps (vtkBoostedTimeSweep): off by default, the input's time steps pass; with
+  // N steps the filter reports its own, and the frame at t is the static output of t Strength
+  // (frame 0 the identity, the last frame the static output), point for point.
+  Random random(31);
+  auto mesh = randomMesh(random, 20, 1.0);
+  const auto generators = randomGenerators(random, 3, 1.0);
+  vtkNew<vtkPointPairDeformationFilter> timed;
+  timed->SetInputData(mesh);
+  addGenerators(timed, generators);
+  timed->SetStrength(1.5);
+  timed->UpdateInformation();
+  EXPECT_FALSE(timed->GetOutputInformation(0)->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+  timed->SetNumberOfTimeSteps(3);
+  timed->UpdateInformation();
+  vtkInformation* info = timed->GetOutputInformation(0);
+  ASSERT_EQ(info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()), 3);
+  EXPECT_EQ(info->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS())[1], 0.5);
+  EXPECT_EQ(info->Get(vtkStreamingDemandDrivenPipeline::TIME_RANGE())[1], 1.0);
+  for (double t : { 0.0, 0.5, 1.0 })
+  {
+    timed->UpdateTimeStep(t);
+    EXPECT_EQ(timed->GetOutput()->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()), t);
+    vtkNew<vtkPointPairDeformationFilter> still;
+    still->SetInputData(mesh);
+    addGenerators(still, generators);
+    still->SetStrength(t * 1.5);
+    still->Update();
+    ASSERT_EQ(timed->GetOutput()->GetNumberOfPoints(), mesh->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+    {
+      ASSERT_EQ(cga::norm(pointOf(timed->GetOutput(), i) - pointOf(still->GetOutput(), i)), 0.0)
+        << "t = " << t << ", point " << i;
+      if (t == 0.0)
+      {
+        ASSERT_EQ(cga::norm(pointOf(timed->GetOutput(), i) - pointOf(mesh, i)), 0.0);
+      }
     }
   }
 }
