@@ -48,7 +48,7 @@ PointPairField::PointPairField(const PointPairGenerator* generators,
   , Epsilon(epsilon)
 {
   const std::vector<FieldGenerator> pairs = pointPairs(generators, count);
-  this->add(pairs.data(), pairs.size());
+  this->add(pairs.data(), generators, pairs.size());
 }
 
 PointPairField::PointPairField(const FieldGenerator* generators,
@@ -58,13 +58,16 @@ PointPairField::PointPairField(const FieldGenerator* generators,
   : Falloff(falloff)
   , Epsilon(epsilon)
 {
-  this->add(generators, count);
+  this->add(generators, nullptr, count);
 }
 
-void PointPairField::add(const FieldGenerator* generators, std::size_t count)
+// `pairs`, when given, are the point pairs `generators` were made of: their relative pairs are
+// built at x_i - c rather than moved there (eps |x_i| instead of eps |x_i|^2).
+void PointPairField::add(
+  const FieldGenerator* generators, const PointPairGenerator* pairs, std::size_t count)
 {
   static_assert(kernel::kGeneratorStride == 3 + Bivector::Count, "location, then the bivector");
-  this->Generators.reserve(count * kernel::kGeneratorStride);
+  std::vector<std::size_t> kept;
   for (std::size_t i = 0; i < count; ++i)
   {
     const FieldGenerator& g = generators[i];
@@ -74,8 +77,24 @@ void PointPairField::add(const FieldGenerator* generators, std::size_t count)
       ++this->Skipped;
       continue;
     }
-    const Bivector weighted = g.weight * g.bivector;
-    this->Generators.insert(this->Generators.end(), { g.location.x, g.location.y, g.location.z });
+    kept.push_back(i);
+  }
+  // The mean as a sum of x_i / n: no overflow; a lone generator's location exactly, so a point on
+  // it maps to itself exactly.
+  const double share = kept.empty() ? 0.0 : 1.0 / static_cast<double>(kept.size());
+  for (const std::size_t i : kept)
+  {
+    this->Center = this->Center + share * generators[i].location;
+  }
+  this->Generators.reserve(kept.size() * kernel::kGeneratorStride);
+  for (const std::size_t i : kept)
+  {
+    const FieldGenerator& g = generators[i];
+    const Vec3 location = g.location - this->Center;
+    const Bivector relative = pairs ? nullPointPairCompact(location, pairs[i].direction)
+                                    : translatedBivector(g.bivector, -this->Center);
+    const Bivector weighted = g.weight * relative;
+    this->Generators.insert(this->Generators.end(), { location.x, location.y, location.z });
     this->Generators.insert(this->Generators.end(), weighted.c.begin(), weighted.c.end());
     ++this->Count;
   }
@@ -96,10 +115,11 @@ kernel::FieldArgs PointPairField::args(double strength, ExponentialRule rule) co
 
 Bivector PointPairField::generatorAt(Vec3 p) const
 {
-  const double xyz[3] = { p.x, p.y, p.z };
+  const Vec3 relative = p - this->Center;
+  const double xyz[3] = { relative.x, relative.y, relative.z };
   Bivector b;
   core::fieldBivector(this->args(1.0, ExponentialRule::Exact), xyz, 1.0, b.c.data());
-  return b;
+  return translatedBivector(b, this->Center); // back in space
 }
 
 Even PointPairField::boostAt(Vec3 p, double strength, ExponentialRule rule) const
@@ -119,7 +139,10 @@ bool PointPairField::map(Vec3 p, double strength, ExponentialRule rule, Vec3& ou
     return true;
   }
   // core::mapPoint for one point: the block kernel instantiates the same template for its lanes.
-  const double xyz[3] = { p.x, p.y, p.z };
+  // Relative to the center, as the block kernel's lanes (mapPointsInBlocks); the image is p plus
+  // the relative displacement, so that a point the map leaves in place comes back to the bit.
+  const Vec3 c = this->Center;
+  const double xyz[3] = { p.x - c.x, p.y - c.y, p.z - c.z };
   double image[3];
   bool mapped = false;
   core::mapPoint(this->args(strength, rule), xyz, image, &mapped);
@@ -127,7 +150,7 @@ bool PointPairField::map(Vec3 p, double strength, ExponentialRule rule, Vec3& ou
   {
     return false;
   }
-  out = { image[0], image[1], image[2] };
+  out = { p.x + (image[0] - xyz[0]), p.y + (image[1] - xyz[1]), p.z + (image[2] - xyz[2]) };
   return true;
 }
 
@@ -162,8 +185,11 @@ std::size_t copyPoints(const In* in, Out* out, std::size_t count)
   return unchanged;
 }
 
+// The points relative to the field's center c (as map()): each lane holds p - c, each image
+// comes back as p + (image - (p - c)), p itself where the map leaves it in place.
 template <typename In, typename Out>
 std::size_t mapPointsInBlocks(const kernel::FieldArgs& args,
+                              Vec3 c,
                               const In* in,
                               Out* out,
                               std::size_t count)
@@ -181,25 +207,24 @@ std::size_t mapPointsInBlocks(const kernel::FieldArgs& args,
     {
       // The last block repeats its last point in the unused lanes.
       const In* p = in + 3 * (first + std::min(l, n - 1));
-      xyz[l] = static_cast<double>(p[0]);
-      xyz[L + l] = static_cast<double>(p[1]);
-      xyz[2 * L + l] = static_cast<double>(p[2]);
+      xyz[l] = static_cast<double>(p[0]) - c.x;
+      xyz[L + l] = static_cast<double>(p[1]) - c.y;
+      xyz[2 * L + l] = static_cast<double>(p[2]) - c.z;
     }
     mapBlock(args, xyz, image, mapped);
     for (int l = 0; l < n; ++l)
     {
       Out* o = out + 3 * (first + l);
+      const In* p = in + 3 * (first + l);
       if (mapped[l])
       {
-        o[0] = static_cast<Out>(image[l]);
-        o[1] = static_cast<Out>(image[L + l]);
-        o[2] = static_cast<Out>(image[2 * L + l]);
+        o[0] = static_cast<Out>(static_cast<double>(p[0]) + (image[l] - xyz[l]));
+        o[1] = static_cast<Out>(static_cast<double>(p[1]) + (image[L + l] - xyz[L + l]));
+        o[2] = static_cast<Out>(static_cast<double>(p[2]) + (image[2 * L + l] - xyz[2 * L + l]));
       }
       else
       {
-        o[0] = static_cast<Out>(xyz[l]);
-        o[1] = static_cast<Out>(xyz[L + l]);
-        o[2] = static_cast<Out>(xyz[2 * L + l]);
+        copyPoint(p, o);
         ++unchanged;
       }
     }
@@ -217,7 +242,7 @@ std::size_t PointPairField::mapPointsOf(
   {
     return copyPoints(in, out, count);
   }
-  return mapPointsInBlocks(this->args(strength, rule), in, out, count);
+  return mapPointsInBlocks(this->args(strength, rule), this->Center, in, out, count);
 }
 
 std::size_t PointPairField::mapPoints(

@@ -6,6 +6,13 @@
 //
 // This is the one implementation the deformation filter, the dipole field and the curvature
 // patches share; its results are tested against the full multivector product.
+//
+// Far from the origin: the field computes relative to its center c (the mean of its generators'
+// locations): the generators and each point are moved by -c and mapped, and the relative
+// displacement is added to the point (so a point the map fixes comes back to the bit).
+// The map is exactly translation covariant in the algebra, so this changes no result beyond
+// rounding, but the rounding is then eps |c| instead of eps |c|^2 (up(p) holds |p|^2): moving a
+// whole configuration by t moves its images by t to a few eps |t|.
 #pragma once
 
 #include "cga/Compact.h"
@@ -33,7 +40,9 @@ enum class ExponentialRule
 Even exponential(const Bivector& b, ExponentialRule rule);
 
 /// One generator of the field: a bivector G placed at a location x, with a weight w; it adds
-/// w G / (k |p - x|^2 + eps) to B(p). A point pair is one kind of G (pointPair()); a dual line
+/// w G / (k |p - x|^2 + eps) to B(p). G is given in space; the field moves it to its center
+/// (translatedBivector), which rounds like |G| |x|^2: point pairs given as PointPairGenerator are
+/// built at their relative location instead, to eps |x|. A point pair is one kind of G (pointPair()); a dual line
 /// (rotation, twist), a flat point (dilation) or a translation bivector is another term of the same
 /// sum.
 struct FieldGenerator
@@ -83,6 +92,8 @@ public:
   std::size_t skippedGenerators() const { return this->Skipped; }
   double falloff() const { return this->Falloff; }
   double epsilon() const { return this->Epsilon; }
+  /// The center c the field computes relative to: the mean location of the kept generators.
+  Vec3 center() const { return this->Center; }
 
   /// B(p).
   Bivector generatorAt(Vec3 p) const;
@@ -111,15 +122,16 @@ public:
     const double* in, float* out, std::size_t count, double strength, ExponentialRule rule) const;
 
 private:
-  void add(const FieldGenerator* generators, std::size_t count);
+  void add(const FieldGenerator* generators, const PointPairGenerator* pairs, std::size_t count);
   kernel::FieldArgs args(double strength, ExponentialRule rule) const;
   template <typename In, typename Out>
   std::size_t mapPointsOf(
     const In* in, Out* out, std::size_t count, double strength, ExponentialRule rule) const;
 
   // The one layout of the generators, read by map() and the block kernel alike: per generator 13
-  // doubles, the location x_i, then the ten components of w_i G_i.
+  // doubles, the location x_i - c, then the ten components of w_i G_i moved by -c.
   std::vector<double> Generators;
+  Vec3 Center;
   std::size_t Count = 0;
   double Falloff = 1.0;
   double Epsilon = 1e-2;
