@@ -4,6 +4,7 @@
 #include "vtkBoostedExponentialRule.h"
 #include "vtkBoostedMemoryBudget.h"
 #include "vtkBoostedRowList.h"
+#include "vtkBoostedSinglePrecision.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -67,6 +68,7 @@ struct FieldFunctor
   vtkDataArray* DifferenceMagnitude;
   vtkDataArray* Potential;
   std::atomic<std::size_t>* Failures;
+  std::atomic<double>* Largest; // of the values written, for single precision's range
 
   void operator()(vtkIdType begin, vtkIdType end)
   {
@@ -86,6 +88,7 @@ struct FieldFunctor
     }
     *this->Failures +=
       this->Field->sampleMany(points.data(), n, this->WeightScale, a.data(), b.data(), phi.data(), scratch.data());
+    double largest = 0.0; // of the values written, the magnitudes first
     for (vtkIdType id = begin; id < end; ++id)
     {
       const std::size_t i = static_cast<std::size_t>(id - begin);
@@ -94,9 +97,18 @@ struct FieldFunctor
       this->SummedGenerators->SetTuple(id, &a[3 * i]);
       this->SummedDisplacements->SetTuple(id, &b[3 * i]);
       this->Difference->SetTuple(id, difference);
-      this->DifferenceMagnitude->SetTuple1(
-        id, cga::norm({ difference[0], difference[1], difference[2] })); // no spurious overflow
+      // no spurious overflow
+      const double magnitude = cga::norm({ difference[0], difference[1], difference[2] });
+      this->DifferenceMagnitude->SetTuple1(id, magnitude);
       this->Potential->SetTuple1(id, phi[i]);
+      largest = std::isfinite(magnitude) ? std::max(largest, magnitude) : largest;
+    }
+    // The magnitude of (a) - (b) is at least each of its components.
+    largest = std::max({ largest, vtkBoostedLargestFinite(a.data(), a.size()),
+      vtkBoostedLargestFinite(b.data(), b.size()), vtkBoostedLargestFinite(phi.data(), n) });
+    double seen = this->Largest->load();
+    while (largest > seen && !this->Largest->compare_exchange_weak(seen, largest))
+    {
     }
   }
 };
@@ -298,15 +310,28 @@ int vtkDipoleFieldSource::RequestData(
   }
 
   std::atomic<std::size_t> failures{ 0 };
+  std::atomic<double> largest{ 0.0 };
   FieldFunctor functor{ &field, weightScale, {}, {}, {}, summedGenerators, summedDisplacements,
-    difference, differenceMagnitude, potential, &failures };
+    difference, differenceMagnitude, potential, &failures, &largest };
   std::copy_n(extent, 6, functor.Extent);
   std::copy_n(this->Origin, 3, functor.Origin);
   std::copy_n(this->Spacing, 3, functor.Spacing);
 
-  if (!vtkBoostedBlockLoop::For(this, 0, n, 1, functor))
+  bool completed = false;
+  if (!vtkBoostedMemoryBudget::Run(
+        this, [&] { completed = vtkBoostedBlockLoop::For(this, 0, n, 1, functor); }) ||
+    !completed)
   {
-    output->Initialize(); // aborted: never hand on half-filled arrays
+    output->Initialize(); // aborted or out of memory: never hand on half-filled arrays
+    return 1;
+  }
+  const std::string rangeProblem = precision == SINGLE_PRECISION
+    ? vtkBoostedSinglePrecisionProblem(largest, "the displacements or the potential")
+    : std::string();
+  if (!rangeProblem.empty())
+  {
+    vtkErrorMacro(<< rangeProblem);
+    output->Initialize();
     return 1;
   }
   if (failures > 0)

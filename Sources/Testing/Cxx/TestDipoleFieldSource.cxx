@@ -5,6 +5,7 @@
 #include "EventCounter.h"
 #include "GridSourceChecks.h"
 #include "ProgressLog.h"
+#include "TranslationChecks.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
@@ -502,4 +503,52 @@ TEST(DipoleFieldSource, AGridNearTheLargestDoubleIsAnErrorOnlyWhereItOverflows)
   EXPECT_EQ(counter.errors, 1);
   EXPECT_NE(counter.lastError.find("the grid overflows"), std::string::npos) << counter.lastError;
   EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+TEST(DipoleFieldSource, TranslatingGridAndGeneratorsLeavesTheFieldAsItIs)
+{
+  // The Fig 14 pair and a tilted third generator, the grid origin and the generators moved by t
+  // (GeneratorsTranslation): every displacement and the potential
+  // stay what they were (the bound: TranslationChecks.h, with the field's derivative bounded by
+  // sum_i |w_i v_i| / eps = (0.35 + 0.35 + 0.4 |(0.5, -2, 1)|) / 0.1 < 16). Both rules.
+  for (int rule : { vtkDipoleFieldSource::EXACT, vtkDipoleFieldSource::PAPER })
+  {
+    SCOPED_TRACE("rule " + std::to_string(rule));
+    ExpectTranslationCovariant(
+      [rule](const double t[3]) {
+        vtkNew<vtkDipoleFieldSource> source;
+        addFig14Generators(source);
+        source->AddGenerator(0.2, 0.7, 0.1, 0.5, -2.0, 1.0, -0.4);
+        source->SetGeneratorsTranslation(t[0], t[1], t[2]);
+        source->SetOrigin(-2 + t[0], -2 + t[1], -0.2 + t[2]);
+        source->SetDimensions(21, 21, 3);
+        source->SetSpacing(0.2, 0.2, 0.2);
+        source->SetExponentialRule(rule);
+        source->Update();
+        return vtkSmartPointer<vtkDataSet>(source->GetOutput());
+      },
+      { std::begin(ArrayNames), std::end(ArrayNames) }, 16.0);
+  }
+}
+
+TEST(DipoleFieldSource, SinglePrecisionBeyondTheLargestFloatIsAnError)
+{
+  // A weight of 1e300 saturates the potential near 1e300 (documented, in double): as floats the
+  // arrays would hold inf, so single precision is an error and an empty output.
+  vtkNew<vtkDipoleFieldSource> source;
+  EventCounter events(source);
+  source->RemoveAllGenerators();
+  source->AddGenerator(0.1, 0, 0, 1, 0, 0, 1e300);
+  source->SetOutputPointsPrecision(vtkAlgorithm::SINGLE_PRECISION);
+  source->Update();
+  EXPECT_EQ(events.errors, 1);
+  EXPECT_NE(events.lastError.find("OutputPointsPrecision"), std::string::npos) << events.lastError;
+  EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(source->GetOutput()->GetPointData()->GetNumberOfArrays(), 0);
+  source->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  source->Update();
+  EXPECT_EQ(events.errors, 1) << events.lastError;
+  vtkDataArray* potential = source->GetOutput()->GetPointData()->GetArray("DipolePotential");
+  ASSERT_TRUE(potential);
+  EXPECT_GT(LargestValue(potential), 1e300);
 }
