@@ -147,11 +147,13 @@ void vtkBoostedGridDriver::Build(vtkPolyData* output)
     vtkNew<vtkPolyData> sampled;
     if (this->Surface)
     {
-      this->Builder->BuildSurface(sampled, this->FirstRow, this->LastRow, vtkAlgorithm::DOUBLE_PRECISION);
+      this->Builder->BuildSurface(
+        sampled, this->FirstRow, this->LastRow, vtkAlgorithm::DOUBLE_PRECISION);
     }
     else
     {
-      this->Builder->BuildCurves(sampled, this->FirstRow, this->LastRow, vtkAlgorithm::DOUBLE_PRECISION);
+      this->Builder->BuildCurves(
+        sampled, this->FirstRow, this->LastRow, vtkAlgorithm::DOUBLE_PRECISION);
     }
     vtkBoostedSphereClip::Clip(sampled, this->ClipCenter, this->ClipRadius, output);
     vtkPoints* points = output->GetPoints();

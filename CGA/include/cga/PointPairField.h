@@ -40,11 +40,11 @@ enum class ExponentialRule
 Even exponential(const Bivector& b, ExponentialRule rule);
 
 /// One generator of the field: a bivector G placed at a location x, with a weight w; it adds
-/// w G / (k |p - x|^2 + eps) to B(p). G is given in space; the field moves it to its center
-/// (translatedBivector), which rounds like |G| |x|^2: point pairs given as PointPairGenerator are
-/// built at their relative location instead, to eps |x|. A point pair is one kind of G (pointPair()); a dual line
-/// (rotation, twist), a flat point (dilation) or a translation bivector is another term of the same
-/// sum.
+/// w G / (k |p - x|^2 + eps) to B(p). A point pair is one kind of G (pointPair()); a dual line
+/// (rotation, twist), a flat point (dilation) or a translation bivector is another term of the
+/// same sum. G is given in space; the field moves it to its center c (translatedBivector), which
+/// rounds like |G| |x|^2, so far from the origin build G at x - c instead (point pairs given as
+/// PointPairGenerator are: eps |x|).
 struct FieldGenerator
 {
   Vec3 location;

@@ -37,11 +37,10 @@ TEST(WorkerOutOfMemory, TheBlockLoopRethrowsOnTheCallingThreadAndRunMakesOneErro
   EventCounter events(algorithm);
   std::atomic<int> chunksOfLaterBlocks{ 0 }, failedOffTheCallingThread{ 0 };
   const std::thread::id caller = std::this_thread::get_id();
-  bool completed = true;
   // 4 blocks; every chunk of the second one fails, on whichever thread runs it.
   const vtkIdType block = vtkBoostedBlockLoop::SamplesPerBlock;
   const bool ran = vtkBoostedMemoryBudget::Run(algorithm, [&] {
-    completed = vtkBoostedBlockLoop::For(algorithm, 0, 4 * block, 1, [&](vtkIdType first, vtkIdType) {
+    vtkBoostedBlockLoop::For(algorithm, 0, 4 * block, 1, [&](vtkIdType first, vtkIdType) {
       if (first >= 2 * block)
       {
         ++chunksOfLaterBlocks;
