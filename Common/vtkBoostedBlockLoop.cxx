@@ -5,6 +5,8 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <atomic>
+#include <new>
 
 bool vtkBoostedBlockLoop::For(vtkAlgorithm* algorithm, vtkIdType begin, vtkIdType end,
   vtkIdType samplesPerItem, const std::function<void(vtkIdType, vtkIdType)>& work)
@@ -17,7 +19,21 @@ bool vtkBoostedBlockLoop::For(vtkAlgorithm* algorithm, vtkIdType begin, vtkIdTyp
       return false;
     }
     const vtkIdType last = std::min(end, first + itemsPerBlock);
-    vtkSMPTools::For(first, last, [&work](vtkIdType a, vtkIdType b) { work(a, b); });
+    std::atomic<bool> outOfMemory{ false };
+    vtkSMPTools::For(first, last, [&work, &outOfMemory](vtkIdType a, vtkIdType b) {
+      try
+      {
+        work(a, b);
+      }
+      catch (const std::bad_alloc&)
+      {
+        outOfMemory = true; // reported once, on the calling thread
+      }
+    });
+    if (outOfMemory)
+    {
+      throw std::bad_alloc();
+    }
     algorithm->UpdateProgress(static_cast<double>(last - begin) / (end - begin));
   }
   return true;

@@ -7,6 +7,11 @@
  * calling thread only: the abort check (before each block) and the progress (after each block,
  * the fraction of items done). Each item must write only its own slots, so the result does not
  * depend on the blocks or the threads.
+ *
+ * A std::bad_alloc in the work, on any thread, does not terminate the process (an exception
+ * leaving a worker thread would): each worker catches it and records it, the remaining blocks
+ * are not run, and For throws one std::bad_alloc on the calling thread after the block, for
+ * vtkBoostedMemoryBudget::Run to turn into one error and an empty output.
  */
 #ifndef vtkBoostedBlockLoop_h
 #define vtkBoostedBlockLoop_h
@@ -26,7 +31,7 @@ public:
 
   /// Runs work(first, last) over the items [begin, end), each worth `samplesPerItem` samples
   /// (1 for a point, the columns of a row). Returns false when `algorithm` was aborted (the
-  /// remaining blocks are not run).
+  /// remaining blocks are not run); throws std::bad_alloc when the work ran out of memory.
   static bool For(vtkAlgorithm* algorithm, vtkIdType begin, vtkIdType end,
     vtkIdType samplesPerItem, const std::function<void(vtkIdType first, vtkIdType last)>& work);
 };

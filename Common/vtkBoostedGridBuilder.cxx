@@ -14,6 +14,8 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include "cga/Vec3.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -74,6 +76,14 @@ vtkBoostedGridBuilder::vtkBoostedGridBuilder(int rows, int columns, bool periodi
 {
 }
 
+void vtkBoostedGridBuilder::SetOrigin(const double origin[3])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    this->Origin[i] = origin[i];
+  }
+}
+
 void vtkBoostedGridBuilder::SetPoint(int row, int column, const double point[3])
 {
   double* p = &this->Points[3 * this->Index(row, column)];
@@ -118,10 +128,15 @@ void vtkBoostedGridBuilder::ComputeNormal(int row, int column, double normal[3])
 {
   // Central differences where both neighbours are usable, one-sided otherwise. Periodic columns
   // skip the repeated seam column so that both copies of a seam point get the same normal.
+  // Each difference as a unit vector (cga::normalized, scaled where its square would underflow
+  // or overflow): a grid of size 1e-160 or 1e200 has normals too.
   auto difference = [this](int r0, int c0, int r1, int c1, double d[3]) {
     const double* a = &this->Points[3 * this->Index(r0, c0)];
     const double* b = &this->Points[3 * this->Index(r1, c1)];
-    vtkMath::Subtract(b, a, d);
+    const cga::Vec3 unit = cga::normalized({ b[0] - a[0], b[1] - a[1], b[2] - a[2] });
+    d[0] = unit.x;
+    d[1] = unit.y;
+    d[2] = unit.z;
   };
   auto neighbours = [](int i, int count, bool periodic, auto usable, int& lo, int& hi) {
     lo = i - 1;
@@ -165,9 +180,8 @@ void vtkBoostedGridBuilder::ComputeNormal(int row, int column, double normal[3])
     difference(r0, column, r1, column, alongRows);
   }
   vtkMath::Cross(alongColumns, alongRows, normal);
-  const double length = vtkMath::Norm(normal);
-  const double scale = vtkMath::Norm(alongColumns) * vtkMath::Norm(alongRows);
-  if (length > 1e-12 * scale && length > 0.0)
+  const double length = vtkMath::Norm(normal); // the sine of the angle between the unit differences
+  if (length > 1e-12)
   {
     vtkMath::MultiplyScalar(normal, 1.0 / length);
     return;
@@ -247,7 +261,9 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
         ids[this->Index(r, c)] = poleId;
         continue;
       }
-      ids[this->Index(r, c)] = points->InsertNextPoint(&this->Points[3 * this->Index(r, c)]);
+      const double* relative = &this->Points[3 * this->Index(r, c)];
+      ids[this->Index(r, c)] = points->InsertNextPoint(this->Origin[0] + relative[0],
+        this->Origin[1] + relative[1], this->Origin[2] + relative[2]);
       if (merge && pole[r - firstRow])
       {
         poleId = ids[this->Index(r, c)];

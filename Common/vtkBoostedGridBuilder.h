@@ -40,6 +40,10 @@ public:
   /// `periodicColumns`: the last column repeats the first (a closed curve with a texture seam).
   vtkBoostedGridBuilder(int rows, int columns, bool periodicColumns);
 
+  /// The points SetPoint takes are relative to `origin` (default 0); the output holds origin +
+  /// point. A source far from the origin samples relative to its construction's center, so that
+  /// its samples and their normals keep their precision (eps |origin| in the output).
+  void SetOrigin(const double origin[3]);
   void SetPoint(int row, int column, const double point[3]);
   /// Used where the grid gives no normal (a degenerate neighbourhood): e.g. the plane of the row's curve.
   void SetRowFallbackNormal(int row, const double normal[3]);
@@ -100,7 +104,8 @@ private:
   int Columns;
   bool PeriodicColumns;
   bool MergeSeam = false;
-  std::vector<double> Points;
+  double Origin[3] = { 0.0, 0.0, 0.0 };
+  std::vector<double> Points; // relative to Origin
   std::vector<double> FallbackNormals;
   std::vector<Parameter> Parameters;
   int RowsPerBlock = 0; // 0: one block of all rows

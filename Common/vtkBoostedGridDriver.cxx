@@ -3,9 +3,13 @@
 #include "vtkAlgorithm.h"
 #include "vtkBoostedBlockLoop.h"
 #include "vtkBoostedMemoryBudget.h"
+#include "vtkBoostedSinglePrecision.h"
 #include "vtkBoostedSphereClip.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkNew.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
@@ -99,26 +103,35 @@ bool vtkBoostedGridDriver::Prepare(const std::string& sourceProblem, long long r
 
 bool vtkBoostedGridDriver::SampleRows(const std::function<void(int)>& sample)
 {
-  this->Aborted = !vtkBoostedBlockLoop::For(this->Source, this->SampleFirst, this->SampleLast + 1,
-    this->Columns, [&sample](vtkIdType first, vtkIdType last) {
+  return this->Sample(this->SampleFirst, this->SampleLast + 1, this->Columns,
+    [&sample](vtkIdType first, vtkIdType last) {
       for (vtkIdType r = first; r < last; ++r)
       {
         sample(static_cast<int>(r));
       }
     });
-  return !this->Aborted;
 }
 
 bool vtkBoostedGridDriver::SampleGrid(const std::function<void(int, int)>& sample)
 {
   const vtkIdType columns = this->Columns;
-  this->Aborted = !vtkBoostedBlockLoop::For(this->Source, this->SampleFirst * columns,
-    (this->SampleLast + 1) * columns, 1, [&sample, columns](vtkIdType first, vtkIdType last) {
+  return this->Sample(this->SampleFirst * columns, (this->SampleLast + 1) * columns, 1,
+    [&sample, columns](vtkIdType first, vtkIdType last) {
       for (vtkIdType i = first; i < last; ++i)
       {
         sample(static_cast<int>(i / columns), static_cast<int>(i % columns));
       }
     });
+}
+
+bool vtkBoostedGridDriver::Sample(vtkIdType begin, vtkIdType end, vtkIdType samplesPerItem,
+  const std::function<void(vtkIdType, vtkIdType)>& work)
+{
+  bool completed = false;
+  // An allocation that fails in a worker is one error (Run) and an empty output, like an abort.
+  const bool ran = vtkBoostedMemoryBudget::Run(this->Source,
+    [&] { completed = vtkBoostedBlockLoop::For(this->Source, begin, end, samplesPerItem, work); });
+  this->Aborted = !(ran && completed);
   return !this->Aborted;
 }
 
@@ -128,21 +141,42 @@ void vtkBoostedGridDriver::Build(vtkPolyData* output)
   {
     return; // never hand on a half-computed grid
   }
+  std::string problem;
   const bool built = vtkBoostedMemoryBudget::Run(this->Source, [&] {
+    // In double precision; single precision is the last step (a cut computed from floats would
+    // round twice).
     vtkNew<vtkPolyData> sampled;
     if (this->Surface)
     {
       this->Builder->BuildSurface(
-        sampled, this->FirstRow, this->LastRow, this->OutputPointsPrecision);
+        sampled, this->FirstRow, this->LastRow, vtkAlgorithm::DOUBLE_PRECISION);
     }
     else
     {
       this->Builder->BuildCurves(
-        sampled, this->FirstRow, this->LastRow, this->OutputPointsPrecision);
+        sampled, this->FirstRow, this->LastRow, vtkAlgorithm::DOUBLE_PRECISION);
     }
     vtkBoostedSphereClip::Clip(sampled, this->ClipCenter, this->ClipRadius, output);
+    vtkPoints* points = output->GetPoints();
+    if (this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION && points)
+    {
+      vtkDoubleArray* values = vtkDoubleArray::SafeDownCast(points->GetData()); // as built
+      problem = vtkBoostedSinglePrecisionProblem(
+        vtkBoostedLargestFinite(values->GetPointer(0), 3 * values->GetNumberOfTuples()),
+        "the points");
+      if (problem.empty())
+      {
+        vtkNew<vtkFloatArray> floats;
+        floats->DeepCopy(values);
+        points->SetData(floats);
+      }
+    }
   });
-  if (!built)
+  if (!problem.empty())
+  {
+    vtkErrorWithObjectMacro(this->Source, << problem);
+  }
+  if (!built || !problem.empty())
   {
     output->Initialize(); // never hand on a half-built output
   }

@@ -15,7 +15,9 @@
  * 3. Build: quads or polylines (vtkBoostedGridBuilder), cut exactly at the clip sphere
  *    (vtkBoostedSphereClip): every finite sample is kept until the cut, so the output ends on the
  *    sphere (to round-off), not at the last whole grid cell inside it. An aborted update stays
- *    empty, and so does one whose allocation fails (an error, not an abort).
+ *    empty, and so does one whose allocation fails (an error, not an abort). The grid is built
+ *    and cut in double precision; single-precision output is converted last, and refused
+ *    (vtkBoostedSinglePrecision) when a coordinate is beyond the largest float.
  *
  * The clip sphere has one meaning in every source: radius ClipRadius (an absolute length) about
  * the construction's center (the circle's center, the patch's origin).
@@ -25,6 +27,7 @@
 
 #include "BoostedSurfacesCommonModule.h" // for export macro
 #include "vtkBoostedGridBuilder.h"       // for the grid
+#include "vtkType.h"                     // for vtkIdType
 
 #include <functional> // for the sampling work
 #include <memory>     // for the grid
@@ -68,7 +71,7 @@ public:
 
   /// Step 2: sample(row) for every row this piece needs (its rows and halo), or sample(row,
   /// column) for every sample of those rows; called from several threads at once. False when
-  /// aborted.
+  /// aborted or out of memory (one error; the output stays empty).
   bool SampleRows(const std::function<void(int row)>& sample);
   bool SampleGrid(const std::function<void(int row, int column)>& sample);
 
@@ -81,6 +84,8 @@ public:
 private:
   vtkBoostedGridDriver(const vtkBoostedGridDriver&) = delete;
   void operator=(const vtkBoostedGridDriver&) = delete;
+  bool Sample(vtkIdType begin, vtkIdType end, vtkIdType samplesPerItem,
+    const std::function<void(vtkIdType, vtkIdType)>& work);
 
   vtkAlgorithm* Source;
   vtkInformation* OutputInformation;

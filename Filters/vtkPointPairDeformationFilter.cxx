@@ -8,6 +8,7 @@
 #include "vtkBoostedMemoryBudget.h"
 #include "vtkBoostedTimeSweep.h"
 #include "vtkBoostedRowList.h"
+#include "vtkBoostedSinglePrecision.h"
 #include "vtkBoostedSurfacesAbort.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -67,6 +68,7 @@ struct DeformWorker
   Out* Displacement;
   std::atomic<vtkIdType> Unchanged{ 0 };
   std::atomic<vtkIdType> NonFiniteInputs{ 0 };
+  std::atomic<vtkIdType> BeyondOutputType{ 0 };
 
   template <typename InArray>
   void operator()(InArray* points)
@@ -112,7 +114,7 @@ struct DeformWorker
     Out* displacement = this->Displacement + 3 * first;
     const std::size_t unchanged = this->Field->mapPoints(
       in, out, static_cast<std::size_t>(count), this->Strength, this->Rule);
-    vtkIdType nonFinite = 0;
+    vtkIdType nonFinite = 0, beyondOutputType = 0;
     for (vtkIdType i = 0; i < 3 * count; i += 3)
     {
       const double x = in[i], y = in[i + 1], z = in[i + 2];
@@ -125,9 +127,17 @@ struct DeformWorker
       displacement[i] = static_cast<Out>(out[i] - x);
       displacement[i + 1] = static_cast<Out>(out[i + 1] - y);
       displacement[i + 2] = static_cast<Out>(out[i + 2] - z);
+      // A finite point whose image or displacement is not: beyond the largest float (the
+      // kernel keeps a double image finite).
+      if (!isFinite(out[i], out[i + 1], out[i + 2]) ||
+        !isFinite(displacement[i], displacement[i + 1], displacement[i + 2]))
+      {
+        ++beyondOutputType;
+      }
     }
     this->Unchanged += static_cast<vtkIdType>(unchanged);
     this->NonFiniteInputs += nonFinite;
+    this->BeyondOutputType += beyondOutputType;
   }
 };
 
@@ -317,7 +327,8 @@ double estimatedBytes(vtkDataSet* input, int precision)
 template <typename Out>
 void deformPoints(vtkPointPairDeformationFilter* self, const cga::PointPairField& field,
   vtkDataArray* inPoints, vtkDataArray* outPoints, vtkDataArray* displacement, double strength,
-  cga::ExponentialRule rule, vtkIdType& unchanged, vtkIdType& nonFiniteInputs)
+  cga::ExponentialRule rule, vtkIdType& unchanged, vtkIdType& nonFiniteInputs,
+  vtkIdType& beyondOutputType)
 {
   DeformWorker<Out> worker{ self, &field, strength, rule,
     vtkArrayDownCast<vtkAOSDataArrayTemplate<Out>>(outPoints)->GetPointer(0),
@@ -334,6 +345,7 @@ void deformPoints(vtkPointPairDeformationFilter* self, const cga::PointPairField
   }
   unchanged = worker.Unchanged;
   nonFiniteInputs = worker.NonFiniteInputs;
+  beyondOutputType = worker.BeyondOutputType;
 }
 } // namespace
 
@@ -571,13 +583,21 @@ void vtkPointPairDeformationFilter::Deform(
 
   const cga::ExponentialRule rule =
     vtkBoostedExponentialRule<vtkPointPairDeformationFilter>(this->ExponentialRule);
-  vtkIdType unchanged = 0, nonFiniteInputs = 0;
+  vtkIdType unchanged = 0, nonFiniteInputs = 0, beyondOutputType = 0;
   (outputType == VTK_FLOAT ? deformPoints<float> : deformPoints<double>)(this, field,
     inPoints->GetData(), outPoints->GetData(), displacement, strength, rule, unchanged,
-    nonFiniteInputs);
+    nonFiniteInputs, beyondOutputType);
   if (vtkBoostedSurfacesCheckAbort(this))
   {
     output->Initialize(); // aborted: no half-deformed mesh
+    return;
+  }
+  if (beyondOutputType > 0)
+  {
+    vtkErrorMacro(<< vtkBoostedSinglePrecisionProblem("the images or displacements of " +
+                    std::to_string(beyondOutputType) + " of " + std::to_string(count) +
+                    " points are"));
+    output->Initialize();
     return;
   }
   if (unchanged > 0)

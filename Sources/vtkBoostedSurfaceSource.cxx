@@ -57,9 +57,11 @@ int vtkBoostedSurfaceSource::RequestData(
   const double lambdaRange[2] = { this->LambdaRange[0],
     vtkBoostedTimeSweep::Interpolate(this->LambdaRange[0], this->LambdaRange[1],
       vtkBoostedTimeSweep::Fraction(outInfo, this->NumberOfTimeSteps)) };
+  // Computed about the circle's center (the grid adds it back): precision far from the origin.
+  const cga::BoostedCircle centered = family.centered();
   if (problem.empty())
   {
-    problem = family.boostProblem(lambdaRange[0], lambdaRange[1]);
+    problem = centered.boostProblem(lambdaRange[0], lambdaRange[1]);
   }
   const long long rows = this->LambdaResolution + 1LL;
   const long long columns = this->ThetaResolution + 1LL; // the last column repeats the first (seam)
@@ -85,14 +87,15 @@ int vtkBoostedSurfaceSource::RequestData(
   for (int c = 0; c < columns; ++c)
   {
     thetas[c] = 2.0 * vtkMath::Pi() * c / this->ThetaResolution;
-    circlePoints[c] = family.circlePoint(thetas[c]);
+    circlePoints[c] = centered.circlePoint(thetas[c]);
   }
   circlePoints[columns - 1] = circlePoints[0]; // exactly the same point at the seam
 
   vtkBoostedGridBuilder& grid = driver.Grid();
+  grid.SetOrigin(this->CircleCenter);
   driver.SampleRows([&](int r) {
     // One 5x5 matrix per lambda row: the sandwich K up(p) ~K is linear in up(p).
-    const cga::PointMap boost(family.boostCompact(lambdas[r]));
+    const cga::PointMap boost(centered.boostCompact(lambdas[r]));
     for (int c = 0; c < columns; ++c)
     {
       cga::Vec3 p;
@@ -102,7 +105,7 @@ int vtkBoostedSurfaceSource::RequestData(
         grid.SetPoint(r, c, point);
       }
     }
-    const cga::RoundInfo image = cga::readCircle(family.imageBlade(lambdas[r]), 1e-12);
+    const cga::RoundInfo image = cga::readCircle(centered.imageBlade(lambdas[r]), 1e-12);
     const double fallback[3] = { image.normal.x, image.normal.y, image.normal.z };
     grid.SetRowFallbackNormal(r, fallback);
   });

@@ -5,6 +5,7 @@
 #include "vtkBoostedGeneratorRows.h"
 #include "vtkBoostedMemoryBudget.h"
 #include "vtkBoostedRowList.h"
+#include "vtkBoostedSinglePrecision.h"
 #include "vtkBoostedTimeSweep.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -70,6 +71,7 @@ struct FieldFunctor
   vtkDataArray* DifferenceMagnitude;
   vtkDataArray* Potential;
   std::atomic<std::size_t>* Failures;
+  std::atomic<double>* Largest; // of the values written, for single precision's range
 
   void operator()(vtkIdType begin, vtkIdType end)
   {
@@ -90,16 +92,16 @@ struct FieldFunctor
     *this->Failures +=
       this->Field->sampleMany(points.data(), n, this->WeightScale, a.data(), b.data(), phi.data(), scratch.data());
     // Huge weights of translations, twists or dilations move points by up to ~1e308, and sums of
-    // such displacements overflow: every value saturates at the largest of the output precision.
-    const double limit = this->SummedGenerators->GetDataType() == VTK_FLOAT
-      ? static_cast<double>(std::numeric_limits<float>::max())
-      : std::numeric_limits<double>::max();
+    // such displacements overflow: every value saturates at the largest double (a float output
+    // beyond the largest float is then the single-precision error, through `largest`).
+    const double limit = std::numeric_limits<double>::max();
     const auto saturated = [limit](double value)
     { return std::isnan(value) ? 0.0 : std::max(-limit, std::min(limit, value)); };
     for (std::vector<double>* values : { &a, &b, &phi })
     {
       std::transform(values->begin(), values->end(), values->begin(), saturated);
     }
+    double largest = 0.0; // of the values written, the magnitudes first
     for (vtkIdType id = begin; id < end; ++id)
     {
       const std::size_t i = static_cast<std::size_t>(id - begin);
@@ -108,9 +110,19 @@ struct FieldFunctor
       this->SummedGenerators->SetTuple(id, &a[3 * i]);
       this->SummedDisplacements->SetTuple(id, &b[3 * i]);
       this->Difference->SetTuple(id, difference);
-      this->DifferenceMagnitude->SetTuple1(
-        id, saturated(cga::norm({ difference[0], difference[1], difference[2] })));
+      // no spurious overflow
+      const double magnitude =
+        saturated(cga::norm({ difference[0], difference[1], difference[2] }));
+      this->DifferenceMagnitude->SetTuple1(id, magnitude);
       this->Potential->SetTuple1(id, phi[i]);
+      largest = std::isfinite(magnitude) ? std::max(largest, magnitude) : largest;
+    }
+    // The magnitude of (a) - (b) is at least each of its components.
+    largest = std::max({ largest, vtkBoostedLargestFinite(a.data(), a.size()),
+      vtkBoostedLargestFinite(b.data(), b.size()), vtkBoostedLargestFinite(phi.data(), n) });
+    double seen = this->Largest->load();
+    while (largest > seen && !this->Largest->compare_exchange_weak(seen, largest))
+    {
     }
   }
 };
@@ -318,15 +330,28 @@ int vtkDipoleFieldSource::RequestData(
   }
 
   std::atomic<std::size_t> failures{ 0 };
+  std::atomic<double> largest{ 0.0 };
   FieldFunctor functor{ &field, weightScale, {}, {}, {}, summedGenerators, summedDisplacements,
-    difference, differenceMagnitude, potential, &failures };
+    difference, differenceMagnitude, potential, &failures, &largest };
   std::copy_n(extent, 6, functor.Extent);
   std::copy_n(this->Origin, 3, functor.Origin);
   std::copy_n(this->Spacing, 3, functor.Spacing);
 
-  if (!vtkBoostedBlockLoop::For(this, 0, n, 1, functor))
+  bool completed = false;
+  if (!vtkBoostedMemoryBudget::Run(
+        this, [&] { completed = vtkBoostedBlockLoop::For(this, 0, n, 1, functor); }) ||
+    !completed)
   {
-    output->Initialize(); // aborted: never hand on half-filled arrays
+    output->Initialize(); // aborted or out of memory: never hand on half-filled arrays
+    return 1;
+  }
+  const std::string rangeProblem = precision == SINGLE_PRECISION
+    ? vtkBoostedSinglePrecisionProblem(largest, "the displacements or the potential")
+    : std::string();
+  if (!rangeProblem.empty())
+  {
+    vtkErrorMacro(<< rangeProblem);
+    output->Initialize();
     return 1;
   }
   if (failures > 0)

@@ -271,3 +271,63 @@ TEST(PointPairField, BatchMapEqualsThePointwiseMapInEveryPrecision)
     }
   }
 }
+
+TEST(PointPairField, TranslatingPointsAndGeneratorsTranslatesTheImages)
+{
+  // The map is translation covariant in the algebra; the field computes relative to its center
+  // (the generators' mean location, which moves with them), so a configuration moved by t maps
+  // to its images moved by t within a few roundings at |t|: 64 eps (|t| + |image|) (the map's
+  // derivative is of order one here, see Testing/Support/TranslationChecks.h for the count).
+  // Computed in space the error grew like eps |t|^2: 3e-4 at |t| = 1e4.
+  Random random(78);
+  const double eps = std::numeric_limits<double>::epsilon();
+  for (ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
+  {
+    for (int n = 0; n < 50; ++n)
+    {
+      const std::vector<PointPairGenerator> generators = randomGenerators(random, 1 + n % 5, 0.6);
+      const Vec3 p = random.vec3(2.0);
+      const PointPairField field(generators, 1.0, 0.1);
+      Vec3 image;
+      ASSERT_TRUE(field.map(p, 1.0, rule, image));
+      for (const double length : { 1e2, 1e4, 1e6 })
+      {
+        const Vec3 t = length * random.unit();
+        std::vector<PointPairGenerator> moved = generators;
+        for (PointPairGenerator& g : moved)
+        {
+          g.location = g.location + t;
+        }
+        const PointPairField movedField(moved, 1.0, 0.1);
+        Vec3 movedImage;
+        ASSERT_TRUE(movedField.map(p + t, 1.0, rule, movedImage));
+        EXPECT_LE(distance(movedImage - t, image), 64.0 * eps * (length + norm(image)))
+          << "|t| = " << length << ", " << generators.size() << " generators";
+      }
+    }
+  }
+}
+
+TEST(PointPairField, TheCenterIsTheMeanOfTheKeptGeneratorsAndAPointOnALoneOneIsFixed)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const PointPairField field({ { { 1, 2, 3 }, { 0, 1, 0 }, 1.0 }, { { 3, 2, 1 }, { 1, 0, 0 }, 1.0 },
+                               { { nan, 0, 0 }, { 1, 0, 0 }, 1.0 } },
+    1.0, 0.1);
+  EXPECT_EQ(field.size(), 2u);
+  EXPECT_EQ(distance(field.center(), { 2, 2, 2 }), 0.0);
+  for (const double far : { 0.0, 1e6, 1e150 })
+  {
+    const Vec3 x{ far + 0.25, -far, 0.5 * far + 1.0 };
+    const PointPairField lone({ { x, { 0.3, 1, -0.2 }, 3.0 } }, 1.0, 1e-3);
+    EXPECT_EQ(distance(lone.center(), x), 0.0);
+    for (ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
+    {
+      Vec3 image;
+      ASSERT_TRUE(lone.map(x, 1.0, rule, image)) << far;
+      EXPECT_EQ(image.x, x.x) << far;
+      EXPECT_EQ(image.y, x.y) << far;
+      EXPECT_EQ(image.z, x.z) << far;
+    }
+  }
+}

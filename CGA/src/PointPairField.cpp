@@ -116,19 +116,17 @@ FieldGenerator FieldGenerator::of(
 
 namespace
 {
-// The point pairs as field generators (FieldGenerator::of: a zero or non-finite direction gives a
-// NaN weight, which the field skips).
-std::vector<FieldGenerator> pointPairs(const PointPairGenerator* generators, std::size_t count)
+// The rows as field generators in space (FieldGenerator::of: a zero or non-finite direction gives
+// a NaN weight, which the field skips).
+std::vector<FieldGenerator> fieldsOf(const std::vector<GeneratorParameters>& rows)
 {
-  std::vector<FieldGenerator> pairs;
-  pairs.reserve(count);
-  for (std::size_t i = 0; i < count; ++i)
+  std::vector<FieldGenerator> fields;
+  fields.reserve(rows.size());
+  for (const GeneratorParameters& row : rows)
   {
-    const PointPairGenerator& g = generators[i];
-    pairs.push_back(
-      FieldGenerator::of(GeneratorKind::PointPair, g.location, g.direction, 0.0, g.weight));
+    fields.push_back(row.field());
   }
-  return pairs;
+  return fields;
 }
 } // namespace
 
@@ -139,8 +137,14 @@ PointPairField::PointPairField(const PointPairGenerator* generators,
   : Falloff(falloff)
   , Epsilon(epsilon)
 {
-  const std::vector<FieldGenerator> pairs = pointPairs(generators, count);
-  this->add(pairs.data(), pairs.size());
+  std::vector<GeneratorParameters> rows(count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    rows[i].location = generators[i].location;
+    rows[i].direction = generators[i].direction;
+    rows[i].weight = generators[i].weight;
+  }
+  this->add(fieldsOf(rows).data(), rows.data(), count);
 }
 
 PointPairField::PointPairField(const GeneratorParameters* generators,
@@ -150,13 +154,8 @@ PointPairField::PointPairField(const GeneratorParameters* generators,
   : Falloff(falloff)
   , Epsilon(epsilon)
 {
-  std::vector<FieldGenerator> fields;
-  fields.reserve(count);
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    fields.push_back(generators[i].field());
-  }
-  this->add(fields.data(), fields.size());
+  const std::vector<GeneratorParameters> rows(generators, generators + count);
+  this->add(fieldsOf(rows).data(), generators, count);
 }
 
 PointPairField::PointPairField(const FieldGenerator* generators,
@@ -166,13 +165,16 @@ PointPairField::PointPairField(const FieldGenerator* generators,
   : Falloff(falloff)
   , Epsilon(epsilon)
 {
-  this->add(generators, count);
+  this->add(generators, nullptr, count);
 }
 
-void PointPairField::add(const FieldGenerator* generators, std::size_t count)
+// `rows`, when given, are the rows `generators` were made of: their relative generators are built
+// at x_i - c rather than moved there (eps |x_i| instead of eps |x_i|^2).
+void PointPairField::add(
+  const FieldGenerator* generators, const GeneratorParameters* rows, std::size_t count)
 {
   static_assert(kernel::kGeneratorStride == 3 + Bivector::Count, "location, then the bivector");
-  this->Generators.reserve(count * kernel::kGeneratorStride);
+  std::vector<std::size_t> kept;
   for (std::size_t i = 0; i < count; ++i)
   {
     const FieldGenerator& g = generators[i];
@@ -182,8 +184,33 @@ void PointPairField::add(const FieldGenerator* generators, std::size_t count)
       ++this->Skipped;
       continue;
     }
-    const Bivector weighted = g.weight * g.bivector;
-    this->Generators.insert(this->Generators.end(), { g.location.x, g.location.y, g.location.z });
+    kept.push_back(i);
+  }
+  // The mean as a sum of x_i / n: no overflow; a lone generator's location exactly, so a point on
+  // it maps to itself exactly.
+  const double share = kept.empty() ? 0.0 : 1.0 / static_cast<double>(kept.size());
+  for (const std::size_t i : kept)
+  {
+    this->Center = this->Center + share * generators[i].location;
+  }
+  this->Generators.reserve(kept.size() * kernel::kGeneratorStride);
+  for (const std::size_t i : kept)
+  {
+    const FieldGenerator& g = generators[i];
+    const Vec3 location = g.location - this->Center;
+    Bivector relative;
+    if (rows)
+    {
+      GeneratorParameters row = rows[i];
+      row.location = location;
+      relative = row.field().bivector;
+    }
+    else
+    {
+      relative = translatedBivector(g.bivector, -this->Center);
+    }
+    const Bivector weighted = g.weight * relative;
+    this->Generators.insert(this->Generators.end(), { location.x, location.y, location.z });
     this->Generators.insert(this->Generators.end(), weighted.c.begin(), weighted.c.end());
     ++this->Count;
   }
@@ -204,10 +231,11 @@ kernel::FieldArgs PointPairField::args(double strength, ExponentialRule rule) co
 
 Bivector PointPairField::generatorAt(Vec3 p) const
 {
-  const double xyz[3] = { p.x, p.y, p.z };
+  const Vec3 relative = p - this->Center;
+  const double xyz[3] = { relative.x, relative.y, relative.z };
   Bivector b;
   core::fieldBivector(this->args(1.0, ExponentialRule::Exact), xyz, 1.0, b.c.data());
-  return b;
+  return translatedBivector(b, this->Center); // back in space
 }
 
 Even PointPairField::boostAt(Vec3 p, double strength, ExponentialRule rule) const
@@ -227,7 +255,10 @@ bool PointPairField::map(Vec3 p, double strength, ExponentialRule rule, Vec3& ou
     return true;
   }
   // core::mapPoint for one point: the block kernel instantiates the same template for its lanes.
-  const double xyz[3] = { p.x, p.y, p.z };
+  // Relative to the center, as the block kernel's lanes (mapPointsInBlocks); the image is p plus
+  // the relative displacement, so that a point the map leaves in place comes back to the bit.
+  const Vec3 c = this->Center;
+  const double xyz[3] = { p.x - c.x, p.y - c.y, p.z - c.z };
   double image[3];
   bool mapped = false;
   core::mapPoint(this->args(strength, rule), xyz, image, &mapped);
@@ -235,7 +266,7 @@ bool PointPairField::map(Vec3 p, double strength, ExponentialRule rule, Vec3& ou
   {
     return false;
   }
-  out = { image[0], image[1], image[2] };
+  out = { p.x + (image[0] - xyz[0]), p.y + (image[1] - xyz[1]), p.z + (image[2] - xyz[2]) };
   return true;
 }
 
@@ -270,8 +301,11 @@ std::size_t copyPoints(const In* in, Out* out, std::size_t count)
   return unchanged;
 }
 
+// The points relative to the field's center c (as map()): each lane holds p - c, each image
+// comes back as p + (image - (p - c)), p itself where the map leaves it in place.
 template <typename In, typename Out>
 std::size_t mapPointsInBlocks(const kernel::FieldArgs& args,
+                              Vec3 c,
                               const In* in,
                               Out* out,
                               std::size_t count)
@@ -289,29 +323,24 @@ std::size_t mapPointsInBlocks(const kernel::FieldArgs& args,
     {
       // The last block repeats its last point in the unused lanes.
       const In* p = in + 3 * (first + std::min(l, n - 1));
-      xyz[l] = static_cast<double>(p[0]);
-      xyz[L + l] = static_cast<double>(p[1]);
-      xyz[2 * L + l] = static_cast<double>(p[2]);
+      xyz[l] = static_cast<double>(p[0]) - c.x;
+      xyz[L + l] = static_cast<double>(p[1]) - c.y;
+      xyz[2 * L + l] = static_cast<double>(p[2]) - c.z;
     }
     mapBlock(args, xyz, image, mapped);
     for (int l = 0; l < n; ++l)
     {
       Out* o = out + 3 * (first + l);
-      const Out x = static_cast<Out>(image[l]), y = static_cast<Out>(image[L + l]),
-                z = static_cast<Out>(image[2 * L + l]);
-      // An image beyond the range of Out (a float output of a huge translation, twist or
-      // dilation) is left in place like one at infinity, never written as inf.
-      if (mapped[l] && std::isfinite(x) && std::isfinite(y) && std::isfinite(z))
+      const In* p = in + 3 * (first + l);
+      if (mapped[l])
       {
-        o[0] = x;
-        o[1] = y;
-        o[2] = z;
+        o[0] = static_cast<Out>(static_cast<double>(p[0]) + (image[l] - xyz[l]));
+        o[1] = static_cast<Out>(static_cast<double>(p[1]) + (image[L + l] - xyz[L + l]));
+        o[2] = static_cast<Out>(static_cast<double>(p[2]) + (image[2 * L + l] - xyz[2 * L + l]));
       }
       else
       {
-        o[0] = static_cast<Out>(xyz[l]);
-        o[1] = static_cast<Out>(xyz[L + l]);
-        o[2] = static_cast<Out>(xyz[2 * L + l]);
+        copyPoint(p, o);
         ++unchanged;
       }
     }
@@ -329,7 +358,7 @@ std::size_t PointPairField::mapPointsOf(
   {
     return copyPoints(in, out, count);
   }
-  return mapPointsInBlocks(this->args(strength, rule), in, out, count);
+  return mapPointsInBlocks(this->args(strength, rule), this->Center, in, out, count);
 }
 
 std::size_t PointPairField::mapPoints(

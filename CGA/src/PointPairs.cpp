@@ -1,5 +1,9 @@
 #include "cga/PointPairs.h"
 
+#include "cga/CompactAlgebra.h"
+#include "cga/CompactConversion.h"
+#include "cga/Conformal.h"
+
 namespace cga
 {
 namespace
@@ -28,6 +32,12 @@ Bivector nullPointPairCompact(Vec3 location, Vec3 direction)
   Bivector b;
   addNullPointPair(b, 1.0, location, direction);
   return b;
+}
+
+Bivector translatedBivector(const Bivector& b, Vec3 d)
+{
+  const Even t = toEven(translator(d));
+  return (t * Even::fromBivector(b) * reverse(t)).bivector;
 }
 
 Bivector weightedSum(const Bivector* bivectors, const double* weights, std::size_t count)

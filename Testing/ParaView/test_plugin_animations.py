@@ -101,10 +101,10 @@ play("Curvature Patch", CurvaturePatch,  # noqa: F821
      dict(CurvaturePreset="Hyperbolic", UResolution=16, VResolution=16),
      dict(CurvaturePreset="Custom", KappaU=0.0, KappaV=0.0))
 play("Dipole Field", DipoleField,  # noqa: F821
-     dict(GeneratorList=[0, 0, 0, 1, 0, 0, 0.5]),
-     dict(GeneratorList=[0, 0, 0, 1, 0, 0, 0.0]), array="DisplacementSummedGenerators")
+     dict(GeneratorList=[0, 0, 0, 1, 0, 0, 0.5, 0, 0]),
+     dict(GeneratorList=[0, 0, 0, 1, 0, 0, 0.0, 0, 0]), array="DisplacementSummedGenerators")
 play("Point Pair Deformation", PointPairDeformation,  # noqa: F821
-     dict(GeneratorList=[0, 0, 0.7, 0, 0, 1, 0.5], Strength=2.0),
+     dict(GeneratorList=[0, 0, 0.7, 0, 0, 1, 0.5, 0, 0], Strength=2.0),
      dict(Strength=0.0),
      make_input=lambda: simple.Sphere(ThetaResolution=24, PhiResolution=12))
 

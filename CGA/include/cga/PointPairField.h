@@ -7,6 +7,13 @@
 //
 // This is the one implementation the deformation filter, the dipole field and the curvature
 // patches share; its results are tested against the full multivector product.
+//
+// Far from the origin: the field computes relative to its center c (the mean of its generators'
+// locations): the generators and each point are moved by -c and mapped, and the relative
+// displacement is added to the point (so a point the map fixes comes back to the bit).
+// The map is exactly translation covariant in the algebra, so this changes no result beyond
+// rounding, but the rounding is then eps |c| instead of eps |c|^2 (up(p) holds |p|^2): moving a
+// whole configuration by t moves its images by t to a few eps |t|.
 #pragma once
 
 #include "cga/Compact.h"
@@ -60,6 +67,9 @@ bool isGeneratorKind(int kind);
 ///   translation: the translation by c v/|v|; the location only places the falloff.
 /// Directions and axes of any finite non-zero length; a zero or non-finite one gives a NaN weight,
 /// which PointPairField skips (and counts), as it does any non-finite bivector.
+/// G is given in space; the field moves it to its center c (translatedBivector), which rounds
+/// like |G| |x|^2, so far from the origin build G at x - c instead (rows given as
+/// PointPairGenerator or GeneratorParameters are: eps |x|).
 struct FieldGenerator
 {
   Vec3 location;
@@ -141,6 +151,8 @@ public:
   std::size_t skippedGenerators() const { return this->Skipped; }
   double falloff() const { return this->Falloff; }
   double epsilon() const { return this->Epsilon; }
+  /// The center c the field computes relative to: the mean location of the kept generators.
+  Vec3 center() const { return this->Center; }
 
   /// B(p).
   Bivector generatorAt(Vec3 p) const;
@@ -154,9 +166,9 @@ public:
 
   /// The batch form of map() that the VTK filters call on each chunk of points: `count` points,
   /// xyz interleaved, from `in` to `out` (which may be the same array when the types match).
-  /// A point that is not finite, or whose image is not finite (in out's type: a float out cannot
-  /// hold an image beyond 3.4e38), is copied unchanged; the return
-  /// value counts them. `out` is written for every point. No heap allocation.
+  /// A point that is not finite, or whose image is not finite, is copied unchanged; the return
+  /// value counts them. A float out holds an image beyond the largest float (3.4e38) as inf, as
+  /// the conversion rounds it: the VTK classes turn that into an error. `out` is written for every point. No heap allocation.
   /// The points go through a vectorized block kernel, the same source as map() instantiated for
   /// a vector of points (every image bit for bit as map() gives it), compiled for several
   /// instruction sets and chosen for the running CPU: see mapPointsInstructionSets().
@@ -170,15 +182,16 @@ public:
     const double* in, float* out, std::size_t count, double strength, ExponentialRule rule) const;
 
 private:
-  void add(const FieldGenerator* generators, std::size_t count);
+  void add(const FieldGenerator* generators, const GeneratorParameters* rows, std::size_t count);
   kernel::FieldArgs args(double strength, ExponentialRule rule) const;
   template <typename In, typename Out>
   std::size_t mapPointsOf(
     const In* in, Out* out, std::size_t count, double strength, ExponentialRule rule) const;
 
   // The one layout of the generators, read by map() and the block kernel alike: per generator 13
-  // doubles, the location x_i, then the ten components of w_i G_i.
+  // doubles, the location x_i - c, then the ten components of w_i G_i moved by -c.
   std::vector<double> Generators;
+  Vec3 Center;
   std::size_t Count = 0;
   double Falloff = 1.0;
   double Epsilon = 1e-2;

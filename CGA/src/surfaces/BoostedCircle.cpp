@@ -31,6 +31,14 @@ std::string BoostedCircle::validate() const
   return {};
 }
 
+BoostedCircle BoostedCircle::centered() const
+{
+  BoostedCircle family = *this;
+  family.center = Vec3{};
+  family.boostLocation = boostLocation - center;
+  return family;
+}
+
 std::string BoostedCircle::boostProblem(double lambdaMin, double lambdaMax) const
 {
   // The map's entries are sums of products of 1 and lambda tau's components, so they are largest

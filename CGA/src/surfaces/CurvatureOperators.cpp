@@ -111,14 +111,16 @@ CurvatureGenerator controlPoints(const CurvatureControlPoint* points,
                                  std::size_t count,
                                  Vec3 p,
                                  double falloff,
-                                 double epsilon)
+                                 double epsilon,
+                                 Vec3 shift)
 {
   // PointPairField does not fit here: its generator weights are fixed, while W_i depends on p
   // through the osculating circle distances as well as through |p - x_i|.
   CurvatureGenerator g;
   for (std::size_t i = 0; i < count; ++i)
   {
-    const CurvatureControlPoint& c = points[i];
+    CurvatureControlPoint c = points[i];
+    c.location = c.location - shift;
     const CurvatureGenerator one = osculatingCircles(c, p, epsilon);
     // eq 22: d_p^2 = -2 up(p).up(x) = |p - x|^2
     const double scale = 1.0 / (falloff * norm2(p - c.location) + epsilon);

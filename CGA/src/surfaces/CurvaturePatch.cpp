@@ -94,33 +94,42 @@ std::array<Vec3, 4> CurvaturePatch::cornerLocations() const
 
 CurvatureGenerator CurvaturePatch::generatorAt(double a, double b) const
 {
+  return generatorAbout(a, b, Vec3{});
+}
+
+CurvatureGenerator CurvaturePatch::generatorAbout(double a, double b, Vec3 shift) const
+{
+  PatchFrame moved = frame;
+  moved.origin = frame.origin - shift;
   switch (method)
   {
     case CurvatureMethod::BentLine:
-      return bentLine(frame, kappaU, b);
+      return bentLine(moved, kappaU, b);
     case CurvatureMethod::TranslatedTangents:
-      return translatedTangents(frame, kappaU, kappaV, a, b);
+      return translatedTangents(moved, kappaU, kappaV, a, b);
     case CurvatureMethod::OsculatingCircles:
     {
-      CurvatureControlPoint c{ frame.origin, frame.normal, frame.u, kappaU, kappaV };
-      return osculatingCircles(c, frame.at(a, b), epsilon);
+      CurvatureControlPoint c{ moved.origin, moved.normal, moved.u, kappaU, kappaV };
+      return osculatingCircles(c, moved.at(a, b), epsilon);
     }
     case CurvatureMethod::ControlPoints:
       return cga::controlPoints(
-        controlPoints.data(), controlPoints.size(), frame.at(a, b), falloff, epsilon);
+        controlPoints.data(), controlPoints.size(), moved.at(a, b), falloff, epsilon, shift);
     case CurvatureMethod::Linear:
     {
       // each row carries the two generators along (x_i + b v): every row is the same curve
       const double hu = 0.5 * sizeU;
       const double t = 0.5 + a / sizeU;
-      return linearInterpolation(frame.at(-hu, b), corners[0], frame.at(hu, b), corners[1], t);
+      return linearInterpolation(moved.at(-hu, b), corners[0], moved.at(hu, b), corners[1], t);
     }
     case CurvatureMethod::Bilinear:
     {
-      const std::array<Vec3, 4> x = cornerLocations();
+      const double hu = 0.5 * sizeU, hv = 0.5 * sizeV;
+      const Vec3 x[4] = { moved.at(-hu, -hv), moved.at(hu, -hv), moved.at(-hu, hv),
+        moved.at(hu, hv) };
       const double t = 0.5 + a / sizeU;
       const double s = sizeV > 0.0 ? 0.5 + b / sizeV : 0.0;
-      return bilinearInterpolation(x.data(), corners.data(), s, t);
+      return bilinearInterpolation(x, corners.data(), s, t);
     }
   }
   return {};
@@ -128,14 +137,18 @@ CurvatureGenerator CurvaturePatch::generatorAt(double a, double b) const
 
 bool CurvaturePatch::map(double a, double b, Vec3& out, double& weight) const
 {
-  const CurvatureGenerator g = generatorAt(a, b);
+  const CurvatureGenerator g = generatorAbout(a, b, frame.origin);
   const Even k = exponential(g.exponent, rule);
   Vec3 image;
-  if (!sandwichPoint(k, frame.at(a, b), image) || !isFinite(image))
+  if (!sandwichPoint(k, Vec3{} + a * frame.u + b * frame.v, image) || !isFinite(image))
   {
     return false;
   }
-  out = image;
+  out = frame.origin + image;
+  if (!isFinite(out))
+  {
+    return false;
+  }
   weight = g.weight;
   return true;
 }

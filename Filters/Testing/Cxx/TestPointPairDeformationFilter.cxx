@@ -5,6 +5,7 @@
 
 #include "EventCounter.h"
 #include "ProgressLog.h"
+#include "TranslationChecks.h"
 #include "vtkAOSDataArrayTemplate.h"
 #include "TestSupport.h"
 #include "vtkCellArray.h"
@@ -1145,4 +1146,94 @@ TEST(PointPairDeformationFilter, HugeGeneratorCountIsRefusedWithOneErrorAndAnEmp
   filter->Update();
   EXPECT_EQ(events.errors, 2);
   EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), mesh->GetNumberOfPoints());
+}
+
+TEST(PointPairDeformationFilter, TranslatingMeshAndGeneratorsTranslatesTheOutput)
+{
+  // Four random generators on a random mesh, both moved by t (the mesh's points as doubles):
+  // the output moves by t, Displacement stays (the bound: TranslationChecks.h). Both rules.
+  Random random(77);
+  const auto generators = randomGenerators(random, 4, 0.4);
+  auto mesh = randomMesh(random, 40, 1.5);
+  for (int rule : { vtkPointPairDeformationFilter::EXACT, vtkPointPairDeformationFilter::PAPER })
+  {
+    SCOPED_TRACE("rule " + std::to_string(rule));
+    ExpectTranslationCovariant(
+      [&](const double t[3]) {
+        vtkNew<vtkPolyData> moved;
+        moved->DeepCopy(mesh);
+        for (vtkIdType i = 0; i < moved->GetNumberOfPoints(); ++i)
+        {
+          double p[3];
+          moved->GetPoint(i, p);
+          moved->GetPoints()->SetPoint(i, p[0] + t[0], p[1] + t[1], p[2] + t[2]);
+        }
+        vtkNew<vtkPointPairDeformationFilter> filter;
+        filter->SetInputData(moved);
+        for (const Generator& g : generators)
+        {
+          filter->AddGenerator(g.location.x + t[0], g.location.y + t[1], g.location.z + t[2],
+            g.direction.x, g.direction.y, g.direction.z, g.weight);
+        }
+        filter->SetExponentialRule(rule);
+        filter->Update();
+        return vtkSmartPointer<vtkDataSet>(filter->GetOutput());
+      },
+      { "Displacement" });
+  }
+}
+
+TEST(PointPairDeformationFilter, ALoneGeneratorOnAMeshPointFarAwayKeepsItExactly)
+{
+  // The field computes relative to its generators' mean, here the generator itself: the point
+  // on it is exactly the origin of that frame, the boost's fixed point, at 1e6 as at 0.
+  for (const double far : { 0.0, 1e6, 1e12 })
+  {
+    vtkNew<vtkPolyData> mesh;
+    vtkNew<vtkPoints> points;
+    points->SetDataType(VTK_DOUBLE);
+    points->InsertNextPoint(far + 0.3, -far + 0.7, 0.1);
+    points->InsertNextPoint(far + 0.5, -far + 0.7, 0.1);
+    mesh->SetPoints(points);
+    vtkNew<vtkPointPairDeformationFilter> filter;
+    filter->SetInputData(mesh);
+    filter->AddGenerator(far + 0.3, -far + 0.7, 0.1, 0.3, 1, -0.2, 2.0);
+    filter->Update();
+    const Vec3 p = pointOf(filter->GetOutput(), 0);
+    EXPECT_EQ(p.x, far + 0.3) << far;
+    EXPECT_EQ(p.y, -far + 0.7) << far;
+    EXPECT_EQ(p.z, 0.1) << far;
+    EXPECT_NE(pointOf(filter->GetOutput(), 1).x, far + 0.5) << "the neighbour moves";
+  }
+}
+
+TEST(PointPairDeformationFilter, SinglePrecisionBeyondTheLargestFloatIsAnError)
+{
+  // Double points at 1e39 (strength 0: the identity) written as floats would be inf: an error and
+  // an empty output instead; in double they pass.
+  Random random(5);
+  auto mesh = randomMesh(random, 3, 1.0);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    mesh->GetPoints()->SetPoint(i, p[0] + 1e39, p[1], p[2]);
+  }
+  for (const double strength : { 0.0, 1.0 })
+  {
+    vtkNew<vtkPointPairDeformationFilter> filter;
+    EventCounter events(filter);
+    filter->SetInputData(mesh);
+    filter->AddGenerator(1e39, 0, 0, 1, 0, 0, 0.5);
+    filter->SetStrength(strength);
+    filter->SetOutputPointsPrecision(vtkAlgorithm::SINGLE_PRECISION);
+    filter->Update();
+    EXPECT_EQ(events.errors, 1) << strength;
+    EXPECT_NE(events.lastError.find("OutputPointsPrecision"), std::string::npos) << events.lastError;
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0) << strength;
+    filter->SetOutputPointsPrecision(vtkAlgorithm::DEFAULT_PRECISION); // double, as the input
+    filter->Update();
+    EXPECT_EQ(events.errors, 1) << events.lastError;
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), mesh->GetNumberOfPoints()) << strength;
+  }
 }

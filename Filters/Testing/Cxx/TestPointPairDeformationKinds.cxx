@@ -253,9 +253,11 @@ TEST(PointPairDeformationKinds, ZeroPitchTwistIsARotationAndBadTwistsAreIgnored)
 namespace
 {
 // Huge weights and directions of every kind: translations, twists and dilations send points
-// far away (beyond float's range for float points); the output stays finite, such points are left
-// in place and counted in the one warning.
-TEST(PointPairDeformationKinds, HugeWeightsOfEveryKindGiveFiniteOutput)
+// far away. In double the output stays finite (points sent beyond the largest double are left in
+// place and counted in the one warning); float points (the default precision keeps floats) give
+// the same images as floats, or the single-precision error and an empty output exactly when the
+// double images or displacements go beyond the largest float.
+TEST(PointPairDeformationKinds, HugeWeightsOfEveryKindGiveFiniteOutputOrTheSinglePrecisionError)
 {
   Random random(45);
   for (int pointType : { VTK_FLOAT, VTK_DOUBLE })
@@ -271,28 +273,48 @@ TEST(PointPairDeformationKinds, HugeWeightsOfEveryKindGiveFiniteOutput)
     mesh->SetPoints(points);
     for (GeneratorKind kind : cgatest::kAllKinds)
     {
-      for (double weight : { 1e308, -1e308, 1e150, 1e40 })
+      for (double weight : { 1e308, -1e308, 1e150, 1e40, 1e-3 })
       {
         for (double length : { 1.0, 1e200, 1e-200 })
         {
-          vtkNew<vtkPointPairDeformationFilter> filter;
-          EventCounter events(filter);
-          filter->SetInputData(mesh);
-          filter->AddGenerator(0.1, 0.2, 0.3, 0, 0.6 * length, 0.8 * length, weight,
-            static_cast<double>(kind), 0.5);
-          filter->Update();
-          vtkPointSet* output = filter->GetOutput();
-          ASSERT_EQ(output->GetNumberOfPoints(), mesh->GetNumberOfPoints());
-          EXPECT_EQ(events.errors, 0);
-          vtkDataArray* displacement = output->GetPointData()->GetArray("Displacement");
-          for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+          SCOPED_TRACE("kind " + std::to_string(static_cast<int>(kind)) + " weight " +
+            std::to_string(weight) + " length " + std::to_string(length) + " points " +
+            std::to_string(pointType));
+          double largestInDouble = 0.0;
+          for (int precision : { vtkAlgorithm::DOUBLE_PRECISION, vtkAlgorithm::DEFAULT_PRECISION })
           {
-            const Vec3 p = pointOf(output, i);
-            EXPECT_TRUE(cga::isFinite(p)) << static_cast<int>(kind) << " " << weight;
-            double d[3];
-            displacement->GetTuple(i, d);
-            EXPECT_TRUE(std::isfinite(d[0]) && std::isfinite(d[1]) && std::isfinite(d[2]))
-              << static_cast<int>(kind) << " " << weight;
+            vtkNew<vtkPointPairDeformationFilter> filter;
+            EventCounter events(filter);
+            filter->SetInputData(mesh);
+            filter->SetOutputPointsPrecision(precision);
+            filter->AddGenerator(0.1, 0.2, 0.3, 0, 0.6 * length, 0.8 * length, weight,
+              static_cast<double>(kind), 0.5);
+            filter->Update();
+            vtkPointSet* output = filter->GetOutput();
+            const bool single = precision == vtkAlgorithm::DEFAULT_PRECISION && pointType == VTK_FLOAT;
+            if (single && largestInDouble > std::numeric_limits<float>::max())
+            {
+              EXPECT_EQ(events.errors, 1);
+              EXPECT_NE(events.lastError.find("OutputPointsPrecision"), std::string::npos)
+                << events.lastError;
+              EXPECT_EQ(output->GetNumberOfPoints(), 0);
+              continue;
+            }
+            ASSERT_EQ(output->GetNumberOfPoints(), mesh->GetNumberOfPoints());
+            EXPECT_EQ(events.errors, 0) << events.lastError;
+            vtkDataArray* displacement = output->GetPointData()->GetArray("Displacement");
+            for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+            {
+              const Vec3 p = pointOf(output, i);
+              EXPECT_TRUE(cga::isFinite(p));
+              double d[3];
+              displacement->GetTuple(i, d);
+              EXPECT_TRUE(std::isfinite(d[0]) && std::isfinite(d[1]) && std::isfinite(d[2]));
+              for (double value : { p.x, p.y, p.z, d[0], d[1], d[2] })
+              {
+                largestInDouble = std::max(largestInDouble, std::fabs(value));
+              }
+            }
           }
         }
       }

@@ -4,6 +4,7 @@
 #define GridSourceChecks_h
 
 #include "EventCounter.h"
+#include "TranslationChecks.h"
 #include "vtkCellArray.h"
 #include "vtkDataSet.h"
 #include "vtkIdList.h"
@@ -170,6 +171,29 @@ void ExpectTheSamePointsAtEveryDirectionLength(
     EXPECT_EQ(events.errors, 0) << "length " << length << ": " << events.lastError;
     ExpectSamePoints(unit->GetOutput(), scaled->GetOutput(), 1e-12, "length " + std::to_string(length));
   }
+}
+
+// Single-precision points beyond the largest float (vtkBoostedSinglePrecision.h): `farAway`
+// sets up the source; as floats its output is one error naming OutputPointsPrecision and empty,
+// as doubles it has no error and its largest coordinate is `largest`.
+template <class Source>
+void ExpectSinglePrecisionBeyondTheLargestFloatIsAnError(
+  const std::function<void(Source*)>& farAway, double largest)
+{
+  vtkNew<Source> source;
+  farAway(source);
+  EventCounter events(source);
+  source->SetOutputPointsPrecision(vtkAlgorithm::SINGLE_PRECISION);
+  source->Update();
+  EXPECT_EQ(events.errors, 1);
+  EXPECT_NE(events.lastError.find("OutputPointsPrecision"), std::string::npos) << events.lastError;
+  EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(source->GetOutput()->GetNumberOfCells(), 0);
+  source->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  source->Update();
+  EXPECT_EQ(events.errors, 1) << events.lastError;
+  EXPECT_GT(source->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_DOUBLE_EQ(LargestCoordinate(source->GetOutput()), largest);
 }
 
 #endif

@@ -4,6 +4,7 @@
 #include "BadParameterCases.h"
 #include "GridSourceChecks.h"
 #include "ProgressLog.h"
+#include "TranslationChecks.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkMath.h"
@@ -350,7 +351,9 @@ TEST(BoostedSurfaceSource, ReportsProgressAndAnAbortedUpdateIsEmpty)
 
 TEST(BoostedSurfaceSource, OutputIsCutExactlyAtTheClipSphereAboutTheCircleCenter)
 {
-  // Fig 1: circles boosted in their plane pass through the boost's pole near lambda = +-1.
+  // Fig 1: circles boosted in their plane pass through the boost's pole near lambda = +-1. No
+  // sample is the pole itself (lambda steps of 0.24 miss +-1): a sample at infinity drops its
+  // cells before the cut (README, Clipping), which would leave a notch inside the sphere.
   const double center[3] = { 0.3, -0.2, 0.1 };
   const double clipRadius = 4.0;
   for (int type : { vtkBoostedSurfaceSource::CIRCLES, vtkBoostedSurfaceSource::SURFACE })
@@ -359,7 +362,7 @@ TEST(BoostedSurfaceSource, OutputIsCutExactlyAtTheClipSphereAboutTheCircleCenter
     source->SetCircleCenter(center[0], center[1], center[2]);
     source->SetCircleNormal(0, 0, 1);
     source->SetLambdaRange(-3, 3);
-    source->SetLambdaResolution(24);
+    source->SetLambdaResolution(25);
     source->SetThetaResolution(256);
     source->SetClipRadius(clipRadius);
     source->SetOutputType(type);
@@ -441,4 +444,31 @@ TEST(BoostedSurfaceSource, ATinyBoostDirectionIsAWeakBoostNotAZeroVector)
       EXPECT_NEAR(std::sqrt(vtkMath::Distance2BetweenPoints(p.data(), center)), source->GetCircleRadius(), 1e-15);
     }
   }
+}
+
+TEST(BoostedSurfaceSource, TranslatingTheConfigurationTranslatesTheSurface)
+{
+  // Circle, boost location and direction off-axis; lambda kept where the surface stays bounded,
+  // so that no point comes near the (large) clip sphere. The bound: TranslationChecks.h.
+  ExpectTranslationCovariant([](const double t[3]) {
+    vtkNew<vtkBoostedSurfaceSource> source;
+    source->SetCircleCenter(0.1 + t[0], 0.2 + t[1], -0.3 + t[2]);
+    source->SetCircleNormal(1, 0.3, 0.2);
+    source->SetCircleRadius(0.8);
+    source->SetBoostDirection(0.4, 1, 0.2);
+    source->SetBoostAtCircleCenter(false);
+    source->SetBoostLocation(0.4 + t[0], 0.0 + t[1], 0.2 + t[2]);
+    source->SetLambdaRange(-0.3, 0.3);
+    source->SetLambdaResolution(12);
+    source->SetThetaResolution(24);
+    source->SetClipRadius(1e3);
+    source->Update();
+    return vtkSmartPointer<vtkDataSet>(source->GetOutput());
+  });
+}
+
+TEST(BoostedSurfaceSource, SinglePrecisionBeyondTheLargestFloatIsAnError)
+{
+  ExpectSinglePrecisionBeyondTheLargestFloatIsAnError<vtkBoostedSurfaceSource>(
+    [](vtkBoostedSurfaceSource* source) { source->SetCircleCenter(1e39, 0, 0); }, 1e39);
 }

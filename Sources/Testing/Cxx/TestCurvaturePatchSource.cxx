@@ -6,6 +6,7 @@
 #include "BadParameterCases.h"
 #include "GridSourceChecks.h"
 #include "ProgressLog.h"
+#include "TranslationChecks.h"
 #include "vtkDataArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -348,4 +349,70 @@ TEST(CurvaturePatchSource, DirectionsOfAnyNonZeroLengthGiveTheSamePatch)
       s->SetUDirection(0, 0.6 * length, 0.8 * length); // 1e160 was "the u direction must not be zero"
       s->SetVDirection(length, 0, 0);
     });
+}
+
+TEST(CurvaturePatchSource, TranslatingTheConfigurationTranslatesThePatch)
+{
+  // Every method, both rules, a tilted frame and control points off the origin, all moved by t
+  // (the bound: TranslationChecks.h). A clip sphere large enough to cut nothing.
+  for (int method = vtkCurvaturePatchSource::BENT_LINE; method <= vtkCurvaturePatchSource::BILINEAR;
+       ++method)
+  {
+    for (int rule : { vtkCurvaturePatchSource::EXACT, vtkCurvaturePatchSource::PAPER })
+    {
+      SCOPED_TRACE("method " + std::to_string(method) + " rule " + std::to_string(rule));
+      ExpectTranslationCovariant([method, rule](const double t[3]) {
+        vtkNew<vtkCurvaturePatchSource> source;
+        source->SetMethod(method);
+        source->SetExponentialRule(rule);
+        source->SetOrigin(0.3 + t[0], -0.2 + t[1], 0.1 + t[2]);
+        source->SetUDirection(1, 0.2, 0.1);
+        source->SetVDirection(-0.1, 1, 0.3);
+        source->AddControlPoint(1 + t[0], 1 + t[1], 0 + t[2], 0, 0, 1, 1, 0, 0, 0.5, -0.5);
+        source->AddControlPoint(-1 + t[0], 0 + t[1], 0 + t[2], 0, 1, 1, 1, 0, 0, 1.0, 0.3);
+        source->SetCorner2Direction(1, 0, 1);
+        source->SetUResolution(16);
+        source->SetVResolution(12);
+        source->SetClipRadius(1e6);
+        source->Update();
+        return vtkSmartPointer<vtkDataSet>(source->GetOutput());
+      });
+    }
+  }
+}
+
+TEST(CurvaturePatchSource, SinglePrecisionBeyondTheLargestFloatIsAnError)
+{
+  ExpectSinglePrecisionBeyondTheLargestFloatIsAnError<vtkCurvaturePatchSource>(
+    [](vtkCurvaturePatchSource* source) { source->SetOrigin(0, -2e39, 0); }, 2e39);
+}
+
+TEST(CurvaturePatchSource, ATinyPatchHasUnitNormals)
+{
+  // The default patch (Translated Tangents, umbilic curvatures 0.5) scaled by 1e-160: size
+  // 4e-160, curvatures 0.5e160. The squares of its central differences (1e-322) underflow; its
+  // normals are still unit vectors, along the unit patch's to 1e-2 (unscaled they were the
+  // fallback plane normal, up to 45 degrees off at the edges, or not finite). Not closer: the
+  // tiny samples themselves are less accurate, up(p) holding |p|^2 / 2 as a subnormal double.
+  vtkNew<vtkCurvaturePatchSource> unit, tiny;
+  tiny->SetSize(4e-160, 4e-160);
+  tiny->SetKappaU(0.5e160);
+  tiny->SetKappaV(0.5e160);
+  tiny->SetEpsilon(1e-12);
+  unit->SetEpsilon(1e-12);
+  unit->Update();
+  tiny->Update();
+  vtkDataArray* expected = unit->GetOutput()->GetPointData()->GetNormals();
+  vtkDataArray* normals = tiny->GetOutput()->GetPointData()->GetNormals();
+  ASSERT_TRUE(expected && normals);
+  ASSERT_EQ(normals->GetNumberOfTuples(), expected->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
+  {
+    const double* n = normals->GetTuple3(i);
+    ASSERT_TRUE(std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2])) << i;
+    EXPECT_NEAR(vtkMath::Norm(n), 1.0, 1e-6) << i;
+    double e[3];
+    expected->GetTuple(i, e);
+    EXPECT_LE(std::sqrt(vtkMath::Distance2BetweenPoints(n, e)), 1e-2) << i;
+  }
 }

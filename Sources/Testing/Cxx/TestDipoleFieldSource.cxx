@@ -5,6 +5,7 @@
 #include "EventCounter.h"
 #include "GridSourceChecks.h"
 #include "ProgressLog.h"
+#include "TranslationChecks.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
@@ -561,18 +562,23 @@ TEST(DipoleFieldSource, ARotationRowTurnsTheGridAndHasNoPotential)
 
 namespace
 {
-// Two generators of each kind with huge weights and directions: every array stays finite in both
-// precisions (values saturate at the precision's largest), and nothing is an error.
-TEST(DipoleFieldSource, HugeWeightsOfEveryKindGiveFiniteArrays)
+// Two generators of each kind with huge weights and directions: in double every array stays
+// finite (values saturate at the largest double) and nothing is an error; in single precision
+// the same arrays are either the double ones as floats (no error) or, when the double ones go
+// beyond the largest float, the single-precision error and an empty output.
+TEST(DipoleFieldSource, HugeWeightsOfEveryKindGiveFiniteArraysOrTheSinglePrecisionError)
 {
-  for (int precision : { vtkAlgorithm::SINGLE_PRECISION, vtkAlgorithm::DOUBLE_PRECISION })
+  for (int kind = vtkDipoleFieldSource::POINT_PAIR; kind <= vtkDipoleFieldSource::TRANSLATION; ++kind)
   {
-    for (int kind = vtkDipoleFieldSource::POINT_PAIR; kind <= vtkDipoleFieldSource::TRANSLATION; ++kind)
+    for (double weight : { 1e308, -1e308, 1e150, 1e40, 1e-3 })
     {
-      for (double weight : { 1e308, -1e308, 1e150, 1e40 })
+      for (double length : { 1.0, 1e200 })
       {
-        for (double length : { 1.0, 1e200 })
+        double largestInDouble = 0.0;
+        for (int precision : { vtkAlgorithm::DOUBLE_PRECISION, vtkAlgorithm::SINGLE_PRECISION })
         {
+          SCOPED_TRACE("kind " + std::to_string(kind) + " weight " + std::to_string(weight) +
+            " length " + std::to_string(length) + " precision " + std::to_string(precision));
           vtkNew<vtkDipoleFieldSource> source;
           EventCounter counter(source);
           source->RemoveAllGenerators();
@@ -581,17 +587,26 @@ TEST(DipoleFieldSource, HugeWeightsOfEveryKindGiveFiniteArrays)
           source->SetDimensions(6, 5, 1);
           source->SetOutputPointsPrecision(precision);
           source->Update();
-          EXPECT_EQ(counter.errors, 0);
           vtkPointData* pointData = source->GetOutput()->GetPointData();
+          const bool beyondFloat = largestInDouble > std::numeric_limits<float>::max();
+          if (precision == vtkAlgorithm::SINGLE_PRECISION && beyondFloat)
+          {
+            EXPECT_EQ(counter.errors, 1);
+            EXPECT_NE(counter.lastError.find("OutputPointsPrecision"), std::string::npos);
+            EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
+            continue;
+          }
+          EXPECT_EQ(counter.errors, 0) << counter.lastError;
           ASSERT_EQ(pointData->GetNumberOfArrays(), 5);
           for (int a = 0; a < pointData->GetNumberOfArrays(); ++a)
           {
             vtkDataArray* array = pointData->GetArray(a);
             for (vtkIdType i = 0; i < array->GetNumberOfValues(); ++i)
             {
-              EXPECT_TRUE(std::isfinite(array->GetComponent(i / array->GetNumberOfComponents(),
-                static_cast<int>(i % array->GetNumberOfComponents()))))
-                << array->GetName() << " kind " << kind << " weight " << weight;
+              const double value = array->GetComponent(i / array->GetNumberOfComponents(),
+                static_cast<int>(i % array->GetNumberOfComponents()));
+              EXPECT_TRUE(std::isfinite(value)) << array->GetName();
+              largestInDouble = std::max(largestInDouble, std::fabs(value));
             }
           }
         }
@@ -600,3 +615,51 @@ TEST(DipoleFieldSource, HugeWeightsOfEveryKindGiveFiniteArrays)
   }
 }
 } // namespace
+
+TEST(DipoleFieldSource, TranslatingGridAndGeneratorsLeavesTheFieldAsItIs)
+{
+  // The Fig 14 pair and a tilted third generator, the grid origin and the generators moved by t
+  // (GeneratorsTranslation): every displacement and the potential
+  // stay what they were (the bound: TranslationChecks.h, with the field's derivative bounded by
+  // sum_i |w_i v_i| / eps = (0.35 + 0.35 + 0.4 |(0.5, -2, 1)|) / 0.1 < 16). Both rules.
+  for (int rule : { vtkDipoleFieldSource::EXACT, vtkDipoleFieldSource::PAPER })
+  {
+    SCOPED_TRACE("rule " + std::to_string(rule));
+    ExpectTranslationCovariant(
+      [rule](const double t[3]) {
+        vtkNew<vtkDipoleFieldSource> source;
+        addFig14Generators(source);
+        source->AddGenerator(0.2, 0.7, 0.1, 0.5, -2.0, 1.0, -0.4);
+        source->SetGeneratorsTranslation(t[0], t[1], t[2]);
+        source->SetOrigin(-2 + t[0], -2 + t[1], -0.2 + t[2]);
+        source->SetDimensions(21, 21, 3);
+        source->SetSpacing(0.2, 0.2, 0.2);
+        source->SetExponentialRule(rule);
+        source->Update();
+        return vtkSmartPointer<vtkDataSet>(source->GetOutput());
+      },
+      { std::begin(ArrayNames), std::end(ArrayNames) }, 16.0);
+  }
+}
+
+TEST(DipoleFieldSource, SinglePrecisionBeyondTheLargestFloatIsAnError)
+{
+  // A weight of 1e300 saturates the potential near 1e300 (documented, in double): as floats the
+  // arrays would hold inf, so single precision is an error and an empty output.
+  vtkNew<vtkDipoleFieldSource> source;
+  EventCounter events(source);
+  source->RemoveAllGenerators();
+  source->AddGenerator(0.1, 0, 0, 1, 0, 0, 1e300);
+  source->SetOutputPointsPrecision(vtkAlgorithm::SINGLE_PRECISION);
+  source->Update();
+  EXPECT_EQ(events.errors, 1);
+  EXPECT_NE(events.lastError.find("OutputPointsPrecision"), std::string::npos) << events.lastError;
+  EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(source->GetOutput()->GetPointData()->GetNumberOfArrays(), 0);
+  source->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  source->Update();
+  EXPECT_EQ(events.errors, 1) << events.lastError;
+  vtkDataArray* potential = source->GetOutput()->GetPointData()->GetArray("DipolePotential");
+  ASSERT_TRUE(potential);
+  EXPECT_GT(LargestValue(potential), 1e300);
+}

@@ -6,6 +6,7 @@
 #include "BadParameterCases.h"
 #include "GridSourceChecks.h"
 #include "ProgressLog.h"
+#include "TranslationChecks.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkMath.h"
@@ -570,4 +571,35 @@ TEST(HopfFibrationSource, CircleNormalOfAnyNonZeroLengthGivesTheSameFibers)
     [](vtkHopfFibrationSource* s, double length) {
       s->SetCircleNormal(length / 3, 2 * length / 3, 2 * length / 3);
     });
+}
+
+TEST(HopfFibrationSource, TranslatingTheCircleTranslatesTheFibration)
+{
+  // Computed for the unit circle and carried to the base circle by a similarity, so exact up to
+  // the final translation: the bound of TranslationChecks.h holds, fibers and meshes, both modes.
+  for (int mode : { vtkHopfFibrationSource::PAPER, vtkHopfFibrationSource::CLASSICAL })
+  {
+    for (int type : { vtkHopfFibrationSource::FIBERS, vtkHopfFibrationSource::TWISTOR_MESH })
+    {
+      SCOPED_TRACE("mode " + std::to_string(mode) + " type " + std::to_string(type));
+      ExpectTranslationCovariant([mode, type](const double t[3]) {
+        vtkNew<vtkHopfFibrationSource> source;
+        source->SetMode(mode);
+        source->SetOutputType(type);
+        source->SetCircleCenter(0.2 + t[0], -0.1 + t[1], 0.3 + t[2]);
+        source->SetCircleNormal(0.3, 0.4, 1);
+        source->SetCircleRadius(0.7);
+        source->SetPhiRange(-1.5, 1.2); // fibers of a bounded size
+        source->SetClipRadius(1e3);     // cuts nothing
+        source->Update();
+        return vtkSmartPointer<vtkDataSet>(source->GetOutput());
+      });
+    }
+  }
+}
+
+TEST(HopfFibrationSource, SinglePrecisionBeyondTheLargestFloatIsAnError)
+{
+  ExpectSinglePrecisionBeyondTheLargestFloatIsAnError<vtkHopfFibrationSource>(
+    [](vtkHopfFibrationSource* source) { source->SetCircleCenter(0, 0, 1e39); }, 1e39);
 }

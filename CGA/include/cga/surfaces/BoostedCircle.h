@@ -21,6 +21,11 @@ struct BoostedCircle
   Vec3 boostLocation{ 0, 0, 0 };
   Vec3 boostDirection{ 1, 0, 0 }; // its length is the generator's weight
 
+  /// The same family moved by -center: the circle about the origin, the boost's location
+  /// relative to the circle's. Far from the origin its images (plus center) keep their precision:
+  /// up(p) holds |p|^2, so a family at distance t rounds like eps t^2, the centered one like eps t.
+  BoostedCircle centered() const;
+
   /// Empty when the parameters describe a valid family, otherwise what is wrong with them.
   std::string validate() const;
 

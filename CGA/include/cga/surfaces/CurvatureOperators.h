@@ -78,12 +78,14 @@ double osculatingTerm(const CurvatureControlPoint& c, Vec3 along, double kappa, 
 CurvatureGenerator osculatingCircles(const CurvatureControlPoint& c, Vec3 p, double epsilon);
 
 /// Eq 21-22: K = exp(-sum_i W_i tau(x_i, n_i)), W_i = (kappaU_i/(d_ui^2 + eps) +
-/// kappaV_i/(d_vi^2 + eps)) / (k |p - x_i|^2 + eps), k the falloff.
+/// kappaV_i/(d_vi^2 + eps)) / (k |p - x_i|^2 + eps), k the falloff. With `shift`, of the
+/// control points moved by -shift (p is then given moved too).
 CurvatureGenerator controlPoints(const CurvatureControlPoint* points,
                                  std::size_t count,
                                  Vec3 p,
                                  double falloff,
-                                 double epsilon);
+                                 double epsilon,
+                                 Vec3 shift = Vec3{});
 
 /// A corner generator of eq 24-26: weight * tau(location, direction).
 struct CornerGenerator

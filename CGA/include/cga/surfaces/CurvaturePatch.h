@@ -60,7 +60,13 @@ struct CurvaturePatch
   /// E(a, b) and the local weight.
   CurvatureGenerator generatorAt(double a, double b) const;
 
-  /// The image of p(a, b); false (out unchanged) when it is at infinity or not finite.
+  /// The image of p(a, b); false (out unchanged) when it is at infinity or not finite. Computed
+  /// about the origin (the patch and its control points moved by -origin, the image moved back),
+  /// so that far from the space origin it rounds like eps |origin|, not eps |origin|^2.
   bool map(double a, double b, Vec3& out, double& weight) const;
+
+private:
+  /// E(a, b) of the patch moved by -shift.
+  CurvatureGenerator generatorAbout(double a, double b, Vec3 shift) const;
 };
 } // namespace cga

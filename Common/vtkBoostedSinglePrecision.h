@@ -1,0 +1,47 @@
+// The one rule of single-precision output, in every class that writes floats (points, and the
+// dipole field's arrays): a finite value beyond the largest float (FLT_MAX, about 3.4e38) would
+// become inf, so it is an error naming the class, with an empty output, instead.
+#ifndef vtkBoostedSinglePrecision_h
+#define vtkBoostedSinglePrecision_h
+
+#include <cfloat>  // for FLT_MAX
+#include <cmath>   // for std::fabs
+#include <sstream> // for the message
+#include <string>  // for the problem
+
+/// The largest |value| of the finite ones among `count` values at `values` (0 for none).
+template <typename Value, typename Count>
+double vtkBoostedLargestFinite(const Value* values, Count count)
+{
+  double largest = 0.0;
+  for (Count i = 0; i < count; ++i)
+  {
+    const double a = std::fabs(static_cast<double>(values[i]));
+    largest = a > largest && std::isfinite(a) ? a : largest;
+  }
+  return largest;
+}
+
+/// The error for single-precision output whose `what` ("the points reach 1e+39,", "the images
+/// of 3 points are") are beyond the largest float.
+inline std::string vtkBoostedSinglePrecisionProblem(const std::string& what)
+{
+  std::ostringstream message;
+  message << what << " beyond the largest single-precision value (" << FLT_MAX
+          << "): set OutputPointsPrecision to Double (DOUBLE_PRECISION); the output is empty";
+  return message.str();
+}
+
+/// Empty when `largest` (the largest |value| of `name`) fits in a float, otherwise the error.
+inline std::string vtkBoostedSinglePrecisionProblem(double largest, const std::string& name)
+{
+  if (!(largest > FLT_MAX))
+  {
+    return {};
+  }
+  std::ostringstream what;
+  what << name << " reach " << largest << ",";
+  return vtkBoostedSinglePrecisionProblem(what.str());
+}
+
+#endif

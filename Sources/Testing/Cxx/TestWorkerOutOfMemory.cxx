@@ -1,0 +1,87 @@
+// A std::bad_alloc in a vtkSMPTools worker thread (an allocation failing inside a source's or the
+// filter's per-block work) is one error and an empty output, not std::terminate: the project's
+// work loop (vtkBoostedBlockLoop) catches it in the worker and throws it again on the calling
+// thread, where vtkBoostedMemoryBudget::Run (the grid driver, the dipole field, the filter) turns
+// it into the error. Threads: the STDThread backend with two threads, so the failing block runs
+// in a worker thread (an exception leaving one terminates the process).
+#include "EventCounter.h"
+#include "vtkBoostedBlockLoop.h"
+#include "vtkBoostedGridDriver.h"
+#include "vtkBoostedMemoryBudget.h"
+#include "vtkBoostedSurfaceSource.h"
+#include "vtkInformation.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <new>
+#include <thread>
+
+namespace
+{
+void useThreads()
+{
+  vtkSMPTools::SetBackend("STDThread");
+  vtkSMPTools::Initialize(2);
+}
+}
+
+TEST(WorkerOutOfMemory, TheBlockLoopRethrowsOnTheCallingThreadAndRunMakesOneError)
+{
+  useThreads();
+  vtkNew<vtkBoostedSurfaceSource> algorithm; // any algorithm: it reports the error
+  EventCounter events(algorithm);
+  std::atomic<int> chunksOfLaterBlocks{ 0 }, failedOffTheCallingThread{ 0 };
+  const std::thread::id caller = std::this_thread::get_id();
+  // 4 blocks; every chunk of the second one fails, on whichever thread runs it.
+  const vtkIdType block = vtkBoostedBlockLoop::SamplesPerBlock;
+  const bool ran = vtkBoostedMemoryBudget::Run(algorithm, [&] {
+    vtkBoostedBlockLoop::For(algorithm, 0, 4 * block, 1, [&](vtkIdType first, vtkIdType) {
+      if (first >= 2 * block)
+      {
+        ++chunksOfLaterBlocks;
+      }
+      else if (first >= block)
+      {
+        failedOffTheCallingThread += std::this_thread::get_id() != caller;
+        throw std::bad_alloc();
+      }
+    });
+  });
+  EXPECT_FALSE(ran);
+  EXPECT_EQ(events.errors, 1);
+  EXPECT_NE(events.lastError.find("out of memory"), std::string::npos) << events.lastError;
+  EXPECT_GT(failedOffTheCallingThread.load(), 0) << "the failure must happen in a worker thread";
+  EXPECT_EQ(chunksOfLaterBlocks.load(), 0) << "no block runs after the failing one";
+}
+
+TEST(WorkerOutOfMemory, AGridSampleThatFailsToAllocateLeavesTheOutputEmpty)
+{
+  useThreads();
+  vtkNew<vtkBoostedSurfaceSource> source;
+  EventCounter events(source);
+  vtkNew<vtkInformation> request;
+  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+  const double center[3] = { 0, 0, 0 };
+  vtkBoostedGridDriver driver(source, request, center, 10.0, vtkAlgorithm::DOUBLE_PRECISION);
+  ASSERT_TRUE(driver.Prepare("", 512, 512, false, true));
+  vtkBoostedGridBuilder& grid = driver.Grid();
+  EXPECT_FALSE(driver.SampleGrid([&grid](int r, int c) {
+    if (r == 300 && c == 7)
+    {
+      throw std::bad_alloc();
+    }
+    const double p[3] = { 0.01 * c, 0.01 * r, 0.0 };
+    grid.SetPoint(r, c, p);
+  }));
+  vtkNew<vtkPolyData> output;
+  driver.Build(output);
+  EXPECT_EQ(events.errors, 1) << events.lastError;
+  EXPECT_EQ(output->GetNumberOfPoints(), 0);
+  EXPECT_EQ(output->GetNumberOfCells(), 0);
+}
