@@ -6,6 +6,7 @@
 #include "EventCounter.h"
 #include "GeneratorKindReference.h"
 #include "TestSupport.h"
+#include "TranslationChecks.h"
 #include "vtkDoubleArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
@@ -319,6 +320,63 @@ TEST(PointPairDeformationKinds, HugeWeightsOfEveryKindGiveFiniteOutputOrTheSingl
         }
       }
     }
+  }
+}
+} // namespace
+
+namespace
+{
+// Rows of every kind, mixed, on a mesh, all moved by t: the output moves by t and Displacement
+// stays (the field builds every kind at its location relative to the field's center; the bound:
+// TranslationChecks.h, the derivative bounded by sum_i |w_i| max(1, |pitch|) |v_i| / eps < 40).
+TEST(PointPairDeformationKinds, TranslatingRowsOfEveryKindAndTheMeshTranslatesTheOutput)
+{
+  Random random(91);
+  vtkNew<vtkPolyData> mesh;
+  vtkNew<vtkPoints> points;
+  points->SetDataType(VTK_DOUBLE);
+  for (int i = 0; i < 30; ++i)
+  {
+    const Vec3 p = random.vec3(1.5);
+    points->InsertNextPoint(p.x, p.y, p.z);
+  }
+  mesh->SetPoints(points);
+  struct Row
+  {
+    Vec3 location, direction;
+    double weight, kind, pitch;
+  };
+  std::vector<Row> rows;
+  for (GeneratorKind kind : cgatest::kAllKinds)
+  {
+    rows.push_back({ random.vec3(1.0), random.vec3(1.0), 0.2, static_cast<double>(kind), 0.3 });
+  }
+  for (int rule : { vtkPointPairDeformationFilter::EXACT, vtkPointPairDeformationFilter::PAPER })
+  {
+    SCOPED_TRACE("rule " + std::to_string(rule));
+    ExpectTranslationCovariant(
+      [&](const double t[3]) {
+        vtkNew<vtkPolyData> moved;
+        moved->DeepCopy(mesh);
+        for (vtkIdType i = 0; i < moved->GetNumberOfPoints(); ++i)
+        {
+          double p[3];
+          moved->GetPoint(i, p);
+          moved->GetPoints()->SetPoint(i, p[0] + t[0], p[1] + t[1], p[2] + t[2]);
+        }
+        vtkNew<vtkPointPairDeformationFilter> filter;
+        filter->SetInputData(moved);
+        filter->SetEpsilon(0.05);
+        for (const Row& r : rows)
+        {
+          filter->AddGenerator(r.location.x + t[0], r.location.y + t[1], r.location.z + t[2],
+            r.direction.x, r.direction.y, r.direction.z, r.weight, r.kind, r.pitch);
+        }
+        filter->SetExponentialRule(rule);
+        filter->Update();
+        return vtkSmartPointer<vtkDataSet>(filter->GetOutput());
+      },
+      { "Displacement" }, 40.0);
   }
 }
 } // namespace
