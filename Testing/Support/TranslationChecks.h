@@ -19,6 +19,8 @@
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
 #include <gtest/gtest.h>
@@ -61,6 +63,20 @@ inline double LargestValue(vtkDataArray* array)
 // build(t) updates the configuration moved by t and returns its output. At |t| = 1e2, 1e4 and
 // 1e6 (along a fixed unit direction) the output equals build(0)'s, its points moved by t and the
 // named point arrays unchanged, within TranslationTolerance (the largest error is reported).
+// A copy of `mesh` with every point moved by t (in double).
+inline vtkSmartPointer<vtkPolyData> TranslatedCopy(vtkPolyData* mesh, const double t[3])
+{
+  auto moved = vtkSmartPointer<vtkPolyData>::New();
+  moved->DeepCopy(mesh);
+  for (vtkIdType i = 0; i < moved->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    moved->GetPoint(i, p);
+    moved->GetPoints()->SetPoint(i, p[0] + t[0], p[1] + t[1], p[2] + t[2]);
+  }
+  return moved;
+}
+
 inline void ExpectTranslationCovariant(
   const std::function<vtkSmartPointer<vtkDataSet>(const double t[3])>& build,
   const std::vector<std::string>& invariantArrays = {}, double derivative = 1.0)

@@ -1160,16 +1160,8 @@ TEST(PointPairDeformationFilter, TranslatingMeshAndGeneratorsTranslatesTheOutput
     SCOPED_TRACE("rule " + std::to_string(rule));
     ExpectTranslationCovariant(
       [&](const double t[3]) {
-        vtkNew<vtkPolyData> moved;
-        moved->DeepCopy(mesh);
-        for (vtkIdType i = 0; i < moved->GetNumberOfPoints(); ++i)
-        {
-          double p[3];
-          moved->GetPoint(i, p);
-          moved->GetPoints()->SetPoint(i, p[0] + t[0], p[1] + t[1], p[2] + t[2]);
-        }
         vtkNew<vtkPointPairDeformationFilter> filter;
-        filter->SetInputData(moved);
+        filter->SetInputData(TranslatedCopy(mesh, t));
         for (const Generator& g : generators)
         {
           filter->AddGenerator(g.location.x + t[0], g.location.y + t[1], g.location.z + t[2],

@@ -356,16 +356,8 @@ TEST(PointPairDeformationKinds, TranslatingRowsOfEveryKindAndTheMeshTranslatesTh
     SCOPED_TRACE("rule " + std::to_string(rule));
     ExpectTranslationCovariant(
       [&](const double t[3]) {
-        vtkNew<vtkPolyData> moved;
-        moved->DeepCopy(mesh);
-        for (vtkIdType i = 0; i < moved->GetNumberOfPoints(); ++i)
-        {
-          double p[3];
-          moved->GetPoint(i, p);
-          moved->GetPoints()->SetPoint(i, p[0] + t[0], p[1] + t[1], p[2] + t[2]);
-        }
         vtkNew<vtkPointPairDeformationFilter> filter;
-        filter->SetInputData(moved);
+        filter->SetInputData(TranslatedCopy(mesh, t));
         filter->SetEpsilon(0.05);
         for (const Row& r : rows)
         {
