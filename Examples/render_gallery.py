@@ -24,6 +24,8 @@ FIGURES = [
     "fig12_bilinear_patches",
     "fig13_dipole",
     "fig14_dipole_methods",
+    "twisted_bar",
+    "boost_versus_twist",
 ]
 
 

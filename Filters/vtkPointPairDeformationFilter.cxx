@@ -4,6 +4,7 @@
 #include "vtkArrayDispatch.h"
 #include "vtkBoostedBlockLoop.h"
 #include "vtkBoostedExponentialRule.h"
+#include "vtkBoostedGeneratorRows.h"
 #include "vtkBoostedMemoryBudget.h"
 #include "vtkBoostedRowList.h"
 #include "vtkBoostedSurfacesAbort.h"
@@ -143,9 +144,42 @@ bool hasOneTuplePerPoint(vtkDataArray* array, vtkIdType points, std::string& pro
   return false;
 }
 
+// The optional 1-component array `name` of the Generators input: null when there is none (or no
+// name); false with `problem` set when it has the wrong type, components or length.
+bool optionalPortArray(vtkPointData* pointData, const char* name, const char* what,
+  vtkIdType points, vtkDataArray*& array, std::string& problem)
+{
+  array = nullptr;
+  vtkAbstractArray* found = name && *name ? pointData->GetAbstractArray(name) : nullptr;
+  if (!found)
+  {
+    return true;
+  }
+  array = vtkDataArray::SafeDownCast(found);
+  if (!array || array->GetNumberOfComponents() != 1)
+  {
+    problem = std::string("the Generators point array '") + name +
+      "' must be a numeric array of 1 component (" + what + "), it is a " +
+      found->GetClassName() + " of " + std::to_string(found->GetNumberOfComponents()) +
+      " components";
+    return false;
+  }
+  return hasOneTuplePerPoint(array, points, problem);
+}
+
+// The names of the Generators input's arrays (the filter's *ArrayName properties).
+struct GeneratorPortArrays
+{
+  const char* Direction;
+  const char* Weight;
+  bool UseWeights;
+  const char* Kind;
+  const char* Pitch;
+};
+
 // Reads the generators of the second input port; false with `problem` set on bad arrays.
-bool readGeneratorPort(vtkPointSet* generators, const char* directionName, const char* weightName,
-  bool useWeights, std::vector<cga::PointPairGenerator>& out, std::string& problem)
+bool readGeneratorPort(vtkPointSet* generators, const GeneratorPortArrays& names,
+  std::vector<cga::GeneratorParameters>& out, std::string& problem)
 {
   const vtkIdType count = generators->GetNumberOfPoints();
   if (count == 0)
@@ -153,7 +187,7 @@ bool readGeneratorPort(vtkPointSet* generators, const char* directionName, const
     return true;
   }
   vtkPointData* pointData = generators->GetPointData();
-  const std::string direction = directionName ? directionName : "";
+  const std::string direction = names.Direction ? names.Direction : "";
   vtkAbstractArray* directionArray = pointData->GetAbstractArray(direction.c_str());
   if (direction.empty() || !directionArray)
   {
@@ -175,9 +209,9 @@ bool readGeneratorPort(vtkPointSet* generators, const char* directionName, const
     return false;
   }
   vtkDataArray* weights = nullptr;
-  if (useWeights)
+  if (names.UseWeights)
   {
-    const std::string weight = weightName ? weightName : "";
+    const std::string weight = names.Weight ? names.Weight : "";
     vtkAbstractArray* weightArray = pointData->GetAbstractArray(weight.c_str());
     if (weight.empty() || !weightArray)
     {
@@ -199,14 +233,31 @@ bool readGeneratorPort(vtkPointSet* generators, const char* directionName, const
       return false;
     }
   }
+  vtkDataArray* kinds = nullptr;
+  vtkDataArray* pitches = nullptr;
+  if (!optionalPortArray(pointData, names.Kind, "kinds", count, kinds, problem) ||
+    !optionalPortArray(pointData, names.Pitch, "pitches", count, pitches, problem))
+  {
+    return false;
+  }
   out.reserve(out.size() + static_cast<std::size_t>(count));
   for (vtkIdType i = 0; i < count; ++i)
   {
+    cga::GeneratorParameters g;
+    if (kinds &&
+      !vtkBoostedGeneratorRows::ReadKind(kinds->GetComponent(i, 0),
+        "the Generators point " + std::to_string(i) + " ('" + names.Kind + "')", g.kind, problem))
+    {
+      return false;
+    }
     double x[3], v[3];
     generators->GetPoint(i, x);
     directions->GetTuple(i, v);
-    out.push_back({ { x[0], x[1], x[2] }, { v[0], v[1], v[2] },
-      weights ? weights->GetComponent(i, 0) : 1.0 });
+    g.location = { x[0], x[1], x[2] };
+    g.direction = { v[0], v[1], v[2] };
+    g.weight = weights ? weights->GetComponent(i, 0) : 1.0;
+    g.pitch = pitches ? pitches->GetComponent(i, 0) : 0.0;
+    out.push_back(g);
   }
   return true;
 }
@@ -286,29 +337,46 @@ void deformPoints(vtkPointPairDeformationFilter* self, const cga::PointPairField
 } // namespace
 
 vtkPointPairDeformationFilter::vtkPointPairDeformationFilter()
-  : Generators(new vtkBoostedRowList(this, "Generator", std::vector<double>(7, 0.0)))
+  : Generators(new vtkBoostedRowList(this, "Generator", vtkBoostedGeneratorRows::BlankRow()))
 {
+  static_assert(vtkBoostedGeneratorKinds<vtkPointPairDeformationFilter>(), "");
   this->SetNumberOfInputPorts(2);
   this->SetGeneratorDirectionArrayName("Direction");
   this->SetGeneratorWeightArrayName("Weight");
+  this->SetGeneratorKindArrayName("Kind");
+  this->SetGeneratorPitchArrayName("Pitch");
 }
 
 vtkPointPairDeformationFilter::~vtkPointPairDeformationFilter()
 {
   this->SetGeneratorDirectionArrayName(nullptr);
   this->SetGeneratorWeightArrayName(nullptr);
+  this->SetGeneratorKindArrayName(nullptr);
+  this->SetGeneratorPitchArrayName(nullptr);
 }
 
 int vtkPointPairDeformationFilter::AddGenerator(
   double x, double y, double z, double vx, double vy, double vz, double weight)
 {
-  return this->Generators->Add({ x, y, z, vx, vy, vz, weight });
+  return this->AddGenerator(x, y, z, vx, vy, vz, weight, POINT_PAIR, 0.0);
+}
+
+int vtkPointPairDeformationFilter::AddGenerator(double x, double y, double z, double vx,
+  double vy, double vz, double weight, double kind, double pitch)
+{
+  return this->Generators->Add({ x, y, z, vx, vy, vz, weight, kind, pitch });
 }
 
 void vtkPointPairDeformationFilter::SetGenerator(
   int index, double x, double y, double z, double vx, double vy, double vz, double weight)
 {
-  this->Generators->Set(index, { x, y, z, vx, vy, vz, weight });
+  this->SetGenerator(index, x, y, z, vx, vy, vz, weight, POINT_PAIR, 0.0);
+}
+
+void vtkPointPairDeformationFilter::SetGenerator(int index, double x, double y, double z,
+  double vx, double vy, double vz, double weight, double kind, double pitch)
+{
+  this->Generators->Set(index, { x, y, z, vx, vy, vz, weight, kind, pitch });
 }
 
 vtkBoostedRowListMethods(vtkPointPairDeformationFilter, Generator, Generators)
@@ -397,31 +465,37 @@ int vtkPointPairDeformationFilter::RequestData(
   {
     return 1; // the output stays empty
   }
-  std::vector<cga::PointPairGenerator> generators;
+  std::vector<cga::GeneratorParameters> generators(this->GetNumberOfGenerators());
+  std::string problem;
   for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
   {
-    const double* g = this->Generators->Row(i);
     const double* location =
       this->Generators->Location(i, this->SelectedGenerator, this->SelectedGeneratorLocation);
-    generators.push_back(
-      { { location[0], location[1], location[2] }, { g[3], g[4], g[5] }, g[6] });
+    if (!vtkBoostedGeneratorRows::Read(
+          this->Generators->Row(i), location, i, generators[i], problem))
+    {
+      vtkErrorMacro(<< problem);
+      return 1; // the output stays empty
+    }
   }
   if (vtkPointSet* generatorSet = vtkPointSet::GetData(inputVector[1]))
   {
-    std::string problem;
-    if (!readGeneratorPort(generatorSet, this->GeneratorDirectionArrayName,
-          this->GeneratorWeightArrayName, this->UseGeneratorWeightArray, generators, problem))
+    const GeneratorPortArrays names{ this->GeneratorDirectionArrayName,
+      this->GeneratorWeightArrayName, this->UseGeneratorWeightArray, this->GeneratorKindArrayName,
+      this->GeneratorPitchArrayName };
+    if (!readGeneratorPort(generatorSet, names, generators, problem))
     {
       vtkErrorMacro(<< problem);
       return 1;
     }
   }
-  const cga::PointPairField field(generators, this->Falloff, this->Epsilon);
+  const cga::PointPairField field(
+    generators.data(), generators.size(), this->Falloff, this->Epsilon);
   if (field.skippedGenerators() > 0)
   {
     vtkWarningMacro(<< field.skippedGenerators() << " of " << generators.size()
                     << " generators were ignored: their direction is zero, or their location, "
-                       "direction or weight is not finite");
+                       "direction, weight or (a twist's) pitch is not finite");
   }
 
   // Before any allocation: an image's or a rectilinear grid's dimensions alone give its size,
@@ -510,6 +584,10 @@ void vtkPointPairDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
      << (this->GeneratorDirectionArrayName ? this->GeneratorDirectionArrayName : "(none)") << "\n";
   os << indent << "GeneratorWeightArrayName: "
      << (this->GeneratorWeightArrayName ? this->GeneratorWeightArrayName : "(none)") << "\n";
+  os << indent << "GeneratorKindArrayName: "
+     << (this->GeneratorKindArrayName ? this->GeneratorKindArrayName : "(none)") << "\n";
+  os << indent << "GeneratorPitchArrayName: "
+     << (this->GeneratorPitchArrayName ? this->GeneratorPitchArrayName : "(none)") << "\n";
   os << indent << "UseGeneratorWeightArray: " << this->UseGeneratorWeightArray << "\n";
   os << indent << "Strength: " << this->Strength << "\n";
   os << indent << "Falloff: " << this->Falloff << "\n";

@@ -2,24 +2,33 @@
  * @class   vtkPointPairDeformationFilter
  * @brief   warps any mesh through a field of point-pair generators (Colapinto 2014, eq 23, Fig 11)
  *
- * Generators i sit at locations x_i with directions v_i and weights w_i. At each point p of the
- * input the generators sum, weighted by their inverse squared distance, into the bivector
+ * Generators i sit at locations x_i with directions v_i, weights w_i and kinds. At each point p
+ * of the input the generators sum, weighted by their inverse squared distance, into the bivector
  *
- *   B(p) = sum_i w_i tau(x_i, v_i) / (Falloff |p - x_i|^2 + Epsilon),
+ *   B(p) = sum_i w_i G_i / (Falloff |p - x_i|^2 + Epsilon),
  *
- * tau the null point pair (the tangent no ^ v_i translated to x_i; |v_i| multiplies the weight),
- * and p moves to p' = fn(K up(p) ~K) with K = exp(-Strength B(p)) (docs/conventions.md section 3 item 9).
+ * and p moves to p' = fn(K up(p) ~K) with K = exp(-Strength B(p)) (docs/conventions.md section 3
+ * item 9). G_i is given by the generator's kind (docs/conventions.md section 2 item 11; |v_i|
+ * multiplies the weight, c = Strength w_i |v_i| / (Falloff |p - x_i|^2 + Epsilon) below):
+ * POINT_PAIR (the default) tau(x_i, v_i), a boost; ROTATION the turn by the angle c (radians,
+ * right-handed) about the axis through x_i along v_i; TWIST that turn with the advance Pitch * c
+ * along v_i (Pitch a length per radian; 0 is a ROTATION); DILATION the scaling about x_i by e^c
+ * (a positive weight grows); TRANSLATION the translation by c along v_i (x_i only places the
+ * falloff). Kinds mix in one sum.
  *
  * ExponentialRule: EXACT (default) uses the true exponential of B, so K is a versor and every image
  * point is null (each K is a conformal map); PAPER uses eq 9-10 of the paper, cosh/sinh of
- * s = <B B>_0, which is exact only when B is a blade (one generator) and otherwise not a versor.
+ * s = <B B>_0, which is exact only when B is a blade (one generator of any kind but a TWIST of
+ * non-zero pitch, and some sums: docs/conventions.md section 2 item 11) and otherwise not a versor.
  *
  * Generators come from the list set by AddGenerator()/SetGenerator() (the ParaView table), and from
  * the optional second input port "Generators": any vtkPointSet whose points are the locations,
  * with a 3-component point array named GeneratorDirectionArrayName and, when
  * UseGeneratorWeightArray is on, a 1-component point array named GeneratorWeightArrayName (the
- * weights; otherwise every weight is 1). Both sources are summed. The Generators input is always
- * requested whole, so every MPI rank sees every generator.
+ * weights; otherwise every weight is 1), and optionally 1-component point arrays named
+ * GeneratorKindArrayName and GeneratorPitchArrayName (read when the input has them; otherwise every
+ * generator there is a POINT_PAIR of pitch 0). Both sources are summed. The Generators input is
+ * always requested whole, so every MPI rank sees every generator.
  *
  * Output: the input's topology, cells and arrays with moved points, plus the point vector
  * "Displacement" = p' - p. Normals are dropped (they would be wrong once the points moved).
@@ -27,8 +36,10 @@
  *
  * Bad input: points that are NaN or infinite pass through unchanged (Displacement 0) and are
  * counted in one warning; so are points whose image would be at infinity. Generators with a zero
- * or non-finite direction, location or weight are ignored with one warning. No generators (or
- * Strength 0) is the identity. A missing or wrongly typed array on the Generators port (or one
+ * or non-finite direction, location or weight, or a TWIST with a non-finite pitch, are ignored
+ * with one warning. No generators (or Strength 0) is the identity. A kind that is none of the five
+ * constants (in a row or in the kind array) is an error and gives an empty output, as is a missing
+ * or wrongly typed array on the Generators port (or one
  * with another number of tuples than the port's points), a non-finite Strength, or a NaN Falloff or Epsilon, is an error and gives an empty output.
  *
  * The per-point work runs in vtkSMPTools. Note that Debian's VTK uses the Sequential backend
@@ -63,17 +74,33 @@ public:
     PAPER = 1
   };
 
+  /// The kinds of generator (docs/conventions.md section 2 item 11).
+  enum GeneratorKinds
+  {
+    POINT_PAIR = 0,
+    ROTATION = 1,
+    TWIST = 2,
+    DILATION = 3,
+    TRANSLATION = 4
+  };
+
   ///@{
-  /// The generator list: rows of location (x, y, z), direction (vx, vy, vz) and weight, with the
-  /// list API and the cap of vtkBoostedRowList (Common/): AddGenerator returns the new row's
+  /// The generator list: rows of location (x, y, z), direction (vx, vy, vz), weight, kind (one of
+  /// GeneratorKinds) and pitch (TWIST only: the advance along the axis per radian of turn), with
+  /// the list API and the cap of vtkBoostedRowList (Common/): AddGenerator returns the new row's
   /// index, SetGenerator(i, ...) changes row i < GetNumberOfGenerators(), SetNumberOfGenerators
-  /// resizes (new rows are zero, hence ignored until set), GetGenerator copies a row (false if
-  /// there is none); at most 10^6 rows (more come through the Generators input).
+  /// resizes (new rows are zero, hence ignored until set), GetGenerator copies a row of 9 values
+  /// (false if there is none); at most 10^6 rows (more come through the Generators input). The
+  /// forms without kind and pitch give a POINT_PAIR of pitch 0.
   int AddGenerator(double x, double y, double z, double vx, double vy, double vz, double weight);
+  int AddGenerator(double x, double y, double z, double vx, double vy, double vz, double weight,
+    double kind, double pitch);
   void SetGenerator(int index, double x, double y, double z, double vx, double vy, double vz,
     double weight);
+  void SetGenerator(int index, double x, double y, double z, double vx, double vy, double vz,
+    double weight, double kind, double pitch);
   void SetNumberOfGenerators(int count);
-  bool GetGenerator(int index, double values[7]) const;
+  bool GetGenerator(int index, double values[9]) const;
   void RemoveAllGenerators();
   int GetNumberOfGenerators() const;
   ///@}
@@ -96,6 +123,16 @@ public:
   vtkGetStringMacro(GeneratorDirectionArrayName);
   vtkSetStringMacro(GeneratorWeightArrayName);
   vtkGetStringMacro(GeneratorWeightArrayName);
+  ///@}
+
+  ///@{
+  /// Names of the optional 1-component point arrays of the Generators input with each
+  /// generator's kind (default "Kind", values of GeneratorKinds) and pitch (default "Pitch"). An
+  /// array that is absent means POINT_PAIR or pitch 0 for every generator there.
+  vtkSetStringMacro(GeneratorKindArrayName);
+  vtkGetStringMacro(GeneratorKindArrayName);
+  vtkSetStringMacro(GeneratorPitchArrayName);
+  vtkGetStringMacro(GeneratorPitchArrayName);
   vtkSetMacro(UseGeneratorWeightArray, bool);
   vtkGetMacro(UseGeneratorWeightArray, bool);
   vtkBooleanMacro(UseGeneratorWeightArray, bool);
@@ -156,6 +193,8 @@ protected:
   double SelectedGeneratorLocation[3] = { 0.0, 0.0, 0.0 };
   char* GeneratorDirectionArrayName = nullptr;
   char* GeneratorWeightArrayName = nullptr;
+  char* GeneratorKindArrayName = nullptr;
+  char* GeneratorPitchArrayName = nullptr;
   bool UseGeneratorWeightArray = false;
   double Strength = 1.0;
   double Falloff = 1.0;

@@ -2,6 +2,7 @@
 
 #include "vtkBoostedBlockLoop.h"
 #include "vtkBoostedExponentialRule.h"
+#include "vtkBoostedGeneratorRows.h"
 #include "vtkBoostedMemoryBudget.h"
 #include "vtkBoostedRowList.h"
 #include "vtkDataArray.h"
@@ -103,8 +104,9 @@ struct FieldFunctor
 } // namespace
 
 vtkDipoleFieldSource::vtkDipoleFieldSource()
-  : Generators(new vtkBoostedRowList(this, "Generator", std::vector<double>(7, 0.0)))
+  : Generators(new vtkBoostedRowList(this, "Generator", vtkBoostedGeneratorRows::BlankRow()))
 {
+  static_assert(vtkBoostedGeneratorKinds<vtkDipoleFieldSource>(), "");
   this->SetNumberOfInputPorts(0);
   this->AddGenerator(0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.5);
 }
@@ -114,13 +116,25 @@ vtkDipoleFieldSource::~vtkDipoleFieldSource() = default;
 int vtkDipoleFieldSource::AddGenerator(
   double x, double y, double z, double dx, double dy, double dz, double weight)
 {
-  return this->Generators->Add({ x, y, z, dx, dy, dz, weight });
+  return this->AddGenerator(x, y, z, dx, dy, dz, weight, POINT_PAIR, 0.0);
+}
+
+int vtkDipoleFieldSource::AddGenerator(double x, double y, double z, double dx, double dy,
+  double dz, double weight, double kind, double pitch)
+{
+  return this->Generators->Add({ x, y, z, dx, dy, dz, weight, kind, pitch });
 }
 
 void vtkDipoleFieldSource::SetGenerator(
   int index, double x, double y, double z, double dx, double dy, double dz, double weight)
 {
-  this->Generators->Set(index, { x, y, z, dx, dy, dz, weight });
+  this->SetGenerator(index, x, y, z, dx, dy, dz, weight, POINT_PAIR, 0.0);
+}
+
+void vtkDipoleFieldSource::SetGenerator(int index, double x, double y, double z, double dx,
+  double dy, double dz, double weight, double kind, double pitch)
+{
+  this->Generators->Set(index, { x, y, z, dx, dy, dz, weight, kind, pitch });
 }
 
 vtkBoostedRowListMethods(vtkDipoleFieldSource, Generator, Generators)
@@ -172,6 +186,13 @@ std::string vtkDipoleFieldSource::Validate() const
         message << "generator " << i << " has a value that is not finite";
         return message.str();
       }
+    }
+    cga::GeneratorKind kind;
+    std::string problem;
+    if (!vtkBoostedGeneratorRows::ReadKind(this->Generators->Row(i)[vtkBoostedGeneratorRows::KindValue],
+          "generator row " + std::to_string(i), kind, problem))
+    {
+      return problem;
     }
   }
   return {};
@@ -271,15 +292,18 @@ int vtkDipoleFieldSource::RequestData(
     output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), t);
   }
 
-  std::vector<cga::PointPairGenerator> generators;
+  // The rows were validated (finite values, known kinds) by Validate().
+  std::vector<cga::GeneratorParameters> generators(this->GetNumberOfGenerators());
   for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
   {
     const double* g = this->Generators->Row(i);
     const double* t = this->GeneratorsTranslation;
-    generators.push_back({ { g[0] + t[0], g[1] + t[1], g[2] + t[2] }, { g[3], g[4], g[5] }, g[6] });
+    const double location[3] = { g[0] + t[0], g[1] + t[1], g[2] + t[2] };
+    std::string problem;
+    vtkBoostedGeneratorRows::Read(g, location, i, generators[i], problem);
   }
-  const cga::DipoleField field(generators, this->Falloff, this->Epsilon,
-    vtkBoostedExponentialRule<vtkDipoleFieldSource>(this->ExponentialRule));
+  const cga::DipoleField field(generators.data(), generators.size(), this->Falloff,
+    this->Epsilon, vtkBoostedExponentialRule<vtkDipoleFieldSource>(this->ExponentialRule));
 
   const vtkIdType n = output->GetNumberOfPoints();
   const int precision = this->OutputPointsPrecision;

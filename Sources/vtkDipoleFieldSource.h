@@ -4,20 +4,24 @@
  *
  * On a regular grid (Origin, Spacing, Dimensions; by default a 21 x 21 slice of [-2, 2]^2 in the
  * xy plane, like Fig 13-14) every point p gets the displacement v = p' - p of the boost generated
- * by a list of point-pair generators (location x_i, direction v_i, weight w_i), with
- * tau_i = tau(x_i, v_i) and d_i^2 = Falloff |p - x_i|^2 + Epsilon, computed two ways:
+ * by a list of generators (location x_i, direction v_i, weight w_i, kind and pitch as in
+ * vtkPointPairDeformationFilter; docs/conventions.md section 2 item 11), with G_i the kind's
+ * bivector (tau(x_i, v_i) for the default POINT_PAIR) and d_i^2 = Falloff |p - x_i|^2 + Epsilon,
+ * computed two ways:
  *
- * - DisplacementSummedGenerators (method a, the paper's): K = exp(-sum_i w_i tau_i / d_i^2),
+ * - DisplacementSummedGenerators (method a, the paper's): K = exp(-sum_i w_i G_i / d_i^2),
  *   p' = fn(K up(p) ~K). ExponentialRule picks the exact exponential (default) or the paper's
  *   eq 9-10.
  * - DisplacementSummedDisplacements (method b, vector field topology's):
- *   v = sum_i (fn(K_i up(p) ~K_i) - p), K_i = exp(-w_i tau_i / d_i^2).
+ *   v = sum_i (fn(K_i up(p) ~K_i) - p), K_i = exp(-w_i G_i / d_i^2).
  *
  * For one generator they are equal; for several they differ (Fig 14). Further point arrays:
  * DisplacementDifference (a - b), DisplacementDifferenceMagnitude, and DipolePotential, the
  * contour scalar phi = sum_i w_i (v_i . (p - x_i)) / (|p - x_i|^2 + Epsilon): the superposed
  * dipole potentials, whose level sets cross a single generator's field at right angles (the
- * "equipotential lines" of Fig 14). The active vectors are DisplacementSummedGenerators, the
+ * "equipotential lines" of Fig 14). Only point pairs are dipoles: the other kinds add nothing
+ * to DipolePotential (their first-order fields are not gradients; a rotation's circulates), so
+ * without POINT_PAIR rows it is zero. The active vectors are DisplacementSummedGenerators, the
  * active scalars DipolePotential.
  *
  * Time: with NumberOfTimeSteps N >= 1 the source reports N time steps t_k = k / (N - 1) in [0, 1]
@@ -30,8 +34,8 @@
  * leaves the output empty).
  *
  * Bad input (a dimension < 1, a zero, negative or non-finite spacing, a non-finite origin,
- * GeneratorsTranslation, Falloff or Epsilon, a non-finite generator value) gives an error and an
- * empty output. A generator with a zero direction or weight contributes nothing. The field stays
+ * GeneratorsTranslation, Falloff or Epsilon, a non-finite generator value, a kind that is none
+ * of the five constants) gives an error and an empty output. A generator with a zero direction or weight contributes nothing. The field stays
  * finite at a generator on a grid point (Epsilon > 0); a single generator leaves its location
  * fixed. Where a boost sends a grid point to infinity the failed displacement is zero and a
  * warning counts those points.
@@ -72,18 +76,33 @@ public:
   vtkGetVector3Macro(Dimensions, int);
   ///@}
 
+  /// The kinds of generator, as vtkPointPairDeformationFilter's.
+  enum GeneratorKinds
+  {
+    POINT_PAIR = 0,
+    ROTATION = 1,
+    TWIST = 2,
+    DILATION = 3,
+    TRANSLATION = 4
+  };
+
   ///@{
   /// The generator list: rows of location (x, y, z), direction (dx, dy, dz; its length multiplies
-  /// the weight) and weight, with the list API and the cap of vtkBoostedRowList (Common/):
-  /// AddGenerator returns the new row's index, SetGenerator(i, ...) changes row
-  /// i < GetNumberOfGenerators(), SetNumberOfGenerators resizes (new rows are zero, hence
-  /// contribute nothing until set), GetGenerator copies a row (false if there is none); at most
-  /// 10^6 rows. Default: one generator at the origin along x with weight 0.5 (Fig 13).
+  /// the weight), weight, kind (GeneratorKinds) and pitch (TWIST only), with the list API and
+  /// the cap of vtkBoostedRowList (Common/): AddGenerator returns the new row's index,
+  /// SetGenerator(i, ...) changes row i < GetNumberOfGenerators(), SetNumberOfGenerators resizes
+  /// (new rows are zero, hence contribute nothing until set), GetGenerator copies a row of 9
+  /// values (false if there is none); at most 10^6 rows. The forms without kind and pitch give a
+  /// POINT_PAIR of pitch 0. Default: one point pair at the origin along x with weight 0.5 (Fig 13).
   int AddGenerator(double x, double y, double z, double dx, double dy, double dz, double weight);
+  int AddGenerator(double x, double y, double z, double dx, double dy, double dz, double weight,
+    double kind, double pitch);
   void SetGenerator(int index, double x, double y, double z, double dx, double dy, double dz,
     double weight);
+  void SetGenerator(int index, double x, double y, double z, double dx, double dy, double dz,
+    double weight, double kind, double pitch);
   void SetNumberOfGenerators(int count);
-  bool GetGenerator(int index, double values[7]) const;
+  bool GetGenerator(int index, double values[9]) const;
   void RemoveAllGenerators();
   int GetNumberOfGenerators() const;
   ///@}

@@ -7,7 +7,7 @@
 
 namespace cga
 {
-DipoleField::DipoleField(const PointPairGenerator* generators,
+DipoleField::DipoleField(const GeneratorParameters* generators,
                          std::size_t count,
                          double falloff,
                          double epsilon,
@@ -18,13 +18,42 @@ DipoleField::DipoleField(const PointPairGenerator* generators,
 {
   for (std::size_t i = 0; i < count; ++i)
   {
-    PointPairField single(&generators[i], 1, falloff, epsilon);
+    const GeneratorParameters& g = generators[i];
+    PointPairField single(&g, 1, falloff, epsilon);
     if (single.size() == 1) // kept by the same rule as in Summed
     {
       this->Singles.push_back(std::move(single));
-      this->Generators.push_back(generators[i]);
+      if (g.kind == GeneratorKind::PointPair)
+      {
+        this->PointPairs.push_back({ g.location, g.direction, g.weight });
+      }
     }
   }
+}
+
+namespace
+{
+std::vector<GeneratorParameters> pointPairParameters(const PointPairGenerator* generators,
+                                                     std::size_t count)
+{
+  std::vector<GeneratorParameters> parameters;
+  parameters.reserve(count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    parameters.push_back({ GeneratorKind::PointPair, generators[i].location,
+                           generators[i].direction, 0.0, generators[i].weight });
+  }
+  return parameters;
+}
+} // namespace
+
+DipoleField::DipoleField(const PointPairGenerator* generators,
+                         std::size_t count,
+                         double falloff,
+                         double epsilon,
+                         ExponentialRule rule)
+  : DipoleField(pointPairParameters(generators, count).data(), count, falloff, epsilon, rule)
+{
 }
 
 bool DipoleField::displacementSummedGenerators(Vec3 p, double weightScale, Vec3& out) const
@@ -50,8 +79,8 @@ bool DipoleField::displacementSummedDisplacements(Vec3 p, double weightScale, Ve
   for (const PointPairField& single : this->Singles)
   {
     Vec3 image;
-    // A single generator is a blade (tau^2 = 0): both rules are exact; using method (a)'s rule
-    // makes the two methods the same computation for one generator.
+    // Method (a)'s rule makes the two methods the same computation for one generator (for a
+    // point pair, tau^2 = 0, both rules are exact).
     if (single.map(p, weightScale, this->Rule, image) && isFinite(image))
     {
       out = out + (image - p);
@@ -74,7 +103,7 @@ double DipoleField::potential(Vec3 p, double weightScale) const
   // weights (up to 1e308), directions or distances cannot overflow a term (w v.r did: inf, or
   // inf - inf = NaN with opposite weights). The result saturates at +-DBL_MAX.
   double largestWeight = 0.0;
-  for (const PointPairGenerator& g : this->Generators)
+  for (const PointPairGenerator& g : this->PointPairs)
   {
     largestWeight = std::max(largestWeight, std::fabs(g.weight));
   }
@@ -83,7 +112,7 @@ double DipoleField::potential(Vec3 p, double weightScale) const
     return 0.0;
   }
   double phi = 0.0;
-  for (const PointPairGenerator& g : this->Generators)
+  for (const PointPairGenerator& g : this->PointPairs)
   {
     const Vec3 r = p - g.location;
     phi += (g.weight / largestWeight) * dot(g.direction, r / (norm2(r) + this->Epsilon));

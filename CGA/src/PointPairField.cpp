@@ -16,15 +16,108 @@ Even exponential(const Bivector& b, ExponentialRule rule)
   return rule == ExponentialRule::Exact ? expExact(b) : expPaper(b);
 }
 
+bool isGeneratorKind(int kind)
+{
+  return kind >= static_cast<int>(GeneratorKind::PointPair) &&
+    kind <= static_cast<int>(GeneratorKind::Translation);
+}
+
+namespace
+{
+// 1/2 T(x) (a I3) ~T(x) = 1/2 (A - (x _| A) ni) with A = a I3 = a.z e12 - a.y e13 + a.x e23.
+Bivector halfDualLine(Vec3 x, Vec3 a)
+{
+  using B = Bivector;
+  Bivector b;
+  b[B::E12] = 0.5 * a.z;
+  b[B::E13] = -0.5 * a.y;
+  b[B::E23] = 0.5 * a.x;
+  // x _| (e_i ^ e_j) = x_i e_j - x_j e_i.
+  const Vec3 contraction{ -x.y * b[B::E12] - x.z * b[B::E13],
+                          x.x * b[B::E12] - x.z * b[B::E23],
+                          x.x * b[B::E13] + x.y * b[B::E23] };
+  b[B::E1NI] = -contraction.x;
+  b[B::E2NI] = -contraction.y;
+  b[B::E3NI] = -contraction.z;
+  return b;
+}
+
+// b += 1/2 d ni.
+void addHalfTranslation(Bivector& b, Vec3 d)
+{
+  b[Bivector::E1NI] += 0.5 * d.x;
+  b[Bivector::E2NI] += 0.5 * d.y;
+  b[Bivector::E3NI] += 0.5 * d.z;
+}
+} // namespace
+
 FieldGenerator FieldGenerator::pointPair(Vec3 location, Vec3 direction, double weight)
 {
   return { location, nullPointPairCompact(location, direction), weight };
 }
 
+FieldGenerator FieldGenerator::rotation(Vec3 location, Vec3 axis, double weight)
+{
+  return { location, halfDualLine(location, axis), weight };
+}
+
+FieldGenerator FieldGenerator::twist(Vec3 location, Vec3 axis, double pitch, double weight)
+{
+  FieldGenerator g = rotation(location, axis, weight);
+  addHalfTranslation(g.bivector, pitch * axis);
+  return g;
+}
+
+FieldGenerator FieldGenerator::dilation(Vec3 location, double weight)
+{
+  FieldGenerator g{ location, Bivector{}, weight };
+  g.bivector[Bivector::NONI] = -0.5;
+  addHalfTranslation(g.bivector, -1.0 * location); // -1/2 x ^ ni
+  return g;
+}
+
+FieldGenerator FieldGenerator::translation(Vec3 location, Vec3 direction, double weight)
+{
+  FieldGenerator g{ location, Bivector{}, weight };
+  addHalfTranslation(g.bivector, direction);
+  return g;
+}
+
+FieldGenerator FieldGenerator::of(
+  GeneratorKind kind, Vec3 location, Vec3 direction, double pitch, double weight)
+{
+  const double length = norm(direction);
+  const bool usable = isGeneratorKind(static_cast<int>(kind)) && isFinite(direction) &&
+    length != 0.0 && std::isfinite(length) && (kind != GeneratorKind::Twist || std::isfinite(pitch));
+  if (!usable)
+  {
+    return { location, Bivector{}, std::nan("") };
+  }
+  switch (kind)
+  {
+    case GeneratorKind::Rotation:
+      return rotation(location, direction, weight);
+    case GeneratorKind::Twist:
+      return twist(location, direction, pitch, weight);
+    case GeneratorKind::Dilation:
+    {
+      // The length multiplies the bivector, as the direction's does for the other kinds.
+      FieldGenerator g = dilation(location, weight);
+      g.bivector *= length;
+      return g;
+    }
+    case GeneratorKind::Translation:
+      return translation(location, direction, weight);
+    case GeneratorKind::PointPair:
+    default:
+      return pointPair(location, direction, weight);
+  }
+}
+
 namespace
 {
-// The point pairs as field generators; one with a zero or non-finite direction gets a NaN weight,
-// which the field skips.
+// The point pairs as field generators (FieldGenerator::of: a zero or non-finite direction gives a
+// NaN weight, which the field skips).
 std::vector<FieldGenerator> pointPairs(const PointPairGenerator* generators, std::size_t count)
 {
   std::vector<FieldGenerator> pairs;
@@ -32,9 +125,8 @@ std::vector<FieldGenerator> pointPairs(const PointPairGenerator* generators, std
   for (std::size_t i = 0; i < count; ++i)
   {
     const PointPairGenerator& g = generators[i];
-    const bool usable = isFinite(g.direction) && norm(g.direction) != 0.0;
-    pairs.push_back(FieldGenerator::pointPair(
-      g.location, usable ? g.direction : Vec3{}, usable ? g.weight : std::nan("")));
+    pairs.push_back(
+      FieldGenerator::of(GeneratorKind::PointPair, g.location, g.direction, 0.0, g.weight));
   }
   return pairs;
 }
@@ -49,6 +141,22 @@ PointPairField::PointPairField(const PointPairGenerator* generators,
 {
   const std::vector<FieldGenerator> pairs = pointPairs(generators, count);
   this->add(pairs.data(), pairs.size());
+}
+
+PointPairField::PointPairField(const GeneratorParameters* generators,
+                               std::size_t count,
+                               double falloff,
+                               double epsilon)
+  : Falloff(falloff)
+  , Epsilon(epsilon)
+{
+  std::vector<FieldGenerator> fields;
+  fields.reserve(count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    fields.push_back(generators[i].field());
+  }
+  this->add(fields.data(), fields.size());
 }
 
 PointPairField::PointPairField(const FieldGenerator* generators,

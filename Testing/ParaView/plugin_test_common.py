@@ -118,7 +118,8 @@ def check_defaults(proxy, defaults, failures):
 
 
 # The column names of the plugin's tables; the generator table is the same in both classes.
-GENERATOR_COLUMNS = ("X", "Y", "Z", "Direction X", "Direction Y", "Direction Z", "Weight")
+GENERATOR_COLUMNS = ("X", "Y", "Z", "Direction X", "Direction Y", "Direction Z", "Weight",
+                     "Kind", "Pitch")
 BASE_POINT_COLUMNS = ("Theta", "Phi")
 CONTROL_POINT_COLUMNS = ("X", "Y", "Z", "Normal X", "Normal Y", "Normal Z", "U Direction X",
                          "U Direction Y", "U Direction Z", "Kappa U", "Kappa V")

@@ -22,7 +22,7 @@ def pipeline():
     directions = simple.Calculator(Input=line, ResultArrayName="Direction",
                                    Function="coordsX*iHat+kHat")
     return PointPairDeformation(Input=sphere, Generators=directions,  # noqa: F821
-                                GeneratorList=[1.3, 0.0, 0.0, 1.0, 0.0, 0.0, -0.4],
+                                GeneratorList=[1.3, 0.0, 0.0, 1.0, 0.0, 0.0, -0.4, 0, 0],
                                 Falloff=2.0, Epsilon=0.05)
 
 

@@ -16,7 +16,7 @@ ranks = common.mpi_ranks(failures)
 
 ARRAYS = ("DisplacementSummedGenerators", "DisplacementSummedDisplacements",
           "DisplacementDifference", "DisplacementDifferenceMagnitude", "DipolePotential")
-parameters = dict(GeneratorList=[-1, 0, 0, 0, 1, 0, 0.35, 1, 0, 0.2, 1, 0, 0, 0.35],
+parameters = dict(GeneratorList=[-1, 0, 0, 0, 1, 0, 0.35, 0, 0, 1, 0, 0.2, 1, 0, 0, 0.35, 0, 0],
                   Origin=[-2, -2, -1], Spacing=[0.25, 0.2, 0.5], Dimensions=[17, 21, 5])
 whole_points = 17 * 21 * 5
 

@@ -16,7 +16,7 @@ failures = []
 
 source = DipoleField()  # noqa: F821
 defaults = {
-    "GeneratorList": [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.5],
+    "GeneratorList": [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.5, 0.0, 0.0],
     "GeneratorsTranslation": [0.0, 0.0, 0.0],
     "Origin": [-2.0, -2.0, 0.0],
     "Spacing": [0.2, 0.2, 1.0],
@@ -33,7 +33,7 @@ common.check_table(source, "Generator", common.GENERATOR_COLUMNS, failures)
 # One generator off the grid's symmetry: the field must be the closed form, an SCT about x of
 # weight u = -w v / (k |p - x|^2 + eps) (docs/conventions.md section 2).
 x, v, w, k, eps = (0.3, -0.2, 0.0), (0.0, 1.0, 0.0), 0.8, 1.5, 0.05
-source.GeneratorList = list(x) + list(v) + [w]
+source.GeneratorList = list(x) + list(v) + [w, 0, 0]  # kind 0 (Point Pair), pitch 0
 source.Falloff = k
 source.Epsilon = eps
 source.Dimensions = [11, 9, 1]
@@ -61,7 +61,7 @@ if not largest_error < 1e-12:
     failures.append("one generator differs from the closed form by %g" % largest_error)
 
 # Two rows in the table: two generators, and the methods differ (for one they are equal).
-source.GeneratorList = [-1, 0, 0, 0, 1, 0, 0.35, 1, 0, 0, 1, 0, 0, 0.35]
+source.GeneratorList = [-1, 0, 0, 0, 1, 0, 0.35, 0, 0, 1, 0, 0, 1, 0, 0, 0.35, 0, 0]
 source.Falloff = 1.0
 source.Epsilon = 0.1
 source.Dimensions = [21, 21, 1]

@@ -30,7 +30,7 @@ def largest_distance(a, b):
 sphere = simple.Sphere(Radius=1.0, ThetaResolution=32, PhiResolution=24)
 deformation = PointPairDeformation(Input=sphere)  # noqa: F821
 defaults = {
-    "GeneratorList": [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.5],
+    "GeneratorList": [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.5, 0.0, 0.0],
     "SelectedGenerator": -1,
     "Strength": 1.0,
     "Falloff": 1.0,
@@ -45,7 +45,7 @@ common.check_table(deformation, "Generator", common.GENERATOR_COLUMNS, failures)
 
 # One generator: p -> x + SCT_u(p - x) with u = -w v / (k |p - x|^2 + eps).
 x, v, w, k, eps = (0.2, 0.0, 0.9), (0.0, 0.0, 1.0), 0.6, 4.0, 0.05
-deformation.GeneratorList = list(x) + list(v) + [w]
+deformation.GeneratorList = list(x) + list(v) + [w, 0, 0]  # kind 0 (Point Pair), pitch 0
 deformation.Falloff = k
 deformation.Epsilon = eps
 deformation.UpdatePipeline()
@@ -81,18 +81,33 @@ if error > 1e-6:
     failures.append("the Generators input differs from the table by %g" % error)
 
 # The handle moves the selected row.
-moved = PointPairDeformation(Input=sphere, GeneratorList=[0.5, 0.5, 0.5] + list(v) + [w],  # noqa: F821
+moved = PointPairDeformation(Input=sphere, GeneratorList=[0.5, 0.5, 0.5] + list(v) + [w, 0, 0],  # noqa: F821
                              SelectedGenerator=0, SelectedGeneratorLocation=list(x),
                              Falloff=k, Epsilon=eps)
 error = largest_distance(points_of(moved), points_of(deformation))
 if error > 1e-12:
     failures.append("the selected generator did not take the handle's location (%g)" % error)
 
+# The Kind column: a Rotation row (kind 1) turns p about the axis through x along v by
+# w |v| / (k |p - x|^2 + eps) radians, right-handed (here v is z: a turn in the xy plane).
+rotation = PointPairDeformation(Input=sphere, GeneratorList=list(x) + [0, 0, 2.0, w, 1, 0],  # noqa: F821
+                                Falloff=k, Epsilon=eps)
+expected = []
+for p in source_points:
+    c = w * 2.0 / (k * sum((p[i] - x[i]) ** 2 for i in range(3)) + eps)
+    y = [p[i] - x[i] for i in range(3)]
+    expected.append([x[0] + math.cos(c) * y[0] - math.sin(c) * y[1],
+                     x[1] + math.sin(c) * y[0] + math.cos(c) * y[1], p[2]])
+error = largest_distance(points_of(rotation), expected)
+print("a Rotation row vs closed form: %g" % error)
+if error > 1e-5:  # the sphere's points are float
+    failures.append("a Rotation row differs from the closed form by %g" % error)
+
 # Fig 11 style image: four generators around the sphere.
-deformation.GeneratorList = [0.0, 0.0, 1.4, 0, 0, 1, 0.6,
-                             1.4, 0.0, 0.2, 1, 0, 0, -0.5,
-                             -0.4, -1.4, -0.4, 0, 1, 0, 0.5,
-                             -0.7, 0.9, -1.0, -1, 1, -1, 0.4]
+deformation.GeneratorList = [0.0, 0.0, 1.4, 0, 0, 1, 0.6, 0, 0,
+                             1.4, 0.0, 0.2, 1, 0, 0, -0.5, 0, 0,
+                             -0.4, -1.4, -0.4, 0, 1, 0, 0.5, 0, 0,
+                             -0.7, 0.9, -1.0, -1, 1, -1, 0.4, 0, 0]
 deformation.Falloff = 4.0
 view = common.white_render_view([400, 400])
 normals = simple.GenerateSurfaceNormals(Input=deformation, Splitting=0)

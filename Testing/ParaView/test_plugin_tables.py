@@ -20,7 +20,9 @@ MAXIMUM_ROWS = 1000000  # vtkBoostedRowList::MaximumRows
 
 def tables():
     """(proxy name, row name, columns, rows) of each table, with rows other than the defaults."""
-    generators = [0.1, 0.2, 0.3, 0.0, 0.0, 1.0, 0.5, -0.4, 0.0, 0.2, 1.0, 0.0, 0.0, -0.25]
+    # A rotation and a twist of pitch 0.3 (kinds 1 and 2).
+    generators = [0.1, 0.2, 0.3, 0.0, 0.0, 1.0, 0.5, 1, 0.0,
+                  -0.4, 0.0, 0.2, 1.0, 0.0, 0.0, -0.25, 2, 0.3]
     # The Hopf source first: created later it would take the active source as its input.
     proxies = {
         "Hopf": HopfFibration(registrationName="Hopf", SamplingMode="Base Points",  # noqa: F821

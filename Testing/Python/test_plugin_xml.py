@@ -3,13 +3,16 @@ ParaView: every scalar property's default is the class's, its range domain is th
 (a bound the setter does not clamp to must be one that an update rejects with an error), every
 label is the property name in words (paraview.simple names properties after labels), an
 enumeration lists exactly the clamped values, and each entry text is the class constant in words
-("Control Points" is CONTROL_POINTS; the precision entries name vtkAlgorithm's *_PRECISION).
+("Control Points" is CONTROL_POINTS; the precision entries name vtkAlgorithm's *_PRECISION). A
+table's Kind column (ParaView's tables hold numbers only) lists its values in the documentation,
+"1 Rotation (ROTATION ...", with the same rule: the value is the constant, the text its words.
 
     PYTHONPATH=<build>/lib/python3.11/site-packages python3 test_plugin_xml.py <Plugin dir> -v
 """
 import glob
 import math
 import os
+import re
 import sys
 import unittest
 import xml.etree.ElementTree as ET
@@ -157,6 +160,29 @@ class PluginXmlTest(unittest.TestCase):
                         constant += "_PRECISION"
                     self.assertEqual(getattr(cls, constant, None), value,
                                      "entry %r is not %s.%s" % (text, class_name, constant))
+
+    def test_kind_columns_are_the_class_constants(self):
+        tables = 0
+        for path in sorted(glob.glob(os.path.join(PLUGIN_DIR, "*.xml"))):
+            for proxy in ET.parse(path).getroot().iter("SourceProxy"):
+                for prop in proxy:
+                    labels = [c.get("label") for c in prop.iter("ComponentLabel")]
+                    if not prop.get("repeat_command") or "Kind" not in labels:
+                        continue
+                    tables += 1
+                    with self.subTest(cls=proxy.get("class"), property=prop.get("name")):
+                        cls = getattr(boostedsurfaces, proxy.get("class"))
+                        text = " ".join(prop.find("Documentation").text.split())
+                        entries = re.findall(r"(\d+) ([A-Z][a-z]+(?: [A-Z][a-z]+)*) \(([A-Z_]+)",
+                                             text.split("Kind:", 1)[1])
+                        constants = sorted(getattr(cls, k, None) for k in (
+                            "POINT_PAIR", "ROTATION", "TWIST", "DILATION", "TRANSLATION"))
+                        self.assertEqual(sorted(int(e[0]) for e in entries), constants)
+                        self.assertEqual(constants, list(range(5)))
+                        for value, words, constant in entries:
+                            self.assertEqual(words.upper().replace(" ", "_"), constant)
+                            self.assertEqual(getattr(cls, constant), int(value))
+        self.assertEqual(tables, 2)  # the deformation filter's and the dipole source's
 
 
 if __name__ == "__main__":

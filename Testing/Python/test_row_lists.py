@@ -37,8 +37,8 @@ def patch_source():
 
 # (make the object, row name, a valid row, the row SetNumberOfX gives new rows, rows it starts with)
 LISTS = [
-    (deformation_filter, "Generator", [0.0, 0.0, 0.5, 0.0, 0.0, 1.0, 0.5], [0.0] * 7, 0),
-    (vtkDipoleFieldSource, "Generator", [0.0, 0.5, 0.0, 1.0, 0.0, 0.0, 0.5], [0.0] * 7, 1),
+    (deformation_filter, "Generator", [0.0, 0.0, 0.5, 0.0, 0.0, 1.0, 0.5, 1.0, 0.25], [0.0] * 9, 0),
+    (vtkDipoleFieldSource, "Generator", [0.0, 0.5, 0.0, 1.0, 0.0, 0.0, 0.5, 3.0, 0.0], [0.0] * 9, 1),
     (hopf_source, "BasePoint", [0.5, 0.25], [0.0, 0.0], 0),
     (patch_source, "ControlPoint", [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.5, 0.5],
      [0, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0], 0),
@@ -51,6 +51,21 @@ def api(obj, row):
 
 
 class RowListTest(unittest.TestCase):
+    def test_generator_rows_without_kind_and_pitch_are_point_pairs(self):
+        # The 7-value AddGenerator/SetGenerator of older scripts: kind POINT_PAIR (0), pitch 0.
+        for make in (deformation_filter, vtkDipoleFieldSource):
+            with self.subTest(cls=make.__name__):
+                obj = make()
+                obj.RemoveAllGenerators()
+                index = obj.AddGenerator(1, 2, 3, 0, 0, 1, 0.5)
+                got = [9.0] * 9
+                self.assertTrue(obj.GetGenerator(index, got))
+                self.assertEqual(got, [1, 2, 3, 0, 0, 1, 0.5, obj.POINT_PAIR, 0])
+                obj.SetGenerator(index, 1, 2, 3, 0, 0, 1, 0.5, obj.TWIST, 0.2)
+                obj.SetGenerator(index, 4, 5, 6, 1, 0, 0, 0.25)
+                self.assertTrue(obj.GetGenerator(index, got))
+                self.assertEqual(got, [4, 5, 6, 1, 0, 0, 0.25, obj.POINT_PAIR, 0])
+
     def test_one_api_on_every_class(self):
         for make, row, values, blank, initial in LISTS:
             with self.subTest(row=row, cls=make.__name__):

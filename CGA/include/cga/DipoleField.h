@@ -29,9 +29,17 @@ struct DipoleSample
 class DipoleField
 {
 public:
-  /// Generators as PointPairField takes them (falloff k >= 0, epsilon > 0 enforced by callers;
-  /// generators with a zero or non-finite direction, location or weight are skipped). `rule` is
-  /// the exponential of both methods; method (b) exponentiates blades, where both rules are exact.
+  /// Generators of any kind as PointPairField takes them (falloff k >= 0, epsilon > 0 enforced
+  /// by callers; generators with a zero or non-finite direction, location, pitch or weight are
+  /// skipped). `rule` is the exponential of both methods; method (b) exponentiates one generator
+  /// at a time, for which both rules are exact except for a Twist of non-zero pitch (not a blade).
+  /// Only the point pairs have a dipole potential (see potential()).
+  DipoleField(const GeneratorParameters* generators,
+              std::size_t count,
+              double falloff,
+              double epsilon,
+              ExponentialRule rule = ExponentialRule::Exact);
+  /// The same for point pairs.
   DipoleField(const PointPairGenerator* generators,
               std::size_t count,
               double falloff,
@@ -60,7 +68,9 @@ public:
   /// r_i = p - x_i. For one generator and eps -> 0 the first-order displacement of both methods
   /// is -s w |r|^4 / (k |r|^2 + eps) grad((v . r) / |r|^2): antiparallel to grad phi, so the
   /// level sets of phi cross the field at right angles (the equipotential lines of Fig 14).
-  /// For several generators it is the sum of their potentials. Zero for a non-finite p; it
+  /// For several generators it is the sum of their potentials. The other kinds have none (their
+  /// first-order fields are not gradients: a rotation's circulates) and add nothing to it, so it
+  /// is zero without point pairs. Zero for a non-finite p; it
   /// saturates at +-DBL_MAX where huge weights would overflow it.
   double potential(Vec3 p, double weightScale) const;
 
@@ -83,7 +93,7 @@ public:
 private:
   PointPairField Summed;              // all generators: method (a)
   std::vector<PointPairField> Singles; // one field per generator: method (b)
-  std::vector<PointPairGenerator> Generators; // the kept ones, for the potential
+  std::vector<PointPairGenerator> PointPairs; // the kept point pairs, for the potential
   double Epsilon;
   ExponentialRule Rule;
 };

@@ -1,7 +1,8 @@
 // A field of generators (docs/conventions.md section 3 (item 9), eq 23; also items 8 and 12): at a
 // point p the generators sum, each weighted by its inverse squared distance, into
 //   B(p) = sum_i w_i G_i / (k |p - x_i|^2 + eps),
-// with G_i the null point pair tau(x_i, v_i) (or any bivector: FieldGenerator),
+// with G_i the null point pair tau(x_i, v_i), a generator of another kind (GeneratorKind:
+// rotation, twist, dilation, translation; docs/conventions.md section 2 item 11) or any bivector,
 // and p moves to fn(K up(p) ~K) with K = exp(-strength B(p)).
 //
 // This is the one implementation the deformation filter, the dipole field and the curvature
@@ -32,19 +33,56 @@ enum class ExponentialRule
 /// exp(b) by the chosen rule (expExact or expPaper, overflow-safe scaling).
 Even exponential(const Bivector& b, ExponentialRule rule);
 
+/// The kinds of generator G (docs/conventions.md section 2 item 11). The values are the VTK
+/// classes' constants and the ParaView enumeration's; PointPair is the default.
+enum class GeneratorKind
+{
+  PointPair = 0,  ///< tau(x, v): a boost (a transversion about x)
+  Rotation = 1,   ///< half the dual line through x along v: a rotation about that axis
+  Twist = 2,      ///< a dual line with a pitch: a screw about the axis through x along v
+  Dilation = 3,   ///< minus half the flat point at x: a uniform scaling about x
+  Translation = 4 ///< half of v ni: a translation along v
+};
+
+/// True for the five kinds above (an integer cast to GeneratorKind may be none of them).
+bool isGeneratorKind(int kind);
+
 /// One generator of the field: a bivector G placed at a location x, with a weight w; it adds
-/// w G / (k |p - x|^2 + eps) to B(p). A point pair is one kind of G (pointPair()); a dual line
-/// (rotation, twist), a flat point (dilation) or a translation bivector is another term of the same
-/// sum.
+/// w G / (k |p - x|^2 + eps) to B(p). With K = exp(-strength B(p)) and c = strength w |v| /
+/// (k |p - x|^2 + eps) for a generator alone (|v| the direction's or axis's length, 1 for a
+/// dilation), the map of p is, in closed form:
+///   pointPair:   the transversion of weight -c v/|v| about x (docs/conventions.md section 2);
+///   rotation:    the turn by the angle c (radians) about the axis through x along v, right-handed
+///                (a positive angle turns counter-clockwise seen from the tip of v);
+///   twist:       that turn and the advance pitch * c along v/|v| (they commute; pitch: a length per
+///                radian, 2 pi pitch per full turn; pitch 0 is the rotation);
+///   dilation:    the scaling about x by the factor exp(c) (a positive weight grows);
+///   translation: the translation by c v/|v|; the location only places the falloff.
+/// Directions and axes of any finite non-zero length; a zero or non-finite one gives a NaN weight,
+/// which PointPairField skips (and counts), as it does any non-finite bivector.
 struct FieldGenerator
 {
   Vec3 location;
   Bivector bivector;
   double weight = 1.0;
 
-  /// The null point pair tau(location, direction) (nullPointPairCompact); the direction's length
-  /// multiplies the weight.
+  /// The null point pair tau(location, direction) (nullPointPairCompact).
   static FieldGenerator pointPair(Vec3 location, Vec3 direction, double weight = 1.0);
+  /// 1/2 T(x) (axis I3) ~T(x), I3 = e1 e2 e3 (axis e3 gives e1^e2, which turns e1 toward e2).
+  static FieldGenerator rotation(Vec3 location, Vec3 axis, double weight = 1.0);
+  /// rotation(location, axis) + 1/2 pitch axis ni.
+  static FieldGenerator twist(Vec3 location, Vec3 axis, double pitch, double weight = 1.0);
+  /// -1/2 T(x) (no ^ ni) ~T(x) = -1/2 up(x) ^ ni.
+  static FieldGenerator dilation(Vec3 location, double weight = 1.0);
+  /// 1/2 direction ni, placed at location (where its falloff distance is measured from).
+  static FieldGenerator translation(Vec3 location, Vec3 direction, double weight = 1.0);
+  /// The generator of the given kind, as the VTK classes' rows describe one: the direction is
+  /// the point pair's, the axis of a rotation or twist, the translation's direction; for a
+  /// dilation only its length counts (it multiplies the weight, as for every kind). The pitch is
+  /// read by Twist only. An unknown kind, like a zero or non-finite direction or a non-finite
+  /// pitch, gives a NaN weight (skipped by the field).
+  static FieldGenerator of(
+    GeneratorKind kind, Vec3 location, Vec3 direction, double pitch, double weight = 1.0);
 };
 
 /// A point-pair generator as the filter and the sources describe one (FieldGenerator::pointPair).
@@ -53,6 +91,21 @@ struct PointPairGenerator
   Vec3 location;
   Vec3 direction;
   double weight = 1.0;
+};
+
+/// A generator of any kind as the filter and the sources describe one (FieldGenerator::of).
+struct GeneratorParameters
+{
+  GeneratorKind kind = GeneratorKind::PointPair;
+  Vec3 location;
+  Vec3 direction;
+  double pitch = 0.0;
+  double weight = 1.0;
+
+  FieldGenerator field() const
+  {
+    return FieldGenerator::of(this->kind, this->location, this->direction, this->pitch, this->weight);
+  }
 };
 
 class PointPairField
@@ -72,6 +125,11 @@ public:
     : PointPairField(generators.data(), generators.size(), falloff, epsilon)
   {
   }
+  /// The same for generators of any kind (GeneratorParameters::field()).
+  PointPairField(const GeneratorParameters* generators,
+                 std::size_t count,
+                 double falloff,
+                 double epsilon);
   /// The same for generators of any bivector: those with a non-finite location, weight or
   /// bivector, or a zero bivector, are skipped.
   PointPairField(const FieldGenerator* generators,

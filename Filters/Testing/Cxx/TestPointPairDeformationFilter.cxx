@@ -1008,7 +1008,7 @@ TEST(PointPairDeformationFilter, TheSelectedGeneratorTakesTheHandlesLocation)
   {
     EXPECT_EQ(cga::norm(pointOf(selected->GetOutput(), i) - pointOf(moved->GetOutput(), i)), 0.0);
   }
-  double values[7];
+  double values[9];
   ASSERT_TRUE(selected->GetGenerator(1, values));
   EXPECT_EQ(values[0], 0.5); // the list itself is unchanged
   EXPECT_FALSE(selected->GetGenerator(2, values));

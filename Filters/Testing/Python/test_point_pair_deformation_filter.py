@@ -81,6 +81,38 @@ class PointPairDeformationFilterTest(unittest.TestCase):
             expected = sct_about(x, [c * vi for vi in v], p)
             self.assertLess(distance(output.GetPoint(i), expected), 1e-6)  # float points
 
+    def test_one_generator_of_each_other_kind_is_its_closed_form(self):
+        # docs/conventions.md section 2 item 11, c = w |v| / (k |p - x|^2 + eps): a DILATION
+        # scales about x by exp(c), a TRANSLATION moves by c along v, a TWIST turns by c about the
+        # axis through x along v and advances by pitch * c (here the axis is z: the turn is in xy).
+        sphere = self.sphere()
+        x, w, k, eps, pitch = (0.2, -0.1, 0.3), 0.7, 1.5, 0.05, 0.4
+        v = (0.0, 0.0, 2.0)
+        for kind in ("DILATION", "TRANSLATION", "TWIST"):
+            with self.subTest(kind=kind):
+                deformation = vtkPointPairDeformationFilter()
+                deformation.SetInputConnection(sphere.GetOutputPort())
+                deformation.AddGenerator(*x, *v, w, getattr(deformation, kind), pitch)
+                deformation.SetFalloff(k)
+                deformation.SetEpsilon(eps)
+                deformation.Update()
+                output, source = deformation.GetOutput(), sphere.GetOutput()
+                for i in range(source.GetNumberOfPoints()):
+                    p = source.GetPoint(i)
+                    c = w * 2.0 / (k * distance(p, x) ** 2 + eps)
+                    y = [p[j] - x[j] for j in range(3)]
+                    if kind == "DILATION":
+                        expected = [x[j] + math.exp(c) * y[j] for j in range(3)]
+                    elif kind == "TRANSLATION":
+                        expected = [p[0], p[1], p[2] + c]
+                    else:
+                        expected = [x[0] + math.cos(c) * y[0] - math.sin(c) * y[1],
+                                    x[1] + math.sin(c) * y[0] + math.cos(c) * y[1],
+                                    p[2] + pitch * c]
+                    # float points: relative to the image's size (a dilation grows points a lot)
+                    self.assertLess(distance(output.GetPoint(i), expected),
+                                    1e-6 * (1.0 + distance(expected, (0, 0, 0))))
+
     def test_generators_port_equals_the_list(self):
         sphere = self.sphere()
         generators = [((0.0, 0.0, 0.8), (0.0, 0.0, 1.0), 0.5),

@@ -503,3 +503,58 @@ TEST(DipoleFieldSource, AGridNearTheLargestDoubleIsAnErrorOnlyWhereItOverflows)
   EXPECT_NE(counter.lastError.find("the grid overflows"), std::string::npos) << counter.lastError;
   EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
 }
+
+namespace
+{
+// One rotation row (docs/conventions.md section 2 item 11): both methods are the turn of every
+// grid point by w |v| / (k |p - x|^2 + eps) about the axis (Rodrigues' formula), and the
+// potential, which only point pairs have, is zero. An unknown kind is an error.
+TEST(DipoleFieldSource, ARotationRowTurnsTheGridAndHasNoPotential)
+{
+  vtkNew<vtkDipoleFieldSource> source;
+  source->RemoveAllGenerators();
+  const double x[3] = { 0.3, -0.2, 0.1 }, v[3] = { 0.0, 0.6, 0.8 };
+  const double w = 0.9, k = 1.5, eps = 0.05;
+  source->AddGenerator(x[0], x[1], x[2], v[0], v[1], v[2], w, vtkDipoleFieldSource::ROTATION, 0.0);
+  source->SetFalloff(k);
+  source->SetEpsilon(eps);
+  source->SetDimensions(9, 7, 2);
+  source->Update();
+  vtkImageData* output = source->GetOutput();
+  ASSERT_EQ(output->GetNumberOfPoints(), 9 * 7 * 2);
+  vtkDataArray* summed = output->GetPointData()->GetArray("DisplacementSummedGenerators");
+  vtkDataArray* single = output->GetPointData()->GetArray("DisplacementSummedDisplacements");
+  vtkDataArray* potential = output->GetPointData()->GetArray("DipolePotential");
+  double largest = 0.0;
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+  {
+    double p[3], y[3], axisCrossY[3];
+    output->GetPoint(i, p);
+    vtkMath::Subtract(p, x, y);
+    const double angle = w * vtkMath::Norm(v) / (k * vtkMath::Dot(y, y) + eps);
+    double axis[3] = { v[0], v[1], v[2] };
+    vtkMath::Normalize(axis);
+    vtkMath::Cross(axis, y, axisCrossY);
+    const double along = vtkMath::Dot(axis, y);
+    for (int c = 0; c < 3; ++c)
+    {
+      const double turned = std::cos(angle) * y[c] + std::sin(angle) * axisCrossY[c] +
+        (1.0 - std::cos(angle)) * along * axis[c];
+      const double expected = turned - y[c];
+      EXPECT_NEAR(summed->GetComponent(i, c), expected, 1e-12);
+      EXPECT_NEAR(single->GetComponent(i, c), expected, 1e-12);
+      largest = std::max(largest, std::fabs(expected));
+    }
+    EXPECT_EQ(potential->GetComponent(i, 0), 0.0);
+  }
+  EXPECT_GT(largest, 0.1);
+
+  source->SetGenerator(0, x[0], x[1], x[2], v[0], v[1], v[2], w, 5, 0.0);
+  EventCounter counter(source);
+  source->Update();
+  EXPECT_EQ(counter.errors, 1);
+  EXPECT_NE(counter.lastError.find("generator row 0 has the kind"), std::string::npos)
+    << counter.lastError;
+  EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
+}
+} // namespace

@@ -1,0 +1,368 @@
+// The generator kinds of the field (PointPairField.h, docs/conventions.md section 2 item 11):
+// their bivectors against the full multivector product, one generator of each kind against its
+// closed form (Rodrigues' rotation, the screw, the scaling, the translation), sums of kinds
+// against the series exponential of the full product, conformality of Exact, and where the Paper
+// rule is exact.
+#include "GeneratorKindReference.h"
+#include "TestSupport.h"
+
+#include "cga/CompactConversion.h"
+#include "cga/Conformal.h"
+#include "cga/DipoleField.h"
+#include "cga/Exponential.h"
+#include "cga/PointPairField.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace
+{
+using namespace cga;
+using cgatest::Random;
+
+using cgatest::kAllKinds;
+using cgatest::referenceBivector;
+using cgatest::referenceField;
+
+Vec3 referenceImage(const Multivector& k, Vec3 p)
+{
+  Vec3 out;
+  EXPECT_TRUE(normalizePoint(sandwich(k, up(p)).grade(1), out));
+  return out;
+}
+
+// Rodrigues: y turned by the angle about the unit axis, right-handed.
+Vec3 rotated(Vec3 y, Vec3 unitAxis, double angle)
+{
+  return std::cos(angle) * y + std::sin(angle) * cross(unitAxis, y) +
+    ((1.0 - std::cos(angle)) * dot(unitAxis, y)) * unitAxis;
+}
+
+GeneratorParameters randomGenerator(Random& random, GeneratorKind kind)
+{
+  return { kind, random.vec3(1.5), random.uniform(0.2, 1.5) * random.unit(),
+           random.uniform(-1.0, 1.0), random.uniform(-0.6, 0.6) };
+}
+
+double distance(Vec3 a, Vec3 b)
+{
+  return norm(a - b);
+}
+
+TEST(GeneratorKinds, BivectorsMatchTheirDefinitionsOnTheFullProduct)
+{
+  Random random(81);
+  for (int n = 0; n < 200; ++n)
+  {
+    for (GeneratorKind kind : kAllKinds)
+    {
+      const GeneratorParameters g = randomGenerator(random, kind);
+      const FieldGenerator field = g.field();
+      EXPECT_EQ(field.weight, g.weight);
+      EXPECT_LE(cgatest::relativeDifference(toMultivector(field.bivector), referenceBivector(g)),
+                1e-14);
+    }
+  }
+  // The named constructors are the kinds of of(); the right-hand rule: axis e3 gives e1^e2/2.
+  const FieldGenerator r = FieldGenerator::rotation({ 0, 0, 0 }, { 0, 0, 1 }, 0.25);
+  EXPECT_EQ(r.bivector[Bivector::E12], 0.5);
+  EXPECT_EQ(r.weight, 0.25);
+  const FieldGenerator d = FieldGenerator::dilation({ 1, 2, 3 }, 2.0);
+  const FieldGenerator dOf = FieldGenerator::of(GeneratorKind::Dilation, { 1, 2, 3 }, { 0, 3, 4 }, 0, 2.0);
+  EXPECT_LE(cgatest::relativeDifference(dOf.bivector, 5.0 * d.bivector), 1e-16);
+  const FieldGenerator tw = FieldGenerator::twist({ 1, 0, 0 }, { 0, 1, 0 }, 0.0, 1.0);
+  const FieldGenerator ro = FieldGenerator::rotation({ 1, 0, 0 }, { 0, 1, 0 }, 1.0);
+  EXPECT_EQ(cgatest::relativeDifference(tw.bivector, ro.bivector), 0.0); // pitch 0: a rotation
+}
+
+// One random generator of `kind` at a time, on random points, strengths, falloffs and epsilons,
+// against closedForm(g, c, p), c = strength w |v| / (k |p - x|^2 + eps), with each rule of
+// `exactRules`; returns the largest distance of the other rule's images from the closed form.
+template <typename ClosedForm>
+double expectOneGeneratorIsItsClosedForm(GeneratorKind kind,
+                                         std::uint64_t seed,
+                                         std::vector<ExponentialRule> exactRules,
+                                         ClosedForm closedForm)
+{
+  Random random(seed);
+  double largestOtherRuleError = 0.0;
+  for (int n = 0; n < 500; ++n)
+  {
+    const GeneratorParameters g = randomGenerator(random, kind);
+    const double k = random.uniform(0.0, 2.0), eps = random.uniform(0.01, 1.0);
+    const double strength = random.uniform(-3.0, 3.0);
+    const PointPairField field(&g, 1, k, eps);
+    const Vec3 p = random.vec3(3.0);
+    const double c = strength * g.weight * norm(g.direction) / (k * norm2(p - g.location) + eps);
+    const Vec3 expected = closedForm(g, c, p);
+    for (ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
+    {
+      Vec3 image;
+      EXPECT_TRUE(field.map(p, strength, rule, image));
+      if (std::find(exactRules.begin(), exactRules.end(), rule) != exactRules.end())
+      {
+        EXPECT_LE(distance(image, expected), 1e-12 * (1.0 + norm(expected)));
+      }
+      else
+      {
+        largestOtherRuleError = std::max(largestOtherRuleError, distance(image, expected));
+      }
+    }
+  }
+  return largestOtherRuleError;
+}
+
+const std::vector<ExponentialRule> kBothRules = { ExponentialRule::Exact, ExponentialRule::Paper };
+
+TEST(GeneratorKinds, OneRotationTurnsAboutItsAxisByTheDocumentedAngle)
+{
+  // The angle c, right-handed about v.
+  expectOneGeneratorIsItsClosedForm(GeneratorKind::Rotation, 82, kBothRules,
+    [](const GeneratorParameters& g, double c, Vec3 p)
+    { return g.location + rotated(p - g.location, normalized(g.direction), c); });
+  // A quarter turn about +z turns +x into +y.
+  const FieldGenerator quarter =
+    FieldGenerator::rotation({ 0, 0, 0 }, { 0, 0, 1 }, 0.5 * M_PI * (1.0 + 1.0));
+  const PointPairField field(&quarter, 1, 1.0, 1.0); // d^2 = |p|^2 + 1 = 2 at p = e1
+  Vec3 image;
+  ASSERT_TRUE(field.map({ 1, 0, 0 }, 1.0, ExponentialRule::Exact, image));
+  EXPECT_LE(distance(image, { 0, 1, 0 }), 1e-15);
+}
+
+TEST(GeneratorKinds, OneTwistIsTheScrewMotion)
+{
+  // The turn by c and the advance pitch * c along v: a screw (Exact). A twist is not a blade, so
+  // the Paper rule is not this map.
+  const double paperError = expectOneGeneratorIsItsClosedForm(GeneratorKind::Twist, 83,
+    { ExponentialRule::Exact },
+    [](const GeneratorParameters& g, double c, Vec3 p)
+    {
+      const Vec3 axis = normalized(g.direction);
+      return g.location + rotated(p - g.location, axis, c) + (g.pitch * c) * axis;
+    });
+  EXPECT_GT(paperError, 1e-3);
+}
+
+TEST(GeneratorKinds, OneDilationScalesAboutItsLocationByTheDocumentedFactor)
+{
+  // The factor exp(c): a positive weight grows.
+  expectOneGeneratorIsItsClosedForm(GeneratorKind::Dilation, 84, kBothRules,
+    [](const GeneratorParameters& g, double c, Vec3 p)
+    { return g.location + std::exp(c) * (p - g.location); });
+}
+
+TEST(GeneratorKinds, OneTranslationTranslatesAlongItsDirection)
+{
+  // By c along v/|v|; x only places the falloff.
+  expectOneGeneratorIsItsClosedForm(GeneratorKind::Translation, 85, kBothRules,
+    [](const GeneratorParameters& g, double c, Vec3 p) { return p + c * normalized(g.direction); });
+}
+
+TEST(GeneratorKinds, SumsOfKindsMatchTheSeriesExponentialOfTheFullProduct)
+{
+  Random random(86);
+  for (int n = 0; n < 300; ++n)
+  {
+    std::vector<GeneratorParameters> generators;
+    for (int i = 0; i < 2 + n % 6; ++i)
+    {
+      generators.push_back(randomGenerator(random, kAllKinds[(n + i) % 5]));
+    }
+    const PointPairField field(generators.data(), generators.size(), 1.5, 0.05);
+    const Vec3 p = random.vec3(2.0);
+    Vec3 image;
+    ASSERT_TRUE(field.map(p, 1.0, ExponentialRule::Exact, image));
+    const Vec3 expected = referenceImage(expSeries(referenceField(generators, p, 1.5, 0.05) * -1.0), p);
+    EXPECT_LE(distance(image, expected), 1e-12 * (1.0 + norm(expected)));
+  }
+}
+
+// The angle at a of the triangle a, b, c.
+double angleAt(Vec3 a, Vec3 b, Vec3 c)
+{
+  return std::acos(dot(normalized(b - a), normalized(c - a)));
+}
+
+TEST(GeneratorKinds, ExactSumsOfKindsAreConformal)
+{
+  // K(a) = exp(-B(a)) is a versor: images null to 1e-12 relative, and K(a) keeps the angles of a
+  // small triangle (size h) at a to first order (the field's K changes from point to point, so
+  // it is K(a) that is applied to the whole triangle).
+  Random random(87);
+  const double h = 1e-4;
+  double largestPaperAngleChange = 0.0; // the Paper rule's K is not a versor: the check can fail
+  for (int n = 0; n < 200; ++n)
+  {
+    std::vector<GeneratorParameters> generators;
+    for (int i = 0; i < 5; ++i)
+    {
+      generators.push_back(randomGenerator(random, kAllKinds[(n + i) % 5]));
+    }
+    const PointPairField field(generators.data(), generators.size(), 1.0, 0.1);
+    const Vec3 a = random.vec3(2.0);
+    const Multivector k = toMultivector(field.boostAt(a, 1.0, ExponentialRule::Exact));
+    const Multivector image = sandwich(k, up(a));
+    const Multivector grade1 = image.grade(1);
+    const double size = grade1.coefficientNorm();
+    EXPECT_LE((grade1 * grade1).coefficientNorm(), 1e-12 * size * size);
+    EXPECT_LE((image - grade1).coefficientNorm(), 1e-12 * size);
+    const Vec3 b = a + h * random.unit(), c = a + h * random.unit();
+    const double before = angleAt(a, b, c);
+    const double after = angleAt(referenceImage(k, a), referenceImage(k, b), referenceImage(k, c));
+    EXPECT_LE(std::fabs(after - before), 10.0 * h);
+    const Multivector paper = toMultivector(field.boostAt(a, 1.0, ExponentialRule::Paper));
+    largestPaperAngleChange = std::max(largestPaperAngleChange,
+      std::fabs(angleAt(referenceImage(paper, a), referenceImage(paper, b), referenceImage(paper, c)) - before));
+  }
+  EXPECT_GT(largestPaperAngleChange, 100.0 * h);
+}
+
+double outerSquareSize(const Bivector& b)
+{
+  const Multivector m = toMultivector(b);
+  return (m ^ m).coefficientNorm() / std::max(1e-300, m.coefficientNorm() * m.coefficientNorm());
+}
+
+// Over random points: the largest distance between the Paper and the Exact images (relative)
+// and the largest relative size of B(p) ^ B(p).
+struct RuleComparison
+{
+  double ruleDifference = 0.0;
+  double outerSquare = 0.0;
+};
+
+RuleComparison compareRules(const std::vector<GeneratorParameters>& generators, Random& random)
+{
+  const PointPairField field(generators.data(), generators.size(), 1.0, 0.1);
+  RuleComparison result;
+  for (int n = 0; n < 50; ++n)
+  {
+    const Vec3 p = random.vec3(2.0);
+    Vec3 paper, exact;
+    EXPECT_TRUE(field.map(p, 1.0, ExponentialRule::Paper, paper));
+    EXPECT_TRUE(field.map(p, 1.0, ExponentialRule::Exact, exact));
+    result.ruleDifference =
+      std::max(result.ruleDifference, distance(paper, exact) / (1.0 + norm(exact)));
+    result.outerSquare = std::max(result.outerSquare, outerSquareSize(field.generatorAt(p)));
+  }
+  return result;
+}
+
+void expectRulesAgree(const std::vector<GeneratorParameters>& generators, Random& random)
+{
+  const RuleComparison c = compareRules(generators, random);
+  EXPECT_LE(c.outerSquare, 1e-14);
+  EXPECT_LE(c.ruleDifference, 1e-12);
+}
+
+void expectRulesDiffer(const std::vector<GeneratorParameters>& generators, Random& random)
+{
+  const RuleComparison c = compareRules(generators, random);
+  EXPECT_GT(c.outerSquare, 1e-3);
+  EXPECT_GT(c.ruleDifference, 1e-4);
+}
+
+TEST(GeneratorKinds, PaperIsExactWhereTheSumIsABlade)
+{
+  // Eq 9-10 assume B^2 scalar, i.e. B ^ B = 0: then Paper = Exact. That holds for one generator
+  // of every kind but a Twist of non-zero pitch, for rotations about one point or about parallel
+  // axes, for any mix of dilations and translations, and for rotations with translations across
+  // their (parallel) axes; not for a twist, a rotation with a translation along its axis, or
+  // point pairs at different places.
+  Random random(88);
+  for (GeneratorKind kind : { GeneratorKind::PointPair, GeneratorKind::Rotation,
+                              GeneratorKind::Dilation, GeneratorKind::Translation })
+  {
+    for (int n = 0; n < 20; ++n)
+    {
+      expectRulesAgree({ randomGenerator(random, kind) }, random);
+    }
+  }
+  const Vec3 z{ 0, 0, 1 };
+  for (int n = 0; n < 20; ++n)
+  {
+    const Vec3 center = random.vec3(1.0);
+    expectRulesAgree({ { GeneratorKind::Rotation, center, random.unit(), 0, 0.5 },
+                       { GeneratorKind::Rotation, center, random.unit(), 0, -0.7 } },
+                     random);
+    expectRulesAgree({ { GeneratorKind::Rotation, random.vec3(1.0), z, 0, 0.5 },
+                       { GeneratorKind::Rotation, random.vec3(1.0), -2.0 * z, 0, 0.3 },
+                       { GeneratorKind::Translation, random.vec3(1.0), { 1, 2, 0 }, 0, 0.4 } },
+                     random);
+    expectRulesAgree({ { GeneratorKind::Dilation, random.vec3(1.0), z, 0, 0.5 },
+                       { GeneratorKind::Dilation, random.vec3(1.0), z, 0, -0.3 },
+                       { GeneratorKind::Translation, random.vec3(1.0), random.unit(), 0, 0.4 } },
+                     random);
+  }
+  expectRulesDiffer({ { GeneratorKind::Twist, { 0.2, 0, 0 }, z, 0.3, 0.5 } }, random);
+  expectRulesDiffer({ { GeneratorKind::Rotation, { 0.2, 0, 0 }, z, 0, 0.5 },
+                      { GeneratorKind::Translation, { 0, 0, 0 }, z, 0, 0.5 } },
+                    random);
+  expectRulesDiffer({ { GeneratorKind::PointPair, { -1, 0, 0 }, z, 0, 0.5 },
+                      { GeneratorKind::PointPair, { 1, 0, 0 }, { 0, 1, 0 }, 0, 0.5 } },
+                    random);
+}
+
+TEST(GeneratorKinds, BadGeneratorsAreSkipped)
+{
+  // Zero or non-finite directions (every kind), a non-finite pitch, an unknown kind, non-finite
+  // locations and weights: skipped and counted, never a non-finite image.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<GeneratorParameters> bad;
+  for (GeneratorKind kind : kAllKinds)
+  {
+    bad.push_back({ kind, { 0, 0, 0 }, { 0, 0, 0 }, 0.5, 1.0 });
+    bad.push_back({ kind, { 0, 0, 0 }, { nan, 0, 1 }, 0.5, 1.0 });
+    bad.push_back({ kind, { 0, 0, 0 }, { inf, 0, 1 }, 0.5, 1.0 });
+    bad.push_back({ kind, { nan, 0, 0 }, { 0, 0, 1 }, 0.5, 1.0 });
+    bad.push_back({ kind, { 0, 0, 0 }, { 0, 0, 1 }, 0.5, inf });
+  }
+  bad.push_back({ GeneratorKind::Twist, { 0, 0, 0 }, { 0, 0, 1 }, nan, 1.0 });
+  bad.push_back({ GeneratorKind::Twist, { 0, 0, 0 }, { 0, 0, 1 }, inf, 1.0 });
+  bad.push_back({ static_cast<GeneratorKind>(5), { 0, 0, 0 }, { 0, 0, 1 }, 0, 1.0 });
+  bad.push_back({ static_cast<GeneratorKind>(-1), { 0, 0, 0 }, { 0, 0, 1 }, 0, 1.0 });
+  EXPECT_FALSE(isGeneratorKind(5));
+  EXPECT_FALSE(isGeneratorKind(-1));
+  EXPECT_TRUE(isGeneratorKind(4));
+  // A non-finite pitch does not matter to the kinds that do not read it.
+  bad.push_back({ GeneratorKind::Rotation, { 1, 0, 0 }, { 0, 0, 1 }, nan, 0.5 });
+  const PointPairField field(bad.data(), bad.size(), 1.0, 0.1);
+  EXPECT_EQ(field.size(), 1u);
+  EXPECT_EQ(field.skippedGenerators(), bad.size() - 1);
+  Vec3 image;
+  ASSERT_TRUE(field.map({ 0.3, 0.4, 0.5 }, 1.0, ExponentialRule::Exact, image));
+  EXPECT_TRUE(isFinite(image));
+}
+
+TEST(GeneratorKinds, DipoleFieldTakesEveryKindAndOnlyPointPairsHaveAPotential)
+{
+  Random random(89);
+  for (GeneratorKind kind : kAllKinds)
+  {
+    const GeneratorParameters g = randomGenerator(random, kind);
+    const DipoleField dipole(&g, 1, 1.0, 0.1);
+    const PointPairField field(&g, 1, 1.0, 0.1);
+    const Vec3 p = random.vec3(2.0);
+    DipoleSample sample;
+    ASSERT_TRUE(dipole.sample(p, 1.0, sample));
+    Vec3 image;
+    ASSERT_TRUE(field.map(p, 1.0, ExponentialRule::Exact, image));
+    // One generator: both methods are its map.
+    EXPECT_LE(distance(sample.summedGenerators, image - p), 1e-15 * (1.0 + norm(p)));
+    EXPECT_LE(distance(sample.summedDisplacements, image - p), 1e-15 * (1.0 + norm(p)));
+    if (kind == GeneratorKind::PointPair)
+    {
+      const Vec3 r = p - g.location;
+      EXPECT_NEAR(sample.potential, g.weight * dot(g.direction, r) / (norm2(r) + 0.1), 1e-14);
+    }
+    else
+    {
+      EXPECT_EQ(sample.potential, 0.0);
+    }
+  }
+}
+} // namespace

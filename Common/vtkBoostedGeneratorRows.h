@@ -1,0 +1,50 @@
+// The one layout of a generator row, shared by vtkPointPairDeformationFilter and
+// vtkDipoleFieldSource (their lists and ParaView tables): x, y, z, direction x, y, z, weight,
+// kind, pitch. A row given without its last two values (the 7-value AddGenerator/SetGenerator,
+// old scripts) is a point pair of pitch 0. The kind constants of the VTK classes are
+// cga::GeneratorKind's values (checked at compile time by vtkBoostedGeneratorKinds).
+#ifndef vtkBoostedGeneratorRows_h
+#define vtkBoostedGeneratorRows_h
+
+#include "BoostedSurfacesCommonModule.h" // for export macro
+#include "cga/PointPairField.h"
+
+#include <string>
+#include <vector>
+
+namespace vtkBoostedGeneratorRows
+{
+constexpr int NumberOfValues = 9;
+constexpr int KindValue = 7;
+constexpr int PitchValue = 8;
+
+/// The value of a row that SetNumberOfGenerators adds: all zero (a point pair of zero direction,
+/// ignored until set).
+BOOSTEDSURFACESCOMMON_EXPORT std::vector<double> BlankRow();
+
+/// The kinds as messages and documentation list them: "0 (POINT_PAIR), 1 (ROTATION), ...".
+BOOSTEDSURFACESCOMMON_EXPORT std::string KindList();
+
+/// The kind a row's value names; false (with `problem` set) when it is not one of the five
+/// integers 0 ... 4. `what` names the value in the message ("row 3", "point 12").
+BOOSTEDSURFACESCOMMON_EXPORT bool ReadKind(double value, const std::string& what, cga::GeneratorKind& kind, std::string& problem);
+
+/// Row `row` of a list as the core's generator, at `location` (the row's own or the handle's).
+BOOSTEDSURFACESCOMMON_EXPORT bool Read(const double* row, const double location[3], int index, cga::GeneratorParameters& out,
+  std::string& problem);
+} // namespace vtkBoostedGeneratorRows
+
+/// Checks at compile time that a VTK class numbers the kinds as cga::GeneratorKind does.
+template <class VTKClass>
+constexpr bool vtkBoostedGeneratorKinds()
+{
+  static_assert(VTKClass::POINT_PAIR == static_cast<int>(cga::GeneratorKind::PointPair) &&
+      VTKClass::ROTATION == static_cast<int>(cga::GeneratorKind::Rotation) &&
+      VTKClass::TWIST == static_cast<int>(cga::GeneratorKind::Twist) &&
+      VTKClass::DILATION == static_cast<int>(cga::GeneratorKind::Dilation) &&
+      VTKClass::TRANSLATION == static_cast<int>(cga::GeneratorKind::Translation),
+    "the class's kind constants must be cga::GeneratorKind's values");
+  return true;
+}
+
+#endif
