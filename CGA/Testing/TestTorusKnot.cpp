@@ -75,6 +75,18 @@ TEST(TorusKnot, CoreRotationsCommuteSquareToMinusOneAndFixTheirCircles)
     const Vec3 onC = circle(knot.coreC(), 3)[0];
     ASSERT_TRUE(aboutA.point(onC, 0.7, moved));
     EXPECT_GT(cgatest::distance(moved, onC), 1e-3 * knot.radius);
+    // The orbit's cores (read from the undual parts) are A and C, oriented alike.
+    RoundInfo round;
+    const Orbit orbit = knot.orbit();
+    const TorusKnot::Circle cores[2] = { knot.coreA(), knot.coreC() };
+    for (int i = 0; i < 2; ++i)
+    {
+      ASSERT_TRUE(orbit.core(i, round));
+      ASSERT_FALSE(round.isLine);
+      EXPECT_TRUE(cgatest::pointsNear(round.center, cores[i].center, 1e-9));
+      EXPECT_TRUE(cgatest::pointsNear(round.normal, cores[i].normal, 1e-9));
+      EXPECT_NEAR(round.radius, cores[i].radius, 1e-9 * knot.radius);
+    }
     // The cores are linked once.
     EXPECT_NEAR(polygonLinkingNumber(circle(knot.coreA(), 400), circle(knot.coreC(), 400)), 1.0, 1e-9);
   }

@@ -309,6 +309,10 @@ bool Orbit::core(int i, RoundInfo& out) const
     return false;
   }
   out = readCircle(toMultivector(part.blade).undual());
+  // readCircle orients the undual against the turn: flip it, so that the rotation turns space
+  // right-handed about the oriented core (a small orbit about it links it +1).
+  out.normal = -out.normal;
+  out.direction = -out.direction;
   return isFinite(out.center) && (out.isLine ? isFinite(out.direction) : std::isfinite(out.radius));
 }
 } // namespace cga

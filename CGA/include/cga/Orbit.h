@@ -87,7 +87,9 @@ public:
 
   /// The core of part i: the circle (or line) that the rotation exp(t B_i) keeps fixed and turns
   /// space about, read from the undual of B_i. False for a part that is not a rotation, or whose
-  /// blade is not known (equal squares without a given split).
+  /// blade is not known (equal squares without a given split). Oriented so that the rotation
+  /// turns space right-handed about it: a circle counter-clockwise about `normal`, a line along
+  /// `direction`.
   bool core(int i, RoundInfo& out) const;
 
 private:
