@@ -5,6 +5,7 @@
 #include "vtkBoostedGridDriver.h"
 #include "vtkBoostedRowList.h"
 #include "vtkBoostedSphereClip.h"
+#include "vtkBoostedWholeInput.h"
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -139,13 +140,7 @@ int vtkConformalOrbitSource::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // Every rank reads all the seeds: the orbits, not the input, are divided among pieces.
-  if (inputVector[0]->GetNumberOfInformationObjects() > 0)
-  {
-    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-  }
+  vtkBoostedWholeInput::Request(inputVector[0]->GetInformationObject(0));
   return 1;
 }
 
