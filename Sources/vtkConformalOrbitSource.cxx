@@ -24,6 +24,7 @@
 #include "cga/PointPairField.h"
 #include "cga/surfaces/TorusKnot.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <string>
@@ -210,39 +211,45 @@ int vtkConformalOrbitSource::RequestData(
     problem = "TRange must be finite with min <= max";
   }
 
-  // The seeds.
+  // The seeds, counted first: the size checks come before any copy of a huge input.
+  const int columns = this->TResolution + 1;
+  // Bytes per sample: the Hopf source's fibers, measured for the same builder and clip.
+  const double bytesPerSample = 140;
   std::vector<cga::Vec3> seeds;
   if (problem.empty())
   {
-    if (this->SeedMode == SEED_POINT)
-    {
-      seeds.push_back(cga::toVec3(this->SeedPoint));
-    }
-    else if (this->SeedMode == SEED_LIST)
+    long long count = 1;
+    if (this->SeedMode == SEED_LIST)
     {
       problem = this->Seeds->Problem();
-      for (int i = 0; problem.empty() && i < this->Seeds->GetNumberOfRows(); ++i)
+      count = this->Seeds->GetNumberOfRows();
+    }
+    else if (this->SeedMode == INPUT_POINTS)
+    {
+      problem = input ? "" : "SeedMode is INPUT_POINTS but there is no input";
+      count = input ? static_cast<long long>(input->GetNumberOfPoints()) : 0;
+    }
+    if (problem.empty())
+    {
+      problem = vtkBoostedGridDriver::GridProblem(count, columns, bytesPerSample, "the orbits");
+    }
+    for (long long i = 0; problem.empty() && i < count; ++i)
+    {
+      double p[3];
+      if (this->SeedMode == SEED_POINT)
       {
-        seeds.push_back(cga::toVec3(this->Seeds->Row(i)));
+        std::copy_n(this->SeedPoint, 3, p);
       }
-    }
-    else if (!input)
-    {
-      problem = "SeedMode is INPUT_POINTS but there is no input";
-    }
-    else
-    {
-      seeds.resize(static_cast<size_t>(input->GetNumberOfPoints()));
-      for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+      else if (this->SeedMode == SEED_LIST)
       {
-        double p[3];
-        input->GetPoint(i, p);
-        seeds[i] = cga::toVec3(p);
+        std::copy_n(this->Seeds->Row(static_cast<int>(i)), 3, p);
       }
-    }
-    for (size_t i = 0; problem.empty() && i < seeds.size(); ++i)
-    {
-      if (!cga::isFinite(seeds[i]))
+      else
+      {
+        input->GetPoint(static_cast<vtkIdType>(i), p);
+      }
+      seeds.push_back(cga::toVec3(p));
+      if (!cga::isFinite(seeds.back()))
       {
         problem = "seed " + std::to_string(i) + " is not finite";
       }
@@ -254,7 +261,6 @@ int vtkConformalOrbitSource::RequestData(
   const bool closed = this->ClosePeriodicOrbits && period > 0.0;
   const double t0 = this->TRange[0];
   const double span = closed ? period : this->TRange[1] - this->TRange[0];
-  const int columns = this->TResolution + 1;
   std::vector<double> ts(columns);
   for (int c = 0; c < columns; ++c)
   {
@@ -295,13 +301,6 @@ int vtkConformalOrbitSource::RequestData(
 
   // The orbits: rows = seeds, columns = samples of t (vtkBoostedGridDriver: pieces, size and
   // memory checks, the block loop, the cut at the clip sphere).
-  // Bytes per sample: the Hopf source's fibers, measured for the same builder and clip.
-  const double bytesPerSample = 140;
-  if (problem.empty())
-  {
-    problem = vtkBoostedGridDriver::GridProblem(
-      static_cast<long long>(seeds.size()), columns, bytesPerSample, "the orbits");
-  }
   if (problem.empty())
   {
     problem = vtkBoostedGridDriver::ClipSphereProblem(this->ClipCenter, this->ClipRadius);
