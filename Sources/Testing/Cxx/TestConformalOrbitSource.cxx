@@ -416,6 +416,10 @@ TEST(ConformalOrbitSource, BadParametersGiveOneErrorAndEmptyOutputs)
         s->SetGeneratorTypeToGeneratorList();
         s->AddGenerator(0, 0, 0, 1, 0, 0, 1e200);
       },
+      [](S* s) {
+        s->SetGeneratorTypeToGeneratorList();
+        s->AddGenerator(0, 0, 0, 1, 0, 0, 1, 7, 0); // no such kind
+      },
       [=](S* s) { s->SetSeedPoint(0, nan, 0); },
       [=](S* s) {
         s->SetSeedModeToSeedList();
