@@ -556,8 +556,8 @@ void vtkPointPairDeformationFilter::Deform(
   {
     vtkWarningMacro(<< unchanged << " of " << count << " points were left in place: "
                     << nonFiniteInputs << " are NaN or infinite, " << unchanged - nonFiniteInputs
-                    << " have an image that is not finite (at infinity, or the field overflowed "
-                       "for huge weights)");
+                    << " have an image that is not finite (at infinity, beyond the range of the "
+                       "output points' precision, or the field overflowed for huge weights)");
   }
   output->SetPoints(outPoints);
   output->GetPointData()->AddArray(displacement);

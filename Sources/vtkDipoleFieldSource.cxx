@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -87,16 +88,27 @@ struct FieldFunctor
     }
     *this->Failures +=
       this->Field->sampleMany(points.data(), n, this->WeightScale, a.data(), b.data(), phi.data(), scratch.data());
+    // Huge weights of translations, twists or dilations move points by up to ~1e308, and sums of
+    // such displacements overflow: every value saturates at the largest of the output precision.
+    const double limit = this->SummedGenerators->GetDataType() == VTK_FLOAT
+      ? static_cast<double>(std::numeric_limits<float>::max())
+      : std::numeric_limits<double>::max();
+    const auto saturated = [limit](double value)
+    { return std::isnan(value) ? 0.0 : std::max(-limit, std::min(limit, value)); };
+    for (std::vector<double>* values : { &a, &b, &phi })
+    {
+      std::transform(values->begin(), values->end(), values->begin(), saturated);
+    }
     for (vtkIdType id = begin; id < end; ++id)
     {
       const std::size_t i = static_cast<std::size_t>(id - begin);
-      const double difference[3] = { a[3 * i] - b[3 * i], a[3 * i + 1] - b[3 * i + 1],
-        a[3 * i + 2] - b[3 * i + 2] };
+      const double difference[3] = { saturated(a[3 * i] - b[3 * i]),
+        saturated(a[3 * i + 1] - b[3 * i + 1]), saturated(a[3 * i + 2] - b[3 * i + 2]) };
       this->SummedGenerators->SetTuple(id, &a[3 * i]);
       this->SummedDisplacements->SetTuple(id, &b[3 * i]);
       this->Difference->SetTuple(id, difference);
       this->DifferenceMagnitude->SetTuple1(
-        id, cga::norm({ difference[0], difference[1], difference[2] })); // no spurious overflow
+        id, saturated(cga::norm({ difference[0], difference[1], difference[2] })));
       this->Potential->SetTuple1(id, phi[i]);
     }
   }

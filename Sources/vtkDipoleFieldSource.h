@@ -38,7 +38,8 @@
  * of the five constants) gives an error and an empty output. A generator with a zero direction or weight contributes nothing. The field stays
  * finite at a generator on a grid point (Epsilon > 0); a single generator leaves its location
  * fixed. Where a boost sends a grid point to infinity the failed displacement is zero and a
- * warning counts those points.
+ * warning counts those points. Every array saturates at the largest value of its precision where
+ * huge weights would overflow it.
  */
 #ifndef vtkDipoleFieldSource_h
 #define vtkDipoleFieldSource_h

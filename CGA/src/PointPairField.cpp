@@ -297,11 +297,15 @@ std::size_t mapPointsInBlocks(const kernel::FieldArgs& args,
     for (int l = 0; l < n; ++l)
     {
       Out* o = out + 3 * (first + l);
-      if (mapped[l])
+      const Out x = static_cast<Out>(image[l]), y = static_cast<Out>(image[L + l]),
+                z = static_cast<Out>(image[2 * L + l]);
+      // An image beyond the range of Out (a float output of a huge translation, twist or
+      // dilation) is left in place like one at infinity, never written as inf.
+      if (mapped[l] && std::isfinite(x) && std::isfinite(y) && std::isfinite(z))
       {
-        o[0] = static_cast<Out>(image[l]);
-        o[1] = static_cast<Out>(image[L + l]);
-        o[2] = static_cast<Out>(image[2 * L + l]);
+        o[0] = x;
+        o[1] = y;
+        o[2] = z;
       }
       else
       {

@@ -154,7 +154,8 @@ public:
 
   /// The batch form of map() that the VTK filters call on each chunk of points: `count` points,
   /// xyz interleaved, from `in` to `out` (which may be the same array when the types match).
-  /// A point that is not finite, or whose image is not finite, is copied unchanged; the return
+  /// A point that is not finite, or whose image is not finite (in out's type: a float out cannot
+  /// hold an image beyond 3.4e38), is copied unchanged; the return
   /// value counts them. `out` is written for every point. No heap allocation.
   /// The points go through a vectorized block kernel, the same source as map() instantiated for
   /// a vector of points (every image bit for bit as map() gives it), compiled for several

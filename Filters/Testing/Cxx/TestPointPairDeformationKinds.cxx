@@ -249,3 +249,54 @@ TEST(PointPairDeformationKinds, ZeroPitchTwistIsARotationAndBadTwistsAreIgnored)
   }
 }
 } // namespace
+
+namespace
+{
+// Huge weights and directions of every kind: translations, twists and dilations send points
+// far away (beyond float's range for float points); the output stays finite, such points are left
+// in place and counted in the one warning.
+TEST(PointPairDeformationKinds, HugeWeightsOfEveryKindGiveFiniteOutput)
+{
+  Random random(45);
+  for (int pointType : { VTK_FLOAT, VTK_DOUBLE })
+  {
+    vtkNew<vtkPolyData> mesh;
+    vtkNew<vtkPoints> points;
+    points->SetDataType(pointType);
+    for (int i = 0; i < 20; ++i)
+    {
+      const Vec3 p = random.vec3(2.0);
+      points->InsertNextPoint(p.x, p.y, p.z);
+    }
+    mesh->SetPoints(points);
+    for (GeneratorKind kind : cgatest::kAllKinds)
+    {
+      for (double weight : { 1e308, -1e308, 1e150, 1e40 })
+      {
+        for (double length : { 1.0, 1e200, 1e-200 })
+        {
+          vtkNew<vtkPointPairDeformationFilter> filter;
+          EventCounter events(filter);
+          filter->SetInputData(mesh);
+          filter->AddGenerator(0.1, 0.2, 0.3, 0, 0.6 * length, 0.8 * length, weight,
+            static_cast<double>(kind), 0.5);
+          filter->Update();
+          vtkPointSet* output = filter->GetOutput();
+          ASSERT_EQ(output->GetNumberOfPoints(), mesh->GetNumberOfPoints());
+          EXPECT_EQ(events.errors, 0);
+          vtkDataArray* displacement = output->GetPointData()->GetArray("Displacement");
+          for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+          {
+            const Vec3 p = pointOf(output, i);
+            EXPECT_TRUE(cga::isFinite(p)) << static_cast<int>(kind) << " " << weight;
+            double d[3];
+            displacement->GetTuple(i, d);
+            EXPECT_TRUE(std::isfinite(d[0]) && std::isfinite(d[1]) && std::isfinite(d[2]))
+              << static_cast<int>(kind) << " " << weight;
+          }
+        }
+      }
+    }
+  }
+}
+} // namespace

@@ -558,3 +558,45 @@ TEST(DipoleFieldSource, ARotationRowTurnsTheGridAndHasNoPotential)
   EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
 }
 } // namespace
+
+namespace
+{
+// Two generators of each kind with huge weights and directions: every array stays finite in both
+// precisions (values saturate at the precision's largest), and nothing is an error.
+TEST(DipoleFieldSource, HugeWeightsOfEveryKindGiveFiniteArrays)
+{
+  for (int precision : { vtkAlgorithm::SINGLE_PRECISION, vtkAlgorithm::DOUBLE_PRECISION })
+  {
+    for (int kind = vtkDipoleFieldSource::POINT_PAIR; kind <= vtkDipoleFieldSource::TRANSLATION; ++kind)
+    {
+      for (double weight : { 1e308, -1e308, 1e150, 1e40 })
+      {
+        for (double length : { 1.0, 1e200 })
+        {
+          vtkNew<vtkDipoleFieldSource> source;
+          EventCounter counter(source);
+          source->RemoveAllGenerators();
+          source->AddGenerator(0.1, 0.2, 0.3, 0, 0, length, weight, kind, 0.5);
+          source->AddGenerator(0.1, 0.25, 0.3, 0, 0, length, weight, kind, 0.5);
+          source->SetDimensions(6, 5, 1);
+          source->SetOutputPointsPrecision(precision);
+          source->Update();
+          EXPECT_EQ(counter.errors, 0);
+          vtkPointData* pointData = source->GetOutput()->GetPointData();
+          ASSERT_EQ(pointData->GetNumberOfArrays(), 5);
+          for (int a = 0; a < pointData->GetNumberOfArrays(); ++a)
+          {
+            vtkDataArray* array = pointData->GetArray(a);
+            for (vtkIdType i = 0; i < array->GetNumberOfValues(); ++i)
+            {
+              EXPECT_TRUE(std::isfinite(array->GetComponent(i / array->GetNumberOfComponents(),
+                static_cast<int>(i % array->GetNumberOfComponents()))))
+                << array->GetName() << " kind " << kind << " weight " << weight;
+            }
+          }
+        }
+      }
+    }
+  }
+}
+} // namespace
