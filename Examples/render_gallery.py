@@ -26,6 +26,7 @@ FIGURES = [
     "fig14_dipole_methods",
     "twisted_bar",
     "boost_versus_twist",
+    "torus_knots_and_orbits",
 ]
 
 

@@ -10,6 +10,7 @@
 #include "vtkBoostedRowList.h"
 #include "vtkBoostedSinglePrecision.h"
 #include "vtkBoostedSurfacesAbort.h"
+#include "vtkBoostedWholeInput.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataArrayRange.h"
@@ -452,18 +453,7 @@ int vtkPointPairDeformationFilter::ComputeInputUpdateExtent(
 {
   // The mesh (port 0) gets the downstream piece request unchanged; the generators are needed
   // whole on every rank, or the field would differ from piece to piece.
-  vtkInformation* generatorsInfo = inputVector[1]->GetInformationObject(0);
-  if (generatorsInfo)
-  {
-    generatorsInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-    generatorsInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-    generatorsInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-    if (generatorsInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
-    {
-      generatorsInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
-        generatorsInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
-    }
-  }
+  vtkBoostedWholeInput::Request(inputVector[1]->GetInformationObject(0));
   return 1;
 }
 

@@ -1,5 +1,6 @@
 // Exponentials (Exponential.h): the exact closed form against a matrix exponential and a series,
 // the paper's rule against the exact one, numerical edge cases.
+#include "MatrixExponentialReference.h"
 #include "TestSupport.h"
 
 #include "cga/CompactAlgebra.h"
@@ -9,9 +10,6 @@
 #include "cga/PointPairs.h"
 #include "cga/PointSandwich.h"
 
-#include <Eigen/Dense>
-#include <unsupported/Eigen/MatrixFunctions>
-
 #include <limits>
 
 namespace
@@ -19,49 +17,10 @@ namespace
 using namespace cga;
 using cgatest::Random;
 using cgatest::relativeDifference;
-using Matrix5 = Eigen::Matrix<double, 5, 5>;
-
-constexpr unsigned kVectorMasks[5] = { blade::e1, blade::e2, blade::e3, blade::ep, blade::em };
-
-// The vector map y -> B y - y B in the basis e1, e2, e3, e+, e-: d/dt of exp(tB) y exp(-tB).
-Matrix5 generator(const Multivector& b)
-{
-  Matrix5 a;
-  for (int j = 0; j < 5; ++j)
-  {
-    const Multivector ej = Multivector::basisBlade(kVectorMasks[j]);
-    const Multivector image = b * ej - ej * b;
-    for (int i = 0; i < 5; ++i)
-    {
-      a(i, j) = image[kVectorMasks[i]];
-    }
-  }
-  return a;
-}
-
-// Columns K e_j ~K of the versor K acting on vectors.
-Matrix5 vectorAction(const Multivector& k)
-{
-  Matrix5 m;
-  for (int j = 0; j < 5; ++j)
-  {
-    const Multivector image = sandwich(k, Multivector::basisBlade(kVectorMasks[j])).grade(1);
-    for (int i = 0; i < 5; ++i)
-    {
-      m(i, j) = image[kVectorMasks[i]];
-    }
-  }
-  return m;
-}
-
-// exp(A) by Eigen's matrix exponential, evaluated in long double: in double, its Pade approximant
-// is off by up to ~1e-11 of the result for the non-normal generators of conjugated rotations.
-Matrix5 matrixExponential(const Matrix5& a)
-{
-  using MatrixL = Eigen::Matrix<long double, 5, 5>;
-  const MatrixL e = a.cast<long double>().exp();
-  return e.cast<double>();
-}
+using cgatest::generator;
+using cgatest::Matrix5;
+using cgatest::matrixExponential;
+using cgatest::vectorAction;
 
 double maxAbs(const Matrix5& m)
 {

@@ -1,6 +1,7 @@
 // The Hopf fibration of docs/conventions.md section 4 (HopfFibration.h): the paper's boost-and-twist
 // construction against the full multivector product, fibers that are circles, disjoint and linked
 // once, the poles, and the classical mode against the stereographic images of S^3 great circles.
+#include "LinkingNumber.h"
 #include "TestSupport.h"
 
 #include "cga/Conformal.h"
@@ -13,6 +14,7 @@
 namespace
 {
 using namespace cga;
+using cgatest::gaussLinkingIntegral;
 using cgatest::Random;
 using cgatest::relativeDifference;
 
@@ -83,26 +85,6 @@ int linkingNumber(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
     }
   }
   return link;
-}
-
-// The Gauss linking integral (1/4pi) sum over segment pairs of (a - b).(da x db) / |a - b|^3 at
-// segment midpoints: an independent check of linkingNumber().
-double gaussLinkingIntegral(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
-{
-  double sum = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-  {
-    const Vec3 da = a[(i + 1) % a.size()] - a[i];
-    const Vec3 ma = a[i] + 0.5 * da;
-    for (std::size_t j = 0; j < b.size(); ++j)
-    {
-      const Vec3 db = b[(j + 1) % b.size()] - b[j];
-      const Vec3 r = ma - (b[j] + 0.5 * db);
-      const double d = norm(r);
-      sum += dot(r, cross(da, db)) / (d * d * d);
-    }
-  }
-  return sum / (4.0 * kPi);
 }
 
 double minimumDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b)

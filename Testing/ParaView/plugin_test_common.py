@@ -117,10 +117,11 @@ def check_defaults(proxy, defaults, failures):
             failures.append("default %s is %r, expected %r" % (name, value, expected))
 
 
-# The column names of the plugin's tables; the generator table is the same in both classes.
+# The column names of the plugin's tables; the generator table is the same in every class.
 GENERATOR_COLUMNS = ("X", "Y", "Z", "Direction X", "Direction Y", "Direction Z", "Weight",
                      "Kind", "Pitch")
 BASE_POINT_COLUMNS = ("Theta", "Phi")
+SEED_COLUMNS = ("X", "Y", "Z")
 CONTROL_POINT_COLUMNS = ("X", "Y", "Z", "Normal X", "Normal Y", "Normal Z", "U Direction X",
                          "U Direction Y", "U Direction Z", "Kappa U", "Kappa V")
 

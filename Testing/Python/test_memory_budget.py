@@ -13,7 +13,7 @@ import unittest
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkRectilinearGrid, vtkPolyData
 from vtkmodules.vtkFiltersSources import vtkSphereSource
 
-from boostedsurfaces import (vtkBoostedSurfaceSource, vtkCurvaturePatchSource,
+from boostedsurfaces import (vtkBoostedSurfaceSource, vtkConformalOrbitSource, vtkCurvaturePatchSource,
                              vtkDipoleFieldSource, vtkHopfFibrationSource,
                              vtkPointPairDeformationFilter)
 
@@ -55,6 +55,7 @@ ALGORITHMS = {
     "HopfFibers": vtkHopfFibrationSource,
     "HopfTwistorMesh": hopf_mesh,
     "DipoleField": vtkDipoleFieldSource,
+    "ConformalOrbit": vtkConformalOrbitSource,
     "DeformationPolyData": sphere_filter,
     "DeformationImage": image_filter,
 }

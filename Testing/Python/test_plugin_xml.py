@@ -182,7 +182,7 @@ class PluginXmlTest(unittest.TestCase):
                         for value, words, constant in entries:
                             self.assertEqual(words.upper().replace(" ", "_"), constant)
                             self.assertEqual(getattr(cls, constant), int(value))
-        self.assertEqual(tables, 2)  # the deformation filter's and the dipole source's
+        self.assertEqual(tables, 3)  # the deformation filter's, the dipole source's, the orbits'
 
 
 if __name__ == "__main__":

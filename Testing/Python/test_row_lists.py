@@ -1,4 +1,4 @@
-"""The one list API of the four classes with a list (vtkBoostedRowList in C++), through the
+"""The one list API of the classes with a list (vtkBoostedRowList in C++), through the
 Python wrapping: AddX returns the index, SetX(i, ...), SetNumberOfX(n), GetX(i, values),
 RemoveAllX(), GetNumberOfX(), and the 10^6-row cap: one error, then an empty output until the list
 is cleared or resized.
@@ -7,8 +7,9 @@ is cleared or resized.
 """
 import unittest
 
-from boostedsurfaces import (vtkCurvaturePatchSource, vtkDipoleFieldSource,
-                             vtkHopfFibrationSource, vtkPointPairDeformationFilter)
+from boostedsurfaces import (vtkConformalOrbitSource, vtkCurvaturePatchSource,
+                             vtkDipoleFieldSource, vtkHopfFibrationSource,
+                             vtkPointPairDeformationFilter)
 from vtkmodules.vtkFiltersSources import vtkSphereSource
 
 import python_test_common as common
@@ -29,6 +30,18 @@ def hopf_source():
     return source
 
 
+def orbit_generators():
+    source = vtkConformalOrbitSource()
+    source.SetGeneratorTypeToGeneratorList()
+    return source
+
+
+def orbit_seeds():
+    source = vtkConformalOrbitSource()
+    source.SetSeedModeToSeedList()
+    return source
+
+
 def patch_source():
     source = vtkCurvaturePatchSource()
     source.SetMethodToControlPoints()
@@ -40,6 +53,8 @@ LISTS = [
     (deformation_filter, "Generator", [0.0, 0.0, 0.5, 0.0, 0.0, 1.0, 0.5, 1.0, 0.25], [0.0] * 9, 0),
     (vtkDipoleFieldSource, "Generator", [0.0, 0.5, 0.0, 1.0, 0.0, 0.0, 0.5, 3.0, 0.0], [0.0] * 9, 1),
     (hopf_source, "BasePoint", [0.5, 0.25], [0.0, 0.0], 0),
+    (orbit_generators, "Generator", [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.5, 1.0, 0.0], [0.0] * 9, 0),
+    (orbit_seeds, "Seed", [0.15, 0.0, 0.0], [0.0, 0.0, 0.0], 0),
     (patch_source, "ControlPoint", [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.5, 0.5],
      [0, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0], 0),
 ]
@@ -53,7 +68,7 @@ def api(obj, row):
 class RowListTest(unittest.TestCase):
     def test_generator_rows_without_kind_and_pitch_are_point_pairs(self):
         # The 7-value AddGenerator/SetGenerator of older scripts: kind POINT_PAIR (0), pitch 0.
-        for make in (deformation_filter, vtkDipoleFieldSource):
+        for make in (deformation_filter, vtkDipoleFieldSource, orbit_generators):
             with self.subTest(cls=make.__name__):
                 obj = make()
                 obj.RemoveAllGenerators()

@@ -1,0 +1,318 @@
+#include "cga/Orbit.h"
+
+#include "cga/CompactAlgebra.h"
+#include "cga/CompactConversion.h"
+#include "cga/Exponential.h"
+#include "cga/PointSandwich.h"
+
+#include <cmath>
+#include <limits>
+
+namespace cga
+{
+namespace
+{
+using Real = long double;
+
+// <B B>_0 and (B ^ B)^2 of a bivector in extended precision, from its null-basis components
+// (docs/conventions.md section 1 item 12): with F the e_ij part, a the e_i^no part, b the e_i^ni
+// part and d the no^ni part, B ^ B = 2 (F^a) ^ no + 2 (F^b) ^ ni + 2 (d F - a^b) ^ no^ni.
+struct Invariants
+{
+  Real s = 0.0L, w2 = 0.0L;
+};
+
+Invariants invariants(const Bivector& b)
+{
+  const Real c12 = b[Bivector::E12], c13 = b[Bivector::E13], c23 = b[Bivector::E23];
+  const Real a1 = b[Bivector::E1NO], a2 = b[Bivector::E2NO], a3 = b[Bivector::E3NO];
+  const Real b1 = b[Bivector::E1NI], b2 = b[Bivector::E2NI], b3 = b[Bivector::E3NI];
+  const Real d = b[Bivector::NONI];
+  Invariants r;
+  r.s = -(c12 * c12 + c13 * c13 + c23 * c23) + 2.0L * (a1 * b1 + a2 * b2 + a3 * b3) + d * d;
+  const Real alpha = 2.0L * (c12 * a3 - c13 * a2 + c23 * a1);  // e123^no
+  const Real beta = 2.0L * (c12 * b3 - c13 * b2 + c23 * b1);   // e123^ni
+  const Real g12 = 2.0L * (d * c12 - (a1 * b2 - a2 * b1));      // e12^no^ni
+  const Real g13 = 2.0L * (d * c13 - (a1 * b3 - a3 * b1));
+  const Real g23 = 2.0L * (d * c23 - (a2 * b3 - a3 * b2));
+  r.w2 = -2.0L * alpha * beta - (g12 * g12 + g13 * g13 + g23 * g23);
+  return r;
+}
+
+// The roots l1 >= l2 of l^2 - s l + w2/4 (the planeSquares of the exponential, extended). A
+// discriminant within the rounding of s^2 - w2 is a double root: the two squares are equal (an
+// isoclinic double rotation), not split by rounding into rates about 1e-9 apart.
+void squares(const Invariants& v, Real& l1, Real& l2)
+{
+  const Real disc = v.s * v.s - v.w2;
+  if (!(disc > 16.0L * std::numeric_limits<Real>::epsilon() * (v.s * v.s + std::fabs(v.w2))))
+  {
+    l1 = l2 = 0.5L * v.s;
+    return;
+  }
+  const Real r = std::sqrt(disc);
+  if (v.s >= 0.0L)
+  {
+    l1 = 0.5L * (v.s + r);
+    l2 = l1 != 0.0L ? 0.25L * v.w2 / l1 : 0.0L;
+  }
+  else
+  {
+    l2 = 0.5L * (v.s - r);
+    l1 = 0.25L * v.w2 / l2;
+  }
+}
+
+OrbitPartKind kindOf(Real square, bool zeroBlade, Real tolerance)
+{
+  if (zeroBlade)
+  {
+    return OrbitPartKind::Zero;
+  }
+  if (square < -tolerance)
+  {
+    return OrbitPartKind::Elliptic;
+  }
+  return square > tolerance ? OrbitPartKind::Hyperbolic : OrbitPartKind::Parabolic;
+}
+
+// One plane's factors at x = t r for exp(t B): c = cos x and sHat = sin x / r for a negative
+// square, cosh and sinh for a positive one, divided by cosh beyond the threshold of
+// Exponential.h (as expExact's AvoidOverflow), 1 and t for a zero square.
+void planeFactors(Real square, Real rate, Real t, Real& c, Real& sHat)
+{
+  const Real x = t * rate;
+  if (rate == 0.0L)
+  {
+    c = 1.0L;
+    sHat = t;
+  }
+  else if (square < 0.0L)
+  {
+    c = std::cos(x);
+    sHat = std::sin(x) / rate;
+  }
+  else if (std::fabs(x) > static_cast<Real>(kExpScalingThreshold))
+  {
+    c = 1.0L;
+    sHat = std::tanh(x) / rate;
+  }
+  else
+  {
+    c = std::cosh(x);
+    sHat = std::sinh(x) / rate;
+  }
+}
+
+Real sinc(Real x)
+{
+  return std::fabs(x) < 1e-5L ? 1.0L - x * x / 6.0L : std::sin(x) / x;
+}
+} // namespace
+
+Orbit::Orbit(const Bivector& b)
+  : B(b)
+{
+  this->classify(b);
+  if (!this->Problem.empty() || this->Identity)
+  {
+    return;
+  }
+  const Real scale = static_cast<Real>(b.maxAbs());
+  const Invariants v = invariants(b);
+  Real l[2];
+  squares(v, l[0], l[1]);
+  // The blades: known for a 2-blade (B, 0) and from the decomposition when the squares differ.
+  InvariantDecomposition split;
+  const bool blade = std::fabs(v.w2) <= 1e-24L * scale * scale * scale * scale;
+  const bool known = blade || (l[0] != l[1] && invariantDecomposition(b, split));
+  for (int i = 0; i < 2; ++i)
+  {
+    const bool zero = blade && i == 1;
+    this->setPart(i, zero ? Bivector() : (blade ? b : (i == 0 ? split.first : split.second)),
+      zero ? 0.0L : (blade ? v.s : l[i]), zero);
+  }
+  this->KnownParts = known;
+  this->findPeriod();
+}
+
+Orbit::Orbit(const Bivector& first, const Bivector& second)
+  : B(first + second)
+{
+  this->classify(this->B);
+  if (!this->Problem.empty() || this->Identity)
+  {
+    return;
+  }
+  const Bivector parts[2] = { first, second };
+  for (int i = 0; i < 2; ++i)
+  {
+    this->setPart(i, parts[i], invariants(parts[i]).s, parts[i].maxAbs() == 0.0);
+  }
+  this->KnownParts = true;
+  this->findPeriod();
+}
+
+void Orbit::setPart(int i, const Bivector& blade, long double square, bool zero)
+{
+  const Real scale = static_cast<Real>(this->B.maxAbs());
+  OrbitPart& part = this->Parts[i];
+  part.blade = blade;
+  part.square = static_cast<double>(square);
+  part.rate = zero ? 0.0L : std::sqrt(std::fabs(square));
+  part.kind = kindOf(square, zero, 1e-12L * scale * scale);
+  this->Squares[i] = zero ? 0.0L : square;
+  if (i == 1)
+  {
+    this->W = wedge(this->B, this->B);
+    this->WB = rightContraction(this->W, this->B);
+  }
+}
+
+void Orbit::classify(const Bivector& b)
+{
+  if (!b.isFinite())
+  {
+    this->Problem = "the bivector B is not finite";
+  }
+  else if (b.maxAbs() > kMaximumCoefficient)
+  {
+    this->Problem = "the bivector B is too large (a coefficient above 1e150)";
+  }
+  this->Identity = this->Problem.empty() && b.maxAbs() == 0.0;
+}
+
+void Orbit::findPeriod()
+{
+  int elliptic = 0, other = 0;
+  for (const OrbitPart& part : this->Parts)
+  {
+    elliptic += part.kind == OrbitPartKind::Elliptic;
+    other += part.kind == OrbitPartKind::Parabolic || part.kind == OrbitPartKind::Hyperbolic;
+  }
+  const Real pi = 3.141592653589793238462643383279502884L;
+  if (other > 0 || elliptic == 0)
+  {
+    return; // a drift or a boost never returns (or B is the identity)
+  }
+  if (elliptic == 1)
+  {
+    const int i = this->Parts[0].kind == OrbitPartKind::Elliptic ? 0 : 1;
+    this->Period = static_cast<double>(pi / this->Parts[i].rate);
+    this->Windings[i] = 1;
+    return;
+  }
+  // Both rotate: the convergents m/n of r1/r2 (continued fraction), the first whose two periods
+  // m pi/r1 and n pi/r2 agree.
+  const Real r1 = this->Parts[0].rate, r2 = this->Parts[1].rate;
+  const Real ratio = r1 / r2;
+  Real x = ratio;
+  long long h0 = 1, h1 = 0, k0 = 0, k1 = 1; // convergents h/k
+  for (int step = 0; step < 64; ++step)
+  {
+    const Real a = std::floor(x);
+    const long long m = static_cast<long long>(a) * h0 + h1;
+    const long long n = static_cast<long long>(a) * k0 + k1;
+    if (m > kMaximumWindings || n > kMaximumWindings)
+    {
+      return;
+    }
+    h1 = h0;
+    h0 = m;
+    k1 = k0;
+    k0 = n;
+    const Real t1 = m * pi / r1, t2 = n * pi / r2;
+    if (m > 0 && std::fabs(t1 - t2) <= static_cast<Real>(kPeriodTolerance) * t1)
+    {
+      this->Period = static_cast<double>(t1);
+      this->Windings[0] = static_cast<int>(m);
+      this->Windings[1] = static_cast<int>(n);
+      return;
+    }
+    const Real fraction = x - a;
+    if (!(fraction > 0.0L))
+    {
+      return;
+    }
+    x = 1.0L / fraction;
+  }
+}
+
+Even Orbit::versor(double t) const
+{
+  if (!this->Problem.empty() || !std::isfinite(t))
+  {
+    return expExact(Bivector() * std::numeric_limits<double>::quiet_NaN());
+  }
+  if (this->Identity)
+  {
+    return Even::identity();
+  }
+  // exp(t B) = scalar + coefW W + coefB B + coefWB <W B>_2, W = B ^ B: expExact's closed form
+  // (Exponential.h), with the angles t r_i and the coefficients in extended precision. expExact
+  // of t B itself would round t B first, putting about 1e-16 t into every angle.
+  const Real l1 = this->Squares[0], l2 = this->Squares[1];
+  const Real r1 = this->Parts[0].rate, r2 = this->Parts[1].rate;
+  const Real tt = t;
+  const Real largest = std::fmax(std::fabs(l1), std::fabs(l2));
+  const Real d = l1 - l2;
+  if (std::fabs(tt) * std::fmax(r1, r2) < 1.0L)
+  {
+    return expExact(t * this->B); // small angles: its power series, nothing to amplify
+  }
+  Real scalar, coefW, coefB, coefWB;
+  if (d > 0.0L && (d >= 0.05L * largest || l1 > 0.0L))
+  {
+    Real c1, s1, c2, s2;
+    planeFactors(l1, r1, tt, c1, s1);
+    planeFactors(l2, r2, tt, c2, s2);
+    scalar = c1 * c2;
+    coefW = 0.5L * s1 * s2;
+    coefB = (l1 * s1 * c2 - l2 * s2 * c1) / d;
+    coefWB = 0.5L * (c1 * s2 - c2 * s1) / d;
+  }
+  else if (l1 < 0.0L && l2 < 0.0L)
+  {
+    // Two rotations at nearly equal rates: the divided differences by sums of angles.
+    const Real t1 = tt * r1, t2 = tt * r2;
+    const Real sincSum = std::sin(t1 + t2) / (r1 + r2), sincDiff = tt * sinc(t2 - t1);
+    scalar = std::cos(t1) * std::cos(t2);
+    coefW = 0.5L * (std::sin(t1) / r1) * (std::sin(t2) / r2);
+    coefB = 0.5L * (sincSum + sincDiff);
+    coefWB = 0.25L * (sincDiff - sincSum) / (r1 * r2);
+  }
+  else
+  {
+    return expExact(t * this->B); // both squares about zero: no angle to keep exact
+  }
+  Even k;
+  k.scalar = static_cast<double>(scalar);
+  k.quadvector = this->W * static_cast<double>(coefW);
+  k.bivector = this->B * static_cast<double>(coefB) + this->WB * static_cast<double>(coefWB);
+  return k;
+}
+
+bool Orbit::point(Vec3 p, double t, Vec3& out) const
+{
+  if (!this->Problem.empty() || !isFinite(p) || !std::isfinite(t))
+  {
+    return false;
+  }
+  return sandwichPoint(this->versor(t), p, out);
+}
+
+bool Orbit::core(int i, RoundInfo& out) const
+{
+  const OrbitPart& part = this->Parts[i];
+  if (!this->Problem.empty() || part.kind != OrbitPartKind::Elliptic || !this->KnownParts)
+  {
+    return false;
+  }
+  out = readCircle(toMultivector(part.blade).undual());
+  // readCircle orients the undual against the turn: flip it, so that the rotation turns space
+  // right-handed about the oriented core (a small orbit about it links it +1).
+  out.normal = -out.normal;
+  out.direction = -out.direction;
+  return isFinite(out.center) && (out.isLine ? isFinite(out.direction) : std::isfinite(out.radius));
+}
+} // namespace cga

@@ -1,0 +1,455 @@
+// vtkConformalOrbitSource: the torus knot's polylines against the kernel (cga::Orbit, itself
+// tested against the matrix exponential) and against plain geometry (closure, linking numbers of
+// the output polylines with the output cores, the transversion's closed form), seeds, pieces,
+// degenerate and bad input.
+#include "vtkConformalOrbitSource.h"
+
+#include "BadParameterCases.h"
+#include "GridSourceChecks.h"
+#include "LinkingNumber.h"
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include "cga/PointPairField.h"
+#include "cga/surfaces/TorusKnot.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <vector>
+
+namespace
+{
+using cga::Vec3;
+
+// The points of each polyline (a closed one without its repeated first point), in order.
+std::vector<std::vector<Vec3>> polylines(vtkPolyData* output, bool* allClosed = nullptr)
+{
+  std::vector<std::vector<Vec3>> result;
+  vtkIdType npts;
+  const vtkIdType* ids;
+  vtkCellArray* lines = output->GetLines();
+  bool closed = lines->GetNumberOfCells() > 0;
+  for (lines->InitTraversal(); lines->GetNextCell(npts, ids);)
+  {
+    const bool isClosed = npts > 2 && ids[0] == ids[npts - 1];
+    closed = closed && isClosed;
+    std::vector<Vec3> points;
+    for (vtkIdType k = 0; k < (isClosed ? npts - 1 : npts); ++k)
+    {
+      double p[3];
+      output->GetPoint(ids[k], p);
+      points.push_back({ p[0], p[1], p[2] });
+    }
+    result.push_back(points);
+  }
+  if (allClosed)
+  {
+    *allClosed = closed;
+  }
+  return result;
+}
+
+double period(vtkPolyData* output)
+{
+  vtkDataArray* array = output->GetFieldData()->GetArray("Period");
+  return array ? array->GetTuple1(0) : -1.0;
+}
+
+double distance(Vec3 a, Vec3 b)
+{
+  return cga::norm(a - b);
+}
+
+TEST(ConformalOrbitSource, DefaultIsTheTrefoilClosedAfterItsPeriod)
+{
+  vtkNew<vtkConformalOrbitSource> source;
+  EventCounter events(source);
+  source->Update();
+  EXPECT_EQ(events.errors + events.warnings, 0);
+  vtkPolyData* output = source->GetOutput();
+  bool closed = false;
+  const auto lines = polylines(output, &closed);
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_TRUE(closed);
+  EXPECT_EQ(lines[0].size(), 512u);
+  EXPECT_NEAR(period(output), 6.0, 1e-14); // lcm(2, 3)
+  // Every point is the kernel's orbit point at its t.
+  cga::TorusKnot knot;
+  const cga::Orbit orbit = knot.orbit();
+  vtkDataArray* t = output->GetPointData()->GetArray("t");
+  vtkDataArray* id = output->GetPointData()->GetArray("OrbitId");
+  ASSERT_TRUE(t && id);
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    output->GetPoint(i, p);
+    Vec3 expected;
+    ASSERT_TRUE(orbit.point({ 0.15, 0, 0 }, t->GetTuple1(i), expected));
+    EXPECT_LE(distance({ p[0], p[1], p[2] }, expected), 1e-15);
+    EXPECT_EQ(id->GetTuple1(i), 0.0);
+    EXPECT_GE(t->GetTuple1(i), 0.0);
+    EXPECT_LT(t->GetTuple1(i), 6.0);
+  }
+}
+
+TEST(ConformalOrbitSource, KnotsLinkTheOutputCoresQAndPTimes)
+{
+  const int pairs[][2] = { { 2, 3 }, { 3, 5 }, { 5, 8 }, { 7, 3 } };
+  cga::TorusKnot knot;
+  knot.center = { 1, -2, 0.5 };
+  knot.normal = { 0.2, 1, 0.3 };
+  knot.direction = { 1, 0, 1 };
+  knot.radius = 2.5;
+  const Vec3 u = cga::normalized(knot.coreC().center - knot.coreA().center);
+  for (const auto& pq : pairs)
+  {
+    vtkNew<vtkConformalOrbitSource> source;
+    source->SetKnotP(pq[0]);
+    source->SetKnotQ(pq[1]);
+    source->SetKnotCenter(1, -2, 0.5);
+    source->SetKnotNormal(0.2, 1, 0.3);
+    source->SetKnotDirection(1, 0, 1);
+    source->SetKnotRadius(2.5);
+    source->SetTResolution(100 * pq[0] * pq[1]);
+    source->SetCoreResolution(200);
+    source->SetSeedModeToSeedList();
+    // Seeds 0.15 and 0.2 radii from the center towards C, on tori about A (not on the middle
+    // torus through the center, which passes through infinity).
+    for (double offset : { 0.15, 0.2 })
+    {
+      const Vec3 seed = knot.center + (offset * knot.radius) * u;
+      source->AddSeed(seed.x, seed.y, seed.z);
+    }
+    source->Update();
+    EXPECT_NEAR(period(source->GetOutput()), pq[0] * pq[1], 1e-13);
+    const auto knots = polylines(source->GetOutput());
+    ASSERT_EQ(knots.size(), 2u);
+    vtkPolyData* coreOutput = vtkPolyData::SafeDownCast(source->GetOutputDataObject(1));
+    bool closed = false;
+    const auto cores = polylines(coreOutput, &closed);
+    ASSERT_EQ(cores.size(), 2u);
+    EXPECT_TRUE(closed);
+    EXPECT_EQ(coreOutput->GetPointData()->GetArray("CoreId")->GetRange()[1], 1.0);
+    for (const auto& points : knots)
+    {
+      EXPECT_NEAR(cgatest::polygonLinkingNumber(points, cores[0]), pq[1], 1e-9);
+      EXPECT_NEAR(cgatest::polygonLinkingNumber(points, cores[1]), pq[0], 1e-9);
+    }
+    // The cores are the knot's circles A and C, of radius 2.5.
+    const cga::TorusKnot::Circle expected[2] = { knot.coreA(), knot.coreC() };
+    for (int c = 0; c < 2; ++c)
+    {
+      for (const Vec3& p : cores[c])
+      {
+        EXPECT_NEAR(distance(p, expected[c].center), 2.5, 1e-12);
+        EXPECT_NEAR(cga::dot(p - expected[c].center, expected[c].normal), 0.0, 1e-12);
+      }
+    }
+  }
+}
+
+TEST(ConformalOrbitSource, OpenRangeOfAPeriodicOrbitEndsWhereItStarted)
+{
+  vtkNew<vtkConformalOrbitSource> source;
+  source->ClosePeriodicOrbitsOff();
+  source->SetTRange(0, 6);
+  source->Update();
+  bool closed = true;
+  const auto lines = polylines(source->GetOutput(), &closed);
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_FALSE(closed);
+  ASSERT_EQ(lines[0].size(), 513u);
+  EXPECT_LE(distance(lines[0].front(), lines[0].back()), 1e-12);
+}
+
+TEST(ConformalOrbitSource, OnePointPairIsTheTransversionAboutItsLocation)
+{
+  // B = -w tau(x, v): exp(t B) = 1 + tau(x, -t w v), p -> x + SCT_{-t w v}(p - x)
+  // (docs/conventions.md section 2 item 2), not periodic.
+  const Vec3 x{ 0.5, -0.25, 1 }, v{ 0.3, 0.1, -0.2 };
+  const double w = 1.5;
+  vtkNew<vtkConformalOrbitSource> source;
+  source->SetGeneratorTypeToGeneratorList();
+  source->AddGenerator(x.x, x.y, x.z, v.x, v.y, v.z, w);
+  source->SetSeedPoint(1, 1, 1);
+  source->SetTRange(-2, 3);
+  source->SetTResolution(50);
+  source->Update();
+  vtkPolyData* output = source->GetOutput();
+  EXPECT_EQ(period(output), 0.0);
+  ASSERT_EQ(output->GetNumberOfPoints(), 51);
+  vtkDataArray* t = output->GetPointData()->GetArray("t");
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+  {
+    const Vec3 u = (-t->GetTuple1(i) * w) * v, y = Vec3{ 1, 1, 1 } - x;
+    const Vec3 expected =
+      x + (1.0 / (1.0 + 2.0 * cga::dot(u, y) + cga::dot(u, u) * cga::dot(y, y))) * (y + cga::dot(y, y) * u);
+    double p[3];
+    output->GetPoint(i, p);
+    EXPECT_LE(distance({ p[0], p[1], p[2] }, expected), 1e-13) << "t " << t->GetTuple1(i);
+  }
+  // A point pair has no rotating part: no cores.
+  EXPECT_EQ(vtkPolyData::SafeDownCast(source->GetOutputDataObject(1))->GetNumberOfPoints(), 0);
+}
+
+TEST(ConformalOrbitSource, GeneratorRowsOfEveryKindAreTheFieldAtStrengthT)
+{
+  // exp(t B) with B = -sum w G is cga::PointPairField's boost exp(-t B(p)) without falloff (k 0,
+  // eps 1), a separate code path (the field's exponential and sandwich), for rows of every kind.
+  const double rows[][9] = { { 0.5, 0, 0, 0, 0.3, 0.2, 0.7, 0, 0 }, { 0, 1, 0, 0, 0, 1, 0.4, 1, 0 },
+    { 1, 0, 0, 1, 1, 0, 0.3, 2, 0.5 }, { 0, 0, 1, 1, 0, 0, -0.2, 3, 0 }, { 0, 0, 0, 0, 1, 1, 0.6, 4, 0 } };
+  vtkNew<vtkConformalOrbitSource> source;
+  source->SetGeneratorTypeToGeneratorList();
+  std::vector<cga::GeneratorParameters> generators;
+  for (const auto& row : rows)
+  {
+    source->AddGenerator(row[0], row[1], row[2], row[3], row[4], row[5], row[6], row[7], row[8]);
+    generators.push_back({ static_cast<cga::GeneratorKind>(row[7]), { row[0], row[1], row[2] },
+      { row[3], row[4], row[5] }, row[8], row[6] });
+  }
+  source->SetSeedPoint(0.3, -0.4, 0.2);
+  source->SetTRange(-1.5, 2.5);
+  source->SetTResolution(40);
+  source->Update();
+  std::vector<cga::FieldGenerator> fieldGenerators;
+  for (const auto& g : generators)
+  {
+    fieldGenerators.push_back(g.field());
+  }
+  const cga::PointPairField field(fieldGenerators.data(), fieldGenerators.size(), 0.0, 1.0);
+  vtkPolyData* output = source->GetOutput();
+  ASSERT_EQ(output->GetNumberOfPoints(), 41);
+  vtkDataArray* t = output->GetPointData()->GetArray("t");
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+  {
+    Vec3 expected;
+    ASSERT_TRUE(field.map({ 0.3, -0.4, 0.2 }, t->GetTuple1(i), cga::ExponentialRule::Exact, expected));
+    double p[3];
+    output->GetPoint(i, p);
+    EXPECT_LE(distance({ p[0], p[1], p[2] }, expected), 1e-12) << "t " << t->GetTuple1(i);
+  }
+}
+
+TEST(ConformalOrbitSource, ARotationRowTurnsRightHandedWithThePeriodTwoPiOverItsWeight)
+{
+  vtkNew<vtkConformalOrbitSource> source;
+  source->SetGeneratorTypeToGeneratorList();
+  source->AddGenerator(0, 0, 0, 0, 0, 2, 0.25, vtkConformalOrbitSource::ROTATION, 0); // w |d| = 0.5
+  source->SetSeedPoint(1, 0, 0.5);
+  source->SetTResolution(8);
+  source->Update();
+  vtkPolyData* output = source->GetOutput();
+  EXPECT_NEAR(period(output), 4.0 * 3.14159265358979323846, 1e-12);
+  bool closed = false;
+  const auto lines = polylines(output, &closed);
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_TRUE(closed);
+  ASSERT_EQ(lines[0].size(), 8u);
+  // An eighth of the period: 45 degrees counter-clockwise about +z.
+  EXPECT_LE(distance(lines[0][1], { std::sqrt(0.5), std::sqrt(0.5), 0.5 }), 1e-14);
+  // Its core is the z axis, cut at the clip sphere.
+  vtkPolyData* cores = vtkPolyData::SafeDownCast(source->GetOutputDataObject(1));
+  ASSERT_GT(cores->GetNumberOfPoints(), 0);
+  for (vtkIdType i = 0; i < cores->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    cores->GetPoint(i, p);
+    EXPECT_LE(std::hypot(p[0], p[1]), 1e-12);
+    EXPECT_LE(std::fabs(p[2]), 100.0 * (1.0 + 1e-12));
+  }
+  EXPECT_NEAR(cores->GetBounds()[5], 100.0, 1e-9);
+  // Oriented along +z, the axis the row turns about right-handed: the polyline runs upwards.
+  double first[3], last[3];
+  cores->GetPoint(0, first);
+  cores->GetPoint(cores->GetNumberOfPoints() - 1, last);
+  EXPECT_LT(first[2], last[2]);
+}
+
+TEST(ConformalOrbitSource, OrbitsThroughInfinityAreCutExactlyAtTheClipSphere)
+{
+  // The transversion by -t e1 sends e1/t to infinity: the seed on the x axis at 0.5 goes there at
+  // t = 2, so the orbit over [0, 4] leaves the sphere and comes back.
+  vtkNew<vtkConformalOrbitSource> source;
+  source->SetGeneratorTypeToGeneratorList();
+  source->AddGenerator(0, 0, 0, 1, 0, 0, 1);
+  source->SetSeedModeToSeedList();
+  source->AddSeed(0.5, 0, 0);
+  source->AddSeed(0.5, 0.2, 0);
+  source->SetTRange(0, 4);
+  source->SetTResolution(400);
+  source->SetClipRadius(5);
+  source->Update();
+  const double center[3] = { 0, 0, 0 };
+  vtkDataArray* t = source->GetOutput()->GetPointData()->GetArray("t");
+  ExpectCutExactlyAtTheSphere(source->GetOutput(), center, 5.0,
+    [t](vtkIdType i) { return t->GetTuple1(i) == 0.0 || t->GetTuple1(i) == 4.0; }, 2, "orbits");
+}
+
+TEST(ConformalOrbitSource, SeedsFromTheInputAndPieces)
+{
+  vtkNew<vtkPolyData> seeds;
+  vtkNew<vtkPoints> points;
+  for (int i = 0; i < 5; ++i)
+  {
+    points->InsertNextPoint(0.1 * i, 0.05, -0.1 * i);
+  }
+  seeds->SetPoints(points);
+  vtkNew<vtkConformalOrbitSource> whole;
+  whole->SetInputData(seeds);
+  whole->SetSeedModeToInputPoints();
+  whole->SetTResolution(64);
+  whole->Update();
+  ASSERT_EQ(polylines(whole->GetOutput()).size(), 5u);
+  EXPECT_EQ(whole->GetOutput()->GetNumberOfPoints(), 5 * 64);
+  // Two pieces: each orbit whole on one of them, together the whole output.
+  vtkIdType total = 0;
+  std::map<int, int> orbitsSeen;
+  for (int piece = 0; piece < 2; ++piece)
+  {
+    vtkNew<vtkConformalOrbitSource> part;
+    part->SetInputData(seeds);
+    part->SetSeedModeToInputPoints();
+    part->SetTResolution(64);
+    part->UpdatePiece(piece, 2, 0);
+    vtkPolyData* output = part->GetOutput();
+    total += output->GetNumberOfPoints();
+    vtkDataArray* ids = output->GetPointData()->GetArray("OrbitId");
+    for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+    {
+      orbitsSeen[static_cast<int>(ids->GetTuple1(i))] |= 1 << piece;
+    }
+    const vtkIdType cores = vtkPolyData::SafeDownCast(part->GetOutputDataObject(1))->GetNumberOfPoints();
+    EXPECT_EQ(cores > 0, piece == 0);
+  }
+  EXPECT_EQ(total, whole->GetOutput()->GetNumberOfPoints());
+  EXPECT_EQ(orbitsSeen.size(), 5u);
+  for (const auto& seen : orbitsSeen)
+  {
+    EXPECT_TRUE(seen.second == 1 || seen.second == 2) << "orbit " << seen.first;
+  }
+  ExpectOutOfRangePiecesEmpty<vtkConformalOrbitSource>([](vtkConformalOrbitSource*) {});
+}
+
+TEST(ConformalOrbitSource, DirectionsOfAnyLength)
+{
+  ExpectTheSamePointsAtEveryDirectionLength<vtkConformalOrbitSource>(
+    [](vtkConformalOrbitSource* source, double length) {
+      source->SetKnotNormal(0, 0.6 * length, 0.8 * length);
+      source->SetKnotDirection(length, 0, 0);
+    });
+}
+
+TEST(ConformalOrbitSource, DegenerateGeneratorsWarn)
+{
+  // B = 0 (no generators, or only a zero weight): the identity, each orbit its seed.
+  vtkNew<vtkConformalOrbitSource> identity;
+  EventCounter events(identity);
+  identity->SetGeneratorTypeToGeneratorList();
+  identity->AddGenerator(0, 0, 0, 1, 0, 0, 0);
+  identity->SetSeedPoint(1, 2, 3);
+  identity->Update();
+  EXPECT_EQ(events.errors, 0);
+  EXPECT_EQ(events.warnings, 2); // the zero weight, and B = 0
+  vtkPolyData* output = identity->GetOutput();
+  ASSERT_EQ(output->GetNumberOfPoints(), 1);
+  EXPECT_EQ(output->GetNumberOfVerts(), 1);
+  double p[3];
+  output->GetPoint(0, p);
+  EXPECT_EQ(p[0], 1.0);
+  EXPECT_EQ(p[2], 3.0);
+
+  // P and Q not coprime: one warning, the reduced knot's period.
+  vtkNew<vtkConformalOrbitSource> multiple;
+  EventCounter multipleEvents(multiple);
+  multiple->SetKnotP(4);
+  multiple->SetKnotQ(6);
+  multiple->Update();
+  EXPECT_EQ(multipleEvents.warnings, 1);
+  EXPECT_NE(multipleEvents.lastWarning.find("not coprime"), std::string::npos);
+  EXPECT_NEAR(period(multiple->GetOutput()), 12.0, 1e-13);
+
+  // P = Q = 1: equal invariants, the Hopf link's fibers; period 1.
+  vtkNew<vtkConformalOrbitSource> hopf;
+  hopf->SetKnotP(1);
+  hopf->SetKnotQ(1);
+  hopf->Update();
+  EXPECT_NEAR(period(hopf->GetOutput()), 1.0, 1e-15);
+  EXPECT_EQ(polylines(hopf->GetOutput()).size(), 1u);
+}
+
+TEST(ConformalOrbitSource, BadParametersGiveOneErrorAndEmptyOutputs)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  using S = vtkConformalOrbitSource;
+  ExpectOneErrorEach<S>(
+    {
+      [](S* s) { s->SetKnotP(0); },
+      [](S* s) { s->SetKnotQ(-4); },
+      [](S* s) { s->SetKnotNormal(0, 0, 0); },
+      [](S* s) { s->SetKnotDirection(0, 0, 0); },
+      [](S* s) { s->SetKnotDirection(0, 0, -3); },
+      [](S* s) { s->SetKnotRadius(0); },
+      [](S* s) { s->SetKnotRadius(-1); },
+      [=](S* s) { s->SetKnotCenter(nan, 0, 0); },
+      [=](S* s) { s->SetKnotNormal(0, inf, 1); },
+      [](S* s) { s->SetTRange(1, 0); },
+      [=](S* s) { s->SetTRange(nan, 1); },
+      [=](S* s) {
+        s->ClosePeriodicOrbitsOff();
+        s->SetTRange(-1e308, 1e308);
+      },
+      [=](S* s) {
+        s->SetGeneratorTypeToGeneratorList();
+        s->AddGenerator(0, 0, 0, 1, nan, 0, 1);
+      },
+      [](S* s) {
+        s->SetGeneratorTypeToGeneratorList();
+        s->AddGenerator(0, 0, 0, 1, 0, 0, 1e200);
+      },
+      [](S* s) {
+        s->SetGeneratorTypeToGeneratorList();
+        s->AddGenerator(0, 0, 0, 1, 0, 0, 1, 7, 0); // no such kind
+      },
+      [=](S* s) { s->SetSeedPoint(0, nan, 0); },
+      [=](S* s) {
+        s->SetSeedModeToSeedList();
+        s->AddSeed(0, 0, inf);
+      },
+      [](S* s) { s->SetSeedModeToInputPoints(); },
+      [=](S* s) { s->SetClipRadius(nan); },
+      [=](S* s) { s->SetClipCenter(0, inf, 0); },
+      [](S* s) {
+        s->SetSeedModeToSeedList();
+        s->SetNumberOfSeeds(1000);
+        s->SetTResolution(1000000); // beyond 10^8 samples
+      },
+    },
+    EmptyOutput::NoPointsNoCells);
+  // A seed list refused at 2 10^6 rows (one error then): every update one error more.
+  {
+    vtkNew<S> refused;
+    refused->SetSeedModeToSeedList();
+    refused->SetNumberOfSeeds(2000000);
+    EventCounter events(refused);
+    refused->Update();
+    EXPECT_EQ(events.errors, 1);
+    EXPECT_EQ(refused->GetOutput()->GetNumberOfPoints(), 0);
+  }
+  // The cores output stays empty too.
+  vtkNew<S> source;
+  EventCounter events(source);
+  source->SetKnotRadius(0);
+  source->Update();
+  EXPECT_EQ(vtkPolyData::SafeDownCast(source->GetOutputDataObject(1))->GetNumberOfPoints(), 0);
+}
+} // namespace

@@ -1,0 +1,428 @@
+#include "vtkConformalOrbitSource.h"
+
+#include "vtkBoostedGeneratorRows.h"
+#include "vtkBoostedGridBuilder.h"
+#include "vtkBoostedGridDriver.h"
+#include "vtkBoostedRowList.h"
+#include "vtkBoostedSphereClip.h"
+#include "vtkBoostedWholeInput.h"
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include "cga/Orbit.h"
+#include "cga/PointPairField.h"
+#include "cga/surfaces/TorusKnot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkConformalOrbitSource);
+
+namespace
+{
+bool finite(const double* values, int count)
+{
+  for (int i = 0; i < count; ++i)
+  {
+    if (!std::isfinite(values[i]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// The identity's orbits: each seed of rows [first, last] as a vertex.
+void writeFixedSeeds(const std::vector<cga::Vec3>& seeds, int first, int last, double t,
+  int precision, vtkPolyData* output)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataType(precision == vtkAlgorithm::SINGLE_PRECISION ? VTK_FLOAT : VTK_DOUBLE);
+  vtkNew<vtkCellArray> vertices;
+  vtkNew<vtkDoubleArray> ts;
+  ts->SetName("t");
+  vtkNew<vtkIntArray> ids;
+  ids->SetName("OrbitId");
+  for (int r = first; r <= last; ++r)
+  {
+    const vtkIdType id = points->InsertNextPoint(seeds[r].x, seeds[r].y, seeds[r].z);
+    vertices->InsertNextCell(1, &id);
+    ts->InsertNextValue(t);
+    ids->InsertNextValue(r);
+  }
+  output->SetPoints(points);
+  output->SetVerts(vertices);
+  output->GetPointData()->AddArray(ts);
+  output->GetPointData()->AddArray(ids);
+}
+} // namespace
+
+vtkConformalOrbitSource::vtkConformalOrbitSource()
+  : Generators(new vtkBoostedRowList(this, "Generator", vtkBoostedGeneratorRows::BlankRow()))
+  , Seeds(new vtkBoostedRowList(this, "Seed", { 0, 0, 0 }))
+{
+  static_assert(vtkBoostedGeneratorKinds<vtkConformalOrbitSource>(), "");
+  this->SetNumberOfInputPorts(1);  // optional seeds (INPUT_POINTS)
+  this->SetNumberOfOutputPorts(2); // the orbits, the cores
+}
+
+vtkConformalOrbitSource::~vtkConformalOrbitSource() = default;
+
+int vtkConformalOrbitSource::AddGenerator(
+  double x, double y, double z, double dx, double dy, double dz, double weight)
+{
+  return this->AddGenerator(x, y, z, dx, dy, dz, weight, POINT_PAIR, 0.0);
+}
+
+int vtkConformalOrbitSource::AddGenerator(double x, double y, double z, double dx, double dy,
+  double dz, double weight, double kind, double pitch)
+{
+  return this->Generators->Add({ x, y, z, dx, dy, dz, weight, kind, pitch });
+}
+
+void vtkConformalOrbitSource::SetGenerator(
+  int index, double x, double y, double z, double dx, double dy, double dz, double weight)
+{
+  this->SetGenerator(index, x, y, z, dx, dy, dz, weight, POINT_PAIR, 0.0);
+}
+
+void vtkConformalOrbitSource::SetGenerator(int index, double x, double y, double z, double dx,
+  double dy, double dz, double weight, double kind, double pitch)
+{
+  this->Generators->Set(index, { x, y, z, dx, dy, dz, weight, kind, pitch });
+}
+
+vtkBoostedRowListMethods(vtkConformalOrbitSource, Generator, Generators)
+
+int vtkConformalOrbitSource::AddSeed(double x, double y, double z)
+{
+  return this->Seeds->Add({ x, y, z });
+}
+
+void vtkConformalOrbitSource::SetSeed(int index, double x, double y, double z)
+{
+  this->Seeds->Set(index, { x, y, z });
+}
+
+vtkBoostedRowListMethods(vtkConformalOrbitSource, Seed, Seeds)
+
+int vtkConformalOrbitSource::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+int vtkConformalOrbitSource::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  for (int port = 0; port < 2; ++port)
+  {
+    outputVector->GetInformationObject(port)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
+  }
+  return 1;
+}
+
+int vtkConformalOrbitSource::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // Every rank reads all the seeds: the orbits, not the input, are divided among pieces.
+  vtkBoostedWholeInput::Request(inputVector[0]->GetInformationObject(0));
+  return 1;
+}
+
+int vtkConformalOrbitSource::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkPolyData* orbits = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* cores = vtkPolyData::GetData(outputVector, 1);
+  vtkPointSet* input = inputVector[0]->GetNumberOfInformationObjects() > 0
+    ? vtkPointSet::GetData(inputVector[0]->GetInformationObject(0))
+    : nullptr;
+
+  // B, from the torus knot or the generator list.
+  std::string problem;
+  cga::Bivector b;
+  cga::TorusKnot knot;
+  const bool isKnot = this->GeneratorType == TORUS_KNOT;
+  if (isKnot)
+  {
+    knot.center = cga::toVec3(this->KnotCenter);
+    knot.normal = cga::toVec3(this->KnotNormal);
+    knot.direction = cga::toVec3(this->KnotDirection);
+    knot.radius = this->KnotRadius;
+    knot.p = this->KnotP;
+    knot.q = this->KnotQ;
+    problem = knot.validate();
+  }
+  else
+  {
+    problem = this->Generators->Problem();
+    int ignored = 0;
+    for (int i = 0; problem.empty() && i < this->Generators->GetNumberOfRows(); ++i)
+    {
+      const double* row = this->Generators->Row(i);
+      cga::GeneratorParameters generator;
+      if (!finite(row, vtkBoostedGeneratorRows::NumberOfValues))
+      {
+        problem = "generator " + std::to_string(i) + " has a NaN or infinite value";
+        break;
+      }
+      if (!vtkBoostedGeneratorRows::Read(row, row, i, generator, problem))
+      {
+        break; // an unknown kind
+      }
+      const cga::FieldGenerator g = generator.field();
+      if (row[6] == 0.0 || !(cga::norm(generator.direction) > 0.0) || !std::isfinite(g.weight))
+      {
+        ++ignored;
+        continue;
+      }
+      // The filter's sign: exp(t B) is its exp(-Strength B(p)) at Strength t.
+      b -= g.weight * g.bivector;
+    }
+    if (problem.empty() && ignored > 0)
+    {
+      vtkWarningMacro(<< ignored << " generator(s) with a zero direction or weight add nothing");
+    }
+  }
+  const cga::Orbit orbit = problem.empty() && isKnot ? knot.orbit() : cga::Orbit(b);
+  if (problem.empty())
+  {
+    problem = orbit.problem();
+  }
+  if (problem.empty() && !(finite(this->TRange, 2) && this->TRange[0] <= this->TRange[1]))
+  {
+    problem = "TRange must be finite with min <= max";
+  }
+
+  // The seeds, counted first: the size checks come before any copy of a huge input.
+  const int columns = this->TResolution + 1;
+  // Bytes per sample: the Hopf source's fibers, measured for the same builder and clip.
+  const double bytesPerSample = 140;
+  std::vector<cga::Vec3> seeds;
+  if (problem.empty())
+  {
+    long long count = 1;
+    if (this->SeedMode == SEED_LIST)
+    {
+      problem = this->Seeds->Problem();
+      count = this->Seeds->GetNumberOfRows();
+    }
+    else if (this->SeedMode == INPUT_POINTS)
+    {
+      problem = input ? "" : "SeedMode is INPUT_POINTS but there is no input";
+      count = input ? static_cast<long long>(input->GetNumberOfPoints()) : 0;
+    }
+    if (problem.empty())
+    {
+      problem = vtkBoostedGridDriver::GridProblem(count, columns, bytesPerSample, "the orbits");
+    }
+    for (long long i = 0; problem.empty() && i < count; ++i)
+    {
+      double p[3];
+      if (this->SeedMode == SEED_POINT)
+      {
+        std::copy_n(this->SeedPoint, 3, p);
+      }
+      else if (this->SeedMode == SEED_LIST)
+      {
+        std::copy_n(this->Seeds->Row(static_cast<int>(i)), 3, p);
+      }
+      else
+      {
+        input->GetPoint(static_cast<vtkIdType>(i), p);
+      }
+      seeds.push_back(cga::toVec3(p));
+      if (!cga::isFinite(seeds.back()))
+      {
+        problem = "seed " + std::to_string(i) + " is not finite";
+      }
+    }
+  }
+
+  // The samples of t: one period (closed orbits) or TRange.
+  const double period = orbit.period();
+  const bool closed = this->ClosePeriodicOrbits && period > 0.0;
+  const double t0 = this->TRange[0];
+  const double span = closed ? period : this->TRange[1] - this->TRange[0];
+  std::vector<double> ts(columns);
+  for (int c = 0; c < columns; ++c)
+  {
+    ts[c] = (closed && c == columns - 1) ? t0 : t0 + span * c / this->TResolution;
+  }
+  if (problem.empty() && !std::isfinite(span))
+  {
+    problem = "TRange's span must be finite";
+  }
+
+  if (problem.empty() && isKnot && knot.commonDivisor() > 1)
+  {
+    const int g = knot.commonDivisor();
+    vtkWarningMacro(<< "KnotP = " << knot.p << " and KnotQ = " << knot.q
+                    << " are not coprime (common divisor " << g << "): the orbit is the ("
+                    << knot.p / g << ", " << knot.q / g << ") torus knot, period " << period
+                    << "; over t in [0, P Q] it would be traced " << g << " times");
+  }
+  if (problem.empty() && orbit.isIdentity())
+  {
+    vtkWarningMacro(<< "B is zero: exp(t B) is the identity and every orbit is its seed");
+    int first = 0, last = -1;
+    const int piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
+    const int pieces = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
+    problem = vtkBoostedGridDriver::ClipSphereProblem(this->ClipCenter, this->ClipRadius);
+    if (!problem.empty())
+    {
+      vtkErrorMacro(<< problem);
+      return 1;
+    }
+    if (!seeds.empty() &&
+      vtkBoostedGridBuilder::PieceRows(static_cast<int>(seeds.size()), false, piece, pieces, first, last))
+    {
+      writeFixedSeeds(seeds, first, last, t0, this->OutputPointsPrecision, orbits);
+    }
+    return 1;
+  }
+
+  // The orbits: rows = seeds, columns = samples of t (vtkBoostedGridDriver: pieces, size and
+  // memory checks, the block loop, the cut at the clip sphere).
+  if (problem.empty())
+  {
+    problem = vtkBoostedGridDriver::ClipSphereProblem(this->ClipCenter, this->ClipRadius);
+  }
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< problem);
+    return 1; // both outputs stay empty
+  }
+  vtkBoostedGridDriver driver(
+    this, outInfo, this->ClipCenter, this->ClipRadius, this->OutputPointsPrecision);
+  driver.SetBytesPerSample(bytesPerSample);
+  if (!seeds.empty() && driver.Prepare(problem, static_cast<long long>(seeds.size()), columns, closed, false))
+  {
+    vtkBoostedGridBuilder& grid = driver.Grid();
+    driver.SampleGrid([&](int r, int c) {
+      cga::Vec3 p;
+      if (orbit.point(seeds[r], ts[c], p))
+      {
+        const double xyz[3] = { p.x, p.y, p.z };
+        grid.SetPoint(r, c, xyz);
+      }
+    });
+    std::vector<int> ids(seeds.size());
+    std::iota(ids.begin(), ids.end(), 0);
+    grid.AddColumnParameter("t", ts);
+    grid.AddRowIntegerParameter("OrbitId", ids);
+    driver.Build(orbits);
+  }
+  vtkNew<vtkDoubleArray> periodArray;
+  periodArray->SetName("Period");
+  periodArray->InsertNextValue(period);
+  orbits->GetFieldData()->AddArray(periodArray);
+
+  // The cores, on piece 0.
+  // (Both ports' requests: a consumer of either output on another rank asks for its own piece.)
+  vtkInformation* coreInfo = outputVector->GetInformationObject(1);
+  if (coreInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) == 0 &&
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) == 0)
+  {
+    vtkNew<vtkPolyData> sampled;
+    vtkNew<vtkPoints> points;
+    points->SetDataType(this->OutputPointsPrecision == SINGLE_PRECISION ? VTK_FLOAT : VTK_DOUBLE);
+    vtkNew<vtkCellArray> lines;
+    vtkNew<vtkIntArray> coreIds;
+    coreIds->SetName("CoreId");
+    for (int i = 0; i < 2; ++i)
+    {
+      cga::RoundInfo round;
+      if (isKnot)
+      {
+        // The knot's circles as given (readCircle of the parts is accurate to about 1e-8 only).
+        const cga::TorusKnot::Circle circle = i == 0 ? knot.coreA() : knot.coreC();
+        round.center = circle.center;
+        round.normal = circle.normal;
+        round.radius = circle.radius;
+      }
+      else if (!orbit.core(i, round))
+      {
+        continue;
+      }
+      std::vector<cga::Vec3> samples;
+      if (round.isLine)
+      {
+        // Long enough to cross the clip sphere on both sides.
+        const double reach = cga::norm(round.center - cga::toVec3(this->ClipCenter)) + 2.0 * this->ClipRadius;
+        for (int k = 0; k < this->CoreResolution; ++k)
+        {
+          samples.push_back(round.center + (reach * (2.0 * k / (this->CoreResolution - 1) - 1.0)) * round.direction);
+        }
+      }
+      else
+      {
+        samples.resize(this->CoreResolution);
+        cga::circlePoints({ round.center, round.normal, round.radius }, this->CoreResolution, samples.data());
+      }
+      std::vector<vtkIdType> cell;
+      for (const cga::Vec3& s : samples)
+      {
+        cell.push_back(points->InsertNextPoint(s.x, s.y, s.z));
+        coreIds->InsertNextValue(i);
+      }
+      if (!round.isLine)
+      {
+        cell.push_back(cell.front());
+      }
+      lines->InsertNextCell(static_cast<vtkIdType>(cell.size()), cell.data());
+    }
+    sampled->SetPoints(points);
+    sampled->SetLines(lines);
+    sampled->GetPointData()->AddArray(coreIds);
+    vtkBoostedSphereClip::Clip(sampled, this->ClipCenter, this->ClipRadius, cores);
+  }
+  return 1;
+}
+
+void vtkConformalOrbitSource::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  auto vector3 = [&os](const double* v) { os << "(" << v[0] << ", " << v[1] << ", " << v[2] << ")\n"; };
+  os << indent << "GeneratorType: " << (this->GeneratorType == TORUS_KNOT ? "TORUS_KNOT" : "GENERATOR_LIST") << "\n";
+  this->Generators->Print(os, indent);
+  os << indent << "KnotP: " << this->KnotP << "\n";
+  os << indent << "KnotQ: " << this->KnotQ << "\n";
+  os << indent << "KnotCenter: ";
+  vector3(this->KnotCenter);
+  os << indent << "KnotNormal: ";
+  vector3(this->KnotNormal);
+  os << indent << "KnotDirection: ";
+  vector3(this->KnotDirection);
+  os << indent << "KnotRadius: " << this->KnotRadius << "\n";
+  const char* seedModes[] = { "SEED_POINT", "SEED_LIST", "INPUT_POINTS" };
+  os << indent << "SeedMode: " << seedModes[this->SeedMode] << "\n";
+  os << indent << "SeedPoint: ";
+  vector3(this->SeedPoint);
+  this->Seeds->Print(os, indent);
+  os << indent << "TRange: [" << this->TRange[0] << ", " << this->TRange[1] << "]\n";
+  os << indent << "TResolution: " << this->TResolution << "\n";
+  os << indent << "ClosePeriodicOrbits: " << this->ClosePeriodicOrbits << "\n";
+  os << indent << "CoreResolution: " << this->CoreResolution << "\n";
+  os << indent << "ClipCenter: ";
+  vector3(this->ClipCenter);
+  os << indent << "ClipRadius: " << this->ClipRadius << "\n";
+  os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
+}
