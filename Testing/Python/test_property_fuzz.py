@@ -62,8 +62,7 @@ os.environ["BOOSTEDSURFACES_MEMORY_BUDGET"] = ARGS.memory_budget
 os.environ["VTK_SMP_BACKEND_IN_USE"] = "STDThread"
 os.environ["VTK_SMP_MAX_THREADS"] = "2"
 
-from vtkmodules.util.misc import calldata_type  # noqa: E402  (after the environment)
-from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkLogger, vtkOutputWindow  # noqa
+from vtkmodules.vtkCommonCore import vtkLogger, vtkOutputWindow  # noqa: E402 (after the environment)
 
 import fuzz_checks  # noqa: E402
 import fuzz_inputs  # noqa: E402
@@ -81,34 +80,22 @@ def reproducer(seed, trial):
 
 
 class MessageLog:
-    """Every error and warning of VTK: the algorithm's own (through its observers) and the rest
-    (the executive's, the data's) through the output window, which prints nothing."""
+    """Every error and warning of VTK: the algorithm's own (its ErrorRecorder) and the rest (the
+    executive's, the data's) through the output window, which prints nothing."""
 
     def __init__(self):
-        self.errors = []
-        self.warnings = []
         vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
         window = vtkOutputWindow.GetInstance()
         window.SetDisplayModeToNever()
-
-        @calldata_type(VTK_STRING)
-        def error(caller, event, message):
-            self.errors.append(message)
-
-        @calldata_type(VTK_STRING)
-        def warning(caller, event, message):
-            self.warnings.append(message)
-
-        window.AddObserver(vtkCommand.ErrorEvent, error)
-        window.AddObserver(vtkCommand.WarningEvent, warning)
+        self.window = common.ErrorRecorder(window)
 
     def take(self, recorder):
         """(the algorithm's errors, the other objects' errors, all warnings) since the last take."""
-        own, others = list(recorder.messages), self.errors
-        warnings = self.warnings + recorder.warnings
-        self.errors, self.warnings = [], []
-        recorder.messages.clear()
-        recorder.warnings.clear()
+        own, others = list(recorder.messages), list(self.window.messages)
+        warnings = self.window.warnings + recorder.warnings
+        for source in (recorder, self.window):
+            source.messages.clear()
+            source.warnings.clear()
         return own, others, warnings
 
 
