@@ -99,6 +99,9 @@ endfunction ()
 # has ParaView's vtkmodules), never an installed copy, with Testing/Support (python_test_common)
 # on the path.
 function (boostedsurfaces_add_python_test name script)
+  if (BOOSTEDSURFACES_SANITIZE) # no Python module in that build (the top CMakeLists.txt says so)
+    return ()
+  endif ()
   add_test(NAME Python.${name}
     COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/${script}" ${ARGN})
   set_tests_properties(Python.${name} PROPERTIES ENVIRONMENT
@@ -108,6 +111,9 @@ endfunction ()
 # boostedsurfaces_add_python_image_test(<name> <script> <baseline png> <arguments>...): a Python
 # regression image, compared with Testing/Data/Baseline/<baseline png> under the one threshold.
 function (boostedsurfaces_add_python_image_test name script baseline)
+  if (BOOSTEDSURFACES_SANITIZE)
+    return ()
+  endif ()
   boostedsurfaces_add_python_test(${name} ${script} ${ARGN}
     --baseline "${BOOSTEDSURFACES_BASELINE_DIR}/${baseline}"
     --output-dir "${BOOSTEDSURFACES_TEST_OUTPUT_DIR}"

@@ -1,5 +1,6 @@
 # Shared by tools/demo and tools/test: install what is missing, then configure and build.
-# Sourced, not run. Respects BUILD_DIR (default: <repo>/build) and JOBS (default: nproc).
+# Sourced, not run. Respects BUILD_DIR (default: <repo>/build), BUILD_TYPE (default: Release) and
+# JOBS (default: nproc).
 set -euo pipefail
 
 REPO_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -49,9 +50,10 @@ install_packages() {
 }
 
 configure_and_build() {
-  log "Configuring (Release) in $BUILD_DIR"
+  local build_type="${BUILD_TYPE:-Release}"
+  log "Configuring ($build_type) in $BUILD_DIR"
   mkdir -p "$BUILD_DIR"
-  cmake -S "$REPO_DIR" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release \
+  cmake -S "$REPO_DIR" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE="$build_type" \
     -DPython3_EXECUTABLE=/usr/bin/python3 "$@" >"$BUILD_DIR/configure.log" 2>&1 || {
     cat "$BUILD_DIR/configure.log" >&2
     exit 1

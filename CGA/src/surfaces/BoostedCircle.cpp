@@ -45,7 +45,8 @@ std::string BoostedCircle::boostProblem(double lambdaMin, double lambdaMax) cons
   // (and overflow first) at the ends of the range.
   for (const double lambda : { lambdaMin, lambdaMax })
   {
-    for (const double entry : PointMap(this->boostCompact(lambda)).matrix())
+    const PointMap map(this->boostCompact(lambda)); // named: a temporary's matrix() would dangle
+    for (const double entry : map.matrix())
     {
       if (!std::isfinite(entry))
       {

@@ -416,3 +416,29 @@ TEST(CurvaturePatchSource, ATinyPatchHasUnitNormals)
     EXPECT_LE(std::sqrt(vtkMath::Distance2BetweenPoints(n, e)), 1e-2) << i;
   }
 }
+
+// Found by the property fuzz (Testing/Python/test_property_fuzz.py --seed 7 --trial 116 and
+// --seed 2 --trial 2681): a patch far from the origin whose origin is a subnormal off its own
+// sample points gave (NaN, inf, NaN) points where the clip sphere cut it (the crossing rounded
+// onto the sphere's center, cga::segmentSphereExitPoint). Every point is finite and in the ball.
+TEST(CurvaturePatchSource, FarFromTheOriginTheCutAtTheClipSphereIsFinite)
+{
+  const double origins[][3] = { { -0.6395685885419589, -5e-324, -1e20 },
+    { -0.6395685885419589, -5e-324, -1e39 }, { -5e-324, -1e-300, -1e39 } };
+  for (const auto& origin : origins)
+  {
+    vtkNew<vtkCurvaturePatchSource> source;
+    source->SetOrigin(origin);
+    source->Update();
+    vtkPolyData* output = source->GetOutput();
+    ASSERT_GT(output->GetNumberOfPoints(), 0) << origin[2];
+    EXPECT_TRUE(allFinite(output)) << origin[2];
+    for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      output->GetPoint(i, p);
+      EXPECT_LE(RelativeSphereExcess(p, origin, source->GetClipRadius()), 1e-12) << i;
+    }
+    ExpectCellsUseExistingPoints(output);
+  }
+}
