@@ -135,11 +135,11 @@ bool vtkBoostedGridDriver::Sample(vtkIdType begin, vtkIdType end, vtkIdType samp
   return !this->Aborted;
 }
 
-void vtkBoostedGridDriver::Build(vtkPolyData* output)
+bool vtkBoostedGridDriver::Build(vtkPolyData* output)
 {
   if (this->Aborted || !this->Builder)
   {
-    return; // never hand on a half-computed grid
+    return false; // never hand on a half-computed grid
   }
   std::string problem;
   const bool built = vtkBoostedMemoryBudget::Run(this->Source, [&] {
@@ -157,19 +157,9 @@ void vtkBoostedGridDriver::Build(vtkPolyData* output)
         sampled, this->FirstRow, this->LastRow, vtkAlgorithm::DOUBLE_PRECISION);
     }
     vtkBoostedSphereClip::Clip(sampled, this->ClipCenter, this->ClipRadius, output);
-    vtkPoints* points = output->GetPoints();
-    if (this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION && points)
+    if (this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION)
     {
-      vtkDoubleArray* values = vtkDoubleArray::SafeDownCast(points->GetData()); // as built
-      problem = vtkBoostedSinglePrecisionProblem(
-        vtkBoostedLargestFinite(values->GetPointer(0), 3 * values->GetNumberOfTuples()),
-        "the points");
-      if (problem.empty())
-      {
-        vtkNew<vtkFloatArray> floats;
-        floats->DeepCopy(values);
-        points->SetData(floats);
-      }
+      problem = vtkBoostedPointsToSinglePrecision(output->GetPoints()); // as built: doubles
     }
   });
   if (!problem.empty())
@@ -179,5 +169,7 @@ void vtkBoostedGridDriver::Build(vtkPolyData* output)
   if (!built || !problem.empty())
   {
     output->Initialize(); // never hand on a half-built output
+    return false;
   }
+  return true;
 }

@@ -75,8 +75,9 @@ public:
   bool SampleRows(const std::function<void(int row)>& sample);
   bool SampleGrid(const std::function<void(int row, int column)>& sample);
 
-  /// Step 3: this piece's cells, cut at the clip sphere, into `output` (left empty when aborted).
-  void Build(vtkPolyData* output);
+  /// Step 3: this piece's cells, cut at the clip sphere, into `output`. False (`output` left
+  /// empty) when aborted, out of memory or refused as single precision (an error was reported).
+  bool Build(vtkPolyData* output);
 
   /// Empty when (center, radius) is a valid clip sphere, otherwise what is wrong with it.
   static std::string ClipSphereProblem(const double center[3], double radius);

@@ -4,6 +4,11 @@
 #ifndef vtkBoostedSinglePrecision_h
 #define vtkBoostedSinglePrecision_h
 
+#include "vtkDoubleArray.h" // for the points as built
+#include "vtkFloatArray.h"  // for the points as written
+#include "vtkNew.h"
+#include "vtkPoints.h"
+
 #include <cfloat>  // for FLT_MAX
 #include <cmath>   // for std::fabs
 #include <sstream> // for the message
@@ -42,6 +47,28 @@ inline std::string vtkBoostedSinglePrecisionProblem(double largest, const std::s
   std::ostringstream what;
   what << name << " reach " << largest << ",";
   return vtkBoostedSinglePrecisionProblem(what.str());
+}
+
+/// The last step of single-precision output built in double: converts `points` to floats, or
+/// returns the error (`name` names them; the points are left as they are) when a coordinate is
+/// beyond the largest float. Points that are not doubles are left as they are.
+inline std::string vtkBoostedPointsToSinglePrecision(
+  vtkPoints* points, const std::string& name = "the points")
+{
+  vtkDoubleArray* values = points ? vtkDoubleArray::SafeDownCast(points->GetData()) : nullptr;
+  if (!values)
+  {
+    return {};
+  }
+  std::string problem = vtkBoostedSinglePrecisionProblem(
+    vtkBoostedLargestFinite(values->GetPointer(0), 3 * values->GetNumberOfTuples()), name);
+  if (problem.empty())
+  {
+    vtkNew<vtkFloatArray> floats;
+    floats->DeepCopy(values);
+    points->SetData(floats);
+  }
+  return problem;
 }
 
 #endif

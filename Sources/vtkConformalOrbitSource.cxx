@@ -4,7 +4,9 @@
 #include "vtkBoostedGridBuilder.h"
 #include "vtkBoostedGridDriver.h"
 #include "vtkBoostedRowList.h"
+#include "vtkBoostedSinglePrecision.h"
 #include "vtkBoostedSphereClip.h"
+#include "vtkBoostedTimeSweep.h"
 #include "vtkBoostedWholeInput.h"
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -46,12 +48,12 @@ bool finite(const double* values, int count)
   return true;
 }
 
-/// The identity's orbits: each seed of rows [first, last] as a vertex.
-void writeFixedSeeds(const std::vector<cga::Vec3>& seeds, int first, int last, double t,
-  int precision, vtkPolyData* output)
+/// The identity's orbits: each seed of rows [first, last] as a vertex (double points).
+void writeFixedSeeds(
+  const std::vector<cga::Vec3>& seeds, int first, int last, double t, vtkPolyData* output)
 {
   vtkNew<vtkPoints> points;
-  points->SetDataType(precision == vtkAlgorithm::SINGLE_PRECISION ? VTK_FLOAT : VTK_DOUBLE);
+  points->SetDataType(VTK_DOUBLE);
   vtkNew<vtkCellArray> vertices;
   vtkNew<vtkDoubleArray> ts;
   ts->SetName("t");
@@ -133,6 +135,8 @@ int vtkConformalOrbitSource::RequestInformation(
   for (int port = 0; port < 2; ++port)
   {
     outputVector->GetInformationObject(port)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
+    vtkBoostedTimeSweep::ReportTimeSteps(
+      outputVector->GetInformationObject(port), this->NumberOfTimeSteps);
   }
   return 1;
 }
@@ -155,10 +159,14 @@ int vtkConformalOrbitSource::RequestData(
     ? vtkPointSet::GetData(inputVector[0]->GetInformationObject(0))
     : nullptr;
 
-  // B, from the torus knot or the generator list.
+  // B, from the torus knot or the generator list, built about the center c (README, *Far from
+  // the origin*): KnotCenter, or the mean location of the rows that count. The seeds are moved by
+  // -c and the orbits and cores by +c, so moving everything by t moves the output by t to a few
+  // eps |t| (B built in place would hold |c|^2 and round like eps |c|^2).
   std::string problem;
   cga::Bivector b;
   cga::TorusKnot knot;
+  cga::Vec3 center{ 0, 0, 0 };
   const bool isKnot = this->GeneratorType == TORUS_KNOT;
   if (isKnot)
   {
@@ -169,10 +177,13 @@ int vtkConformalOrbitSource::RequestData(
     knot.p = this->KnotP;
     knot.q = this->KnotQ;
     problem = knot.validate();
+    center = knot.center;
+    knot.center = { 0, 0, 0 };
   }
   else
   {
     problem = this->Generators->Problem();
+    std::vector<cga::GeneratorParameters> kept;
     int ignored = 0;
     for (int i = 0; problem.empty() && i < this->Generators->GetNumberOfRows(); ++i)
     {
@@ -193,6 +204,18 @@ int vtkConformalOrbitSource::RequestData(
         ++ignored;
         continue;
       }
+      kept.push_back(generator);
+    }
+    // The mean as a sum of x_i / n (as cga::PointPairField's center): no overflow, and a lone
+    // row's location exactly.
+    for (const cga::GeneratorParameters& generator : kept)
+    {
+      center = center + (1.0 / static_cast<double>(kept.size())) * generator.location;
+    }
+    for (cga::GeneratorParameters generator : kept)
+    {
+      generator.location = generator.location - center;
+      const cga::FieldGenerator g = generator.field();
       // The filter's sign: exp(t B) is its exp(-Strength B(p)) at Strength t.
       b -= g.weight * g.bivector;
     }
@@ -256,11 +279,17 @@ int vtkConformalOrbitSource::RequestData(
     }
   }
 
-  // The samples of t: one period (closed orbits) or TRange.
+  // The samples of t: one period (closed orbits) or TRange, up to the animation's time (README,
+  // *Time*: t's upper end grows). A periodic orbit closes only when the sweep reaches the period;
+  // before, it is the open arc over [t0, tEnd].
   const double period = orbit.period();
-  const bool closed = this->ClosePeriodicOrbits && period > 0.0;
+  const bool periodic = this->ClosePeriodicOrbits && period > 0.0;
   const double t0 = this->TRange[0];
-  const double span = closed ? period : this->TRange[1] - this->TRange[0];
+  const double fraction = vtkBoostedTimeSweep::Fraction(outInfo, this->NumberOfTimeSteps);
+  const double tEnd =
+    vtkBoostedTimeSweep::Interpolate(t0, periodic ? t0 + period : this->TRange[1], fraction);
+  const bool closed = periodic && fraction == 1.0;
+  const double span = closed ? period : tEnd - t0;
   std::vector<double> ts(columns);
   for (int c = 0; c < columns; ++c)
   {
@@ -294,8 +323,19 @@ int vtkConformalOrbitSource::RequestData(
     if (!seeds.empty() &&
       vtkBoostedGridBuilder::PieceRows(static_cast<int>(seeds.size()), false, piece, pieces, first, last))
     {
-      writeFixedSeeds(seeds, first, last, t0, this->OutputPointsPrecision, orbits);
+      writeFixedSeeds(seeds, first, last, t0, orbits);
+      if (this->OutputPointsPrecision == SINGLE_PRECISION)
+      {
+        problem = vtkBoostedPointsToSinglePrecision(orbits->GetPoints(), "the orbits' points");
+      }
+      if (!problem.empty())
+      {
+        vtkErrorMacro(<< problem);
+        orbits->Initialize();
+        return 1;
+      }
     }
+    this->StampTime(outputVector);
     return 1;
   }
 
@@ -318,9 +358,10 @@ int vtkConformalOrbitSource::RequestData(
     vtkBoostedGridBuilder& grid = driver.Grid();
     driver.SampleGrid([&](int r, int c) {
       cga::Vec3 p;
-      if (orbit.point(seeds[r], ts[c], p))
+      if (orbit.point(seeds[r] - center, ts[c], p))
       {
-        const double xyz[3] = { p.x, p.y, p.z };
+        const cga::Vec3 q = p + center;
+        const double xyz[3] = { q.x, q.y, q.z };
         grid.SetPoint(r, c, xyz);
       }
     });
@@ -328,7 +369,10 @@ int vtkConformalOrbitSource::RequestData(
     std::iota(ids.begin(), ids.end(), 0);
     grid.AddColumnParameter("t", ts);
     grid.AddRowIntegerParameter("OrbitId", ids);
-    driver.Build(orbits);
+    if (!driver.Build(orbits))
+    {
+      return 1; // aborted or refused (single precision): both outputs stay empty
+    }
   }
   vtkNew<vtkDoubleArray> periodArray;
   periodArray->SetName("Period");
@@ -343,7 +387,7 @@ int vtkConformalOrbitSource::RequestData(
   {
     vtkNew<vtkPolyData> sampled;
     vtkNew<vtkPoints> points;
-    points->SetDataType(this->OutputPointsPrecision == SINGLE_PRECISION ? VTK_FLOAT : VTK_DOUBLE);
+    points->SetDataType(VTK_DOUBLE); // floats last, after the cut (as the orbits)
     vtkNew<vtkCellArray> lines;
     vtkNew<vtkIntArray> coreIds;
     coreIds->SetName("CoreId");
@@ -354,11 +398,15 @@ int vtkConformalOrbitSource::RequestData(
       {
         // The knot's circles as given (readCircle of the parts is accurate to about 1e-8 only).
         const cga::TorusKnot::Circle circle = i == 0 ? knot.coreA() : knot.coreC();
-        round.center = circle.center;
+        round.center = circle.center + center;
         round.normal = circle.normal;
         round.radius = circle.radius;
       }
-      else if (!orbit.core(i, round))
+      else if (orbit.core(i, round))
+      {
+        round.center = round.center + center;
+      }
+      else
       {
         continue;
       }
@@ -393,8 +441,29 @@ int vtkConformalOrbitSource::RequestData(
     sampled->SetLines(lines);
     sampled->GetPointData()->AddArray(coreIds);
     vtkBoostedSphereClip::Clip(sampled, this->ClipCenter, this->ClipRadius, cores);
+    if (this->OutputPointsPrecision == SINGLE_PRECISION)
+    {
+      problem = vtkBoostedPointsToSinglePrecision(cores->GetPoints(), "the cores' points");
+    }
+    if (!problem.empty())
+    {
+      vtkErrorMacro(<< problem);
+      orbits->Initialize();
+      cores->Initialize();
+      return 1;
+    }
   }
+  this->StampTime(outputVector);
   return 1;
+}
+
+void vtkConformalOrbitSource::StampTime(vtkInformationVector* outputVector)
+{
+  for (int port = 0; port < 2; ++port)
+  {
+    vtkInformation* info = outputVector->GetInformationObject(port);
+    vtkBoostedTimeSweep::StampTime(info, this->NumberOfTimeSteps, vtkPolyData::GetData(info));
+  }
 }
 
 void vtkConformalOrbitSource::PrintSelf(ostream& os, vtkIndent indent)
@@ -425,4 +494,5 @@ void vtkConformalOrbitSource::PrintSelf(ostream& os, vtkIndent indent)
   vector3(this->ClipCenter);
   os << indent << "ClipRadius: " << this->ClipRadius << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
+  os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
 }

@@ -31,6 +31,14 @@
  * every part a rotation, rates in a rational ratio), t runs over [TRange[0], TRange[0] + T) and
  * every orbit is a closed polyline; otherwise over TRange, both ends included.
  *
+ * Time (NumberOfTimeSteps, vtkBoostedTimeSweep): at time s the upper end of t grows to
+ * t0 + s (t1 - t0), t1 = TRange[1] or t0 + T: a periodic orbit is the open arc over that range and
+ * closes only at s = 1, the static output.
+ *
+ * Far from the origin: B is built about a center c (KnotCenter, or the mean location of the rows
+ * that count), the seeds are moved by -c and the orbits and cores by +c, so moving the whole
+ * configuration (seeds, rows, KnotCenter, ClipCenter) by t moves the outputs by t to a few eps |t|.
+ *
  * Output 0: the orbits, one polyline per seed, cut exactly at the clip sphere (ClipRadius about
  * ClipCenter) and where samples go to infinity; point arrays "t" and "OrbitId" (the seed's index),
  * field array "Period" (T, or 0 when exp(t B) is not periodic). The seeds are divided among the
@@ -43,7 +51,8 @@
  * Invalid parameters (non-finite values, a zero or parallel knot direction, KnotRadius <= 0,
  * KnotP or KnotQ 0, min t > max t, a non-finite or too large B, a refused list, INPUT_POINTS
  * without an input, a non-finite seed, more than vtkBoostedGridBuilder::MaximumSamples samples or
- * more memory than the budget) give a vtkErrorMacro message and empty outputs.
+ * more memory than the budget, single-precision points of either output beyond the largest float,
+ * vtkBoostedSinglePrecision.h) give a vtkErrorMacro message and empty outputs.
  */
 #ifndef vtkConformalOrbitSource_h
 #define vtkConformalOrbitSource_h
@@ -192,6 +201,14 @@ public:
   vtkGetMacro(OutputPointsPrecision, int);
   ///@}
 
+  ///@{
+  /// 0 (default): no time. N >= 1: N time steps s in [0, 1] (vtkBoostedTimeSweep); at time s
+  /// t runs over [t0, t0 + s (t1 - t0)] (see the class description), the last frame the static
+  /// output.
+  vtkSetClampMacro(NumberOfTimeSteps, int, 0, 100000);
+  vtkGetMacro(NumberOfTimeSteps, int);
+  ///@}
+
 protected:
   vtkConformalOrbitSource();
   ~vtkConformalOrbitSource() override;
@@ -219,8 +236,12 @@ protected:
   double ClipCenter[3] = { 0.0, 0.0, 0.0 };
   double ClipRadius = 100.0;
   int OutputPointsPrecision = DOUBLE_PRECISION;
+  int NumberOfTimeSteps = 0;
 
 private:
+  /// Both outputs get the requested time (vtkBoostedTimeSweep::StampTime).
+  void StampTime(vtkInformationVector* outputVector);
+
   vtkConformalOrbitSource(const vtkConformalOrbitSource&) = delete;
   void operator=(const vtkConformalOrbitSource&) = delete;
 };

@@ -103,6 +103,9 @@ play("Curvature Patch", CurvaturePatch,  # noqa: F821
 play("Dipole Field", DipoleField,  # noqa: F821
      dict(GeneratorList=[0, 0, 0, 1, 0, 0, 0.5, 0, 0]),
      dict(GeneratorList=[0, 0, 0, 1, 0, 0, 0.0, 0, 0]), array="DisplacementSummedGenerators")
+play("Conformal Orbit (trefoil)", ConformalOrbit,  # noqa: F821
+     dict(TResolution=64),
+     dict(ClosePeriodicOrbits=0, TRange=[0.0, 0.0]))
 play("Point Pair Deformation", PointPairDeformation,  # noqa: F821
      dict(GeneratorList=[0, 0, 0.7, 0, 0, 1, 0.5, 0, 0], Strength=2.0),
      dict(Strength=0.0),

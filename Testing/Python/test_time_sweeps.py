@@ -4,9 +4,9 @@ current parameters) point for point, and merged Hopf tori without boundary edges
 import unittest
 from collections import Counter
 
-from boostedsurfaces import (vtkBoostedSurfaceSource, vtkCurvaturePatchSource,
-                             vtkDipoleFieldSource, vtkHopfFibrationSource,
-                             vtkPointPairDeformationFilter)
+from boostedsurfaces import (vtkBoostedSurfaceSource, vtkConformalOrbitSource,
+                             vtkCurvaturePatchSource, vtkDipoleFieldSource,
+                             vtkHopfFibrationSource, vtkPointPairDeformationFilter)
 from vtkmodules.vtkCommonCore import vtkIdList
 from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
 from vtkmodules.vtkFiltersSources import vtkSphereSource
@@ -87,6 +87,28 @@ class TimeSweeps(unittest.TestCase):
         def start(source):
             source.SetGenerator(0, 0, 0, 0, 1, 0, 0, 0.0)
         self.check(vtkDipoleFieldSource, start, "DisplacementSummedGenerators")
+
+    def test_conformal_orbit(self):
+        def make():
+            source = vtkConformalOrbitSource()
+            source.SetTResolution(48)
+            return source
+        def start(source):
+            source.SetClosePeriodicOrbits(False)
+            source.SetTRange(0.0, 0.0)
+        self.check(make, start)
+        # The trefoil closes only when the sweep reaches its period: open arcs before.
+        timed = make()
+        timed.SetNumberOfTimeSteps(4)
+        for time, closed in ((1.0 / 3.0, False), (2.0 / 3.0, False), (1.0, True)):
+            timed.UpdateTimeStep(time)
+            lines = timed.GetOutput().GetLines()
+            self.assertEqual(lines.GetNumberOfCells(), 1)
+            ids = vtkIdList()
+            lines.InitTraversal()
+            lines.GetNextCell(ids)
+            self.assertEqual(ids.GetNumberOfIds(), 49)
+            self.assertEqual(ids.GetId(0) == ids.GetId(48), closed, "time %g" % time)
 
     def test_deformation_filter(self):
         sphere = vtkSphereSource()

@@ -453,3 +453,141 @@ TEST(ConformalOrbitSource, BadParametersGiveOneErrorAndEmptyOutputs)
   EXPECT_EQ(vtkPolyData::SafeDownCast(source->GetOutputDataObject(1))->GetNumberOfPoints(), 0);
 }
 } // namespace
+
+TEST(ConformalOrbitSource, APeriodicOrbitSweptInTimeClosesOnlyAtThePeriod)
+{
+  // The default trefoil, animated: at time s < 1 the orbit is the open arc over [0, s T], from
+  // the seed; at s = 1 it is the closed orbit of the static output.
+  vtkNew<vtkConformalOrbitSource> source;
+  source->SetTResolution(60);
+  source->SetNumberOfTimeSteps(5);
+  source->Update();
+  const double T = period(source->GetOutput());
+  ASSERT_GT(T, 0.0);
+  for (const double s : { 0.25, 0.5, 0.75, 0.99, 1.0 })
+  {
+    source->UpdateTimeStep(s);
+    vtkPolyData* output = source->GetOutput();
+    bool closed = false;
+    const auto lines = polylines(output, &closed);
+    ASSERT_EQ(lines.size(), 1u) << "s " << s;
+    EXPECT_EQ(closed, s == 1.0) << "s " << s;
+    ASSERT_EQ(lines[0].size(), s == 1.0 ? 60u : 61u) << "s " << s;
+    EXPECT_LE(distance(lines[0].front(), { 0.15, 0, 0 }), 1e-15) << "starts at the seed, s " << s;
+    vtkDataArray* t = output->GetPointData()->GetArray("t");
+    double range[2];
+    t->GetRange(range);
+    EXPECT_EQ(range[0], 0.0);
+    EXPECT_DOUBLE_EQ(range[1], s == 1.0 ? T * 59 / 60 : s * T) << "s " << s;
+    // The open arc does not come back to the seed before the period.
+    if (s < 1.0)
+    {
+      EXPECT_GT(distance(lines[0].back(), lines[0].front()), 1e-3) << "s " << s;
+    }
+    EXPECT_EQ(period(output), T) << "the period of B, whatever the time";
+    EXPECT_GT(vtkPolyData::SafeDownCast(source->GetOutputDataObject(1))->GetNumberOfPoints(), 0);
+  }
+}
+
+TEST(ConformalOrbitSource, MovingEverythingByTMovesTheOrbitsAndCoresByT)
+{
+  // Rows of several kinds away from the origin, seeds around them, the clip sphere with them. The
+  // bound: TranslationChecks.h. Built in place, B holds |t|^2 and the error grows like eps |t|^2.
+  for (const int port : { 0, 1 })
+  {
+    ExpectTranslationCovariant([port](const double t[3]) {
+      vtkNew<vtkConformalOrbitSource> source;
+      source->SetGeneratorTypeToGeneratorList();
+      source->AddGenerator(0.5 + t[0], 0.1 + t[1], -0.2 + t[2], 0.2, 0.1, 1, 0.9, 1, 0);
+      source->AddGenerator(-0.3 + t[0], 0.4 + t[1], 0.1 + t[2], 1, 1, 0.2, 0.4, 2, 0.3);
+      source->AddGenerator(0.2 + t[0], -0.3 + t[1], 0.3 + t[2], 0, 0.3, 0.2, 0.5);
+      source->SetSeedModeToSeedList();
+      source->AddSeed(0.3 + t[0], -0.4 + t[1], 0.2 + t[2]);
+      source->AddSeed(-0.6 + t[0], 0.2 + t[1], 0.5 + t[2]);
+      source->SetTRange(-1.0, 1.5);
+      source->SetTResolution(48);
+      source->SetClipCenter(t);
+      source->SetClipRadius(1e3);
+      source->Update();
+      return vtkSmartPointer<vtkDataSet>(vtkPolyData::SafeDownCast(source->GetOutputDataObject(port)));
+    });
+    // The (3, 5) knot: its circles about KnotCenter, a seed on a torus about each circle.
+    ExpectTranslationCovariant([port](const double t[3]) {
+      vtkNew<vtkConformalOrbitSource> source;
+      source->SetKnotP(3);
+      source->SetKnotQ(5);
+      source->SetKnotCenter(0.2 + t[0], -0.1 + t[1], 0.3 + t[2]);
+      source->SetKnotNormal(0.2, 0.1, 1);
+      source->SetKnotDirection(1, 0.3, 0);
+      source->SetKnotRadius(0.7);
+      source->SetSeedModeToSeedList();
+      source->AddSeed(0.2 - 0.45 + t[0], -0.1 + t[1], 0.3 + t[2]);
+      source->AddSeed(0.2 + 0.45 + t[0], -0.1 + t[1], 0.3 + t[2]);
+      source->SetTResolution(120);
+      source->SetCoreResolution(32);
+      source->SetClipCenter(t);
+      source->SetClipRadius(1e3);
+      source->Update();
+      return vtkSmartPointer<vtkDataSet>(vtkPolyData::SafeDownCast(source->GetOutputDataObject(port)));
+    });
+  }
+}
+
+TEST(ConformalOrbitSource, SinglePrecisionBeyondTheLargestFloatIsAnError)
+{
+  // The orbits: a rotation about the z axis of a seed at 1e39, over angles that keep it inside
+  // the clip sphere about the seed.
+  ExpectSinglePrecisionBeyondTheLargestFloatIsAnError<vtkConformalOrbitSource>(
+    [](vtkConformalOrbitSource* source) {
+      source->SetGeneratorTypeToGeneratorList();
+      source->AddGenerator(0, 0, 0, 0, 0, 1, 1, vtkConformalOrbitSource::ROTATION, 0);
+      source->SetSeedPoint(1e39, 0, 0);
+      source->SetClosePeriodicOrbits(false);
+      source->SetClipCenter(1e39, 0, 0);
+      source->SetClipRadius(1e12);
+      source->SetTRange(0, 1e-28);
+      source->SetTResolution(4);
+    },
+    1e39);
+  // The identity's vertices: B = 0 and a seed at 1e39.
+  ExpectSinglePrecisionBeyondTheLargestFloatIsAnError<vtkConformalOrbitSource>(
+    [](vtkConformalOrbitSource* source) {
+      source->SetGeneratorTypeToGeneratorList();
+      source->SetSeedPoint(-1e39, 0, 0);
+      source->SetClipCenter(-1e39, 0, 0);
+    },
+    1e39);
+  // The cores alone: a rotation axis through 1e39 inside the clip sphere there, and an orbit
+  // about it of radius 1e39 that stays outside (empty without an error): both outputs empty.
+  vtkNew<vtkConformalOrbitSource> source;
+  source->SetGeneratorTypeToGeneratorList();
+  source->AddGenerator(1e39, 0, 0, 0, 0, 1, 1, vtkConformalOrbitSource::ROTATION, 0);
+  source->SetSeedPoint(0, 0, 0);
+  source->SetClosePeriodicOrbits(false);
+  source->SetTRange(0.5, 1.0);
+  source->SetClipCenter(1e39, 0, 0);
+  source->SetClipRadius(1e12);
+  EventCounter events(source);
+  source->Update();
+  EXPECT_EQ(events.errors, 0) << events.lastError;
+  auto cores = [&] { return vtkPolyData::SafeDownCast(source->GetOutputDataObject(1)); };
+  ASSERT_GT(cores()->GetNumberOfPoints(), 0);
+  EXPECT_GT(LargestCoordinate(cores()), 3.5e38);
+  source->SetOutputPointsPrecision(vtkAlgorithm::SINGLE_PRECISION);
+  source->Update();
+  EXPECT_EQ(events.errors, 1);
+  EXPECT_NE(events.lastError.find("vtkConformalOrbitSource"), std::string::npos) << events.lastError;
+  EXPECT_NE(events.lastError.find("OutputPointsPrecision"), std::string::npos) << events.lastError;
+  EXPECT_EQ(cores()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
+  // Within the float range single precision gives floats on both outputs.
+  source->SetClipCenter(0, 0, 0);
+  source->SetClipRadius(100);
+  source->SetGenerator(0, 1, 0, 0, 0, 0, 1, 1, vtkConformalOrbitSource::ROTATION, 0);
+  source->Update();
+  EXPECT_EQ(events.errors, 1) << events.lastError;
+  ASSERT_GT(source->GetOutput()->GetNumberOfPoints(), 0);
+  ASSERT_GT(cores()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(source->GetOutput()->GetPoints()->GetDataType(), VTK_FLOAT);
+  EXPECT_EQ(cores()->GetPoints()->GetDataType(), VTK_FLOAT);
+}

@@ -2,11 +2,14 @@
 // frame equal, point for point and cell for cell, to the static output at the sweep's parameter
 // (frame 0 the sweep's start, the last frame the current parameters, t = 0.5 half way).
 #include "vtkBoostedSurfaceSource.h"
+#include "vtkConformalOrbitSource.h"
 #include "vtkCurvaturePatchSource.h"
 #include "vtkHopfFibrationSource.h"
 
 #include "vtkCellArray.h"
+#include "vtkDataArray.h"
 #include "vtkDataObject.h"
+#include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
@@ -187,4 +190,34 @@ TEST(TimeSweeps, CurvaturePatchScalesEveryCurvature)
       s->SetCornerWeights(t * 0.5, t * -0.5, t * -0.5, t * 0.5);
     },
     "bilinear corners");
+}
+
+TEST(TimeSweeps, ConformalOrbitGrowsTsUpperEndAPeriodicOrbitClosesAtTheEnd)
+{
+  // The trefoil (period T): before the last frame the open arc over [0, s T], so the orbit is
+  // closed only at s = 1 (t0 = 0: Interpolate(0, T, s) is s T exactly).
+  expectAnimation<vtkConformalOrbitSource>(
+    [](vtkConformalOrbitSource* s) { s->SetTResolution(64); },
+    [](vtkConformalOrbitSource* s, double t) {
+      if (t < 1.0)
+      {
+        vtkNew<vtkConformalOrbitSource> probe;
+        probe->Update();
+        const double period = probe->GetOutput()->GetFieldData()->GetArray("Period")->GetTuple1(0);
+        s->SetClosePeriodicOrbits(false);
+        s->SetTRange(0.0, t * period);
+      }
+    },
+    "conformal orbit, torus knot");
+  // A point pair (no period): TRange's upper end.
+  expectAnimation<vtkConformalOrbitSource>(
+    [](vtkConformalOrbitSource* s) {
+      s->SetGeneratorTypeToGeneratorList();
+      s->AddGenerator(0.5, 0, 0, 0, 0.3, 0.2, 0.7);
+      s->SetSeedPoint(0.3, -0.4, 0.2);
+      s->SetTRange(-0.5, 2.0);
+      s->SetTResolution(32);
+    },
+    [](vtkConformalOrbitSource* s, double t) { s->SetTRange(-0.5, (1.0 - t) * -0.5 + t * 2.0); },
+    "conformal orbit, generator list");
 }
