@@ -77,9 +77,12 @@ class ClassModel:
         for method in own:
             if method.startswith("Add"):
                 row = method[3:]
-                types = scalar_signature(cls, method)
-                if types and "SetNumberOf%ss" % row in own and "Set%s" % row in own:
-                    self.lists[row] = len(types)
+                # The full row: the longest signature (AddGenerator also takes the 7 values of a
+                # point pair; GetGenerator fills the 9 of a row of any kind).
+                widths = [len(types) for types in signatures(cls, method)
+                          if types and all(t in SCALAR_TYPES for t in types)]
+                if widths and "SetNumberOf%ss" % row in own and "Set%s" % row in own:
+                    self.lists[row] = max(widths)
         list_methods = {f % row for row in self.lists for f in ("Set%s", "SetNumberOf%ss")}
         instance = cls()
         self.setters = {}

@@ -257,8 +257,9 @@ def check_discovery(models):
     find nothing); a new class or property only adds to it."""
     found = {m.name: m for m in models}
     expected = {"vtkBoostedSurfaceSource": {}, "vtkCurvaturePatchSource": {"ControlPoint": 11},
-                "vtkDipoleFieldSource": {"Generator": 7}, "vtkHopfFibrationSource":
-                {"BasePoint": 2}, "vtkPointPairDeformationFilter": {"Generator": 7}}
+                "vtkDipoleFieldSource": {"Generator": 9}, "vtkHopfFibrationSource":
+                {"BasePoint": 2}, "vtkPointPairDeformationFilter": {"Generator": 9},
+                "vtkConformalOrbitSource": {"Generator": 9, "Seed": 3}}
     problems = []
     for name, lists in expected.items():
         if name not in found:

@@ -145,7 +145,9 @@ bool CurvaturePatch::map(double a, double b, Vec3& out, double& weight) const
     return false;
   }
   out = frame.origin + image;
-  if (!isFinite(out))
+  // A weight beyond the largest double (curvatures near it) is a generator that overflowed: the
+  // sample is dropped like one at infinity rather than carried with an infinite weight.
+  if (!isFinite(out) || !std::isfinite(g.weight))
   {
     return false;
   }

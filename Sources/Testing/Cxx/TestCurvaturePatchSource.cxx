@@ -442,3 +442,36 @@ TEST(CurvaturePatchSource, FarFromTheOriginTheCutAtTheClipSphereIsFinite)
     ExpectCellsUseExistingPoints(output);
   }
 }
+
+// Found by the property fuzz (Testing/Python/test_property_fuzz.py --seed 20261202 --trial 4664):
+// curvatures near the largest double with two far control points left one sample whose image was
+// finite but whose GeneratorWeight was -inf. A sample whose weight overflows is dropped like one
+// at infinity: every array of the output is finite.
+TEST(CurvaturePatchSource, CurvaturesNearTheLargestDoubleGiveFiniteArrays)
+{
+  vtkNew<vtkCurvaturePatchSource> source;
+  source->SetKappaU(-1.7976931348623157e+308);
+  source->SetKappaV(-1e+300);
+  source->SetUDirection(1e-12, -1e-12, -0.0);
+  source->AddControlPoint(3.4028234663852886e+38, 9007199254740992.0, 9007199254740992.0, -1e8,
+    1e+150, 3.4028234663852886e+38, 0.6650668322065414, 1.958667459959993, -0.02681592389012667,
+    -0.7528703529345799, -646.0976534921266);
+  source->AddControlPoint(-1e+300, -2.5297679010214047, -0.3417903160704956, -1e8, -1e8,
+    1.4020733617949805, 192.99167319548576, 3.4028234663852886e+38, -0.014078698438040304,
+    -8.451064111369455, 0.0);
+  source->Update();
+  vtkPolyData* output = source->GetOutput();
+  EXPECT_TRUE(allFinite(output));
+  vtkPointData* pointData = output->GetPointData();
+  for (int a = 0; a < pointData->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pointData->GetArray(a);
+    for (vtkIdType i = 0; i < array->GetNumberOfValues(); ++i)
+    {
+      EXPECT_TRUE(std::isfinite(array->GetComponent(i / array->GetNumberOfComponents(),
+        static_cast<int>(i % array->GetNumberOfComponents()))))
+        << array->GetName() << " " << i;
+    }
+  }
+  ExpectCellsUseExistingPoints(output);
+}

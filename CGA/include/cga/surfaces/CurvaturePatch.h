@@ -60,7 +60,8 @@ struct CurvaturePatch
   /// E(a, b) and the local weight.
   CurvatureGenerator generatorAt(double a, double b) const;
 
-  /// The image of p(a, b); false (out unchanged) when it is at infinity or not finite. Computed
+  /// The image of p(a, b); false (out unchanged) when it is at infinity or not finite, or its
+  /// local weight is not (an overflowed generator). Computed
   /// about the origin (the patch and its control points moved by -origin, the image moved back),
   /// so that far from the space origin it rounds like eps |origin|, not eps |origin|^2.
   bool map(double a, double b, Vec3& out, double& weight) const;
