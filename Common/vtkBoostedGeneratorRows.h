@@ -1,5 +1,5 @@
-// The one layout of a generator row, shared by vtkPointPairDeformationFilter and
-// vtkDipoleFieldSource (their lists and ParaView tables): x, y, z, direction x, y, z, weight,
+// The one layout of a generator row, shared by vtkPointPairDeformationFilter,
+// vtkDipoleFieldSource and vtkConformalOrbitSource (their lists and ParaView tables): x, y, z, direction x, y, z, weight,
 // kind, pitch. A row given without its last two values (the 7-value AddGenerator/SetGenerator,
 // old scripts) is a point pair of pitch 0. The kind constants of the VTK classes are
 // cga::GeneratorKind's values (checked at compile time by vtkBoostedGeneratorKinds).
@@ -7,6 +7,7 @@
 #define vtkBoostedGeneratorRows_h
 
 #include "BoostedSurfacesCommonModule.h" // for export macro
+#include "vtkBoostedRowList.h"           // for vtkBoostedRowListMethods
 #include "cga/PointPairField.h"
 
 #include <string>
@@ -46,5 +47,31 @@ constexpr bool vtkBoostedGeneratorKinds()
     "the class's kind constants must be cga::GeneratorKind's values");
   return true;
 }
+
+/// The definitions of a class's generator list methods (declared in its header, where VTK's
+/// wrapping sees them): AddGenerator and SetGenerator with 9 values or the 7 of a point pair,
+/// and the list API of vtkBoostedRowListMethods, over the vtkBoostedRowList `member`.
+#define vtkBoostedGeneratorRowMethods(Class, member)                                              \
+  int Class::AddGenerator(                                                                        \
+    double x, double y, double z, double vx, double vy, double vz, double weight)                \
+  {                                                                                               \
+    return this->AddGenerator(x, y, z, vx, vy, vz, weight, POINT_PAIR, 0.0);                      \
+  }                                                                                               \
+  int Class::AddGenerator(double x, double y, double z, double vx, double vy, double vz,         \
+    double weight, double kind, double pitch)                                                     \
+  {                                                                                               \
+    return this->member->Add({ x, y, z, vx, vy, vz, weight, kind, pitch });                       \
+  }                                                                                               \
+  void Class::SetGenerator(                                                                       \
+    int index, double x, double y, double z, double vx, double vy, double vz, double weight)     \
+  {                                                                                               \
+    this->SetGenerator(index, x, y, z, vx, vy, vz, weight, POINT_PAIR, 0.0);                      \
+  }                                                                                               \
+  void Class::SetGenerator(int index, double x, double y, double z, double vx, double vy,        \
+    double vz, double weight, double kind, double pitch)                                          \
+  {                                                                                               \
+    this->member->Set(index, { x, y, z, vx, vy, vz, weight, kind, pitch });                       \
+  }                                                                                               \
+  vtkBoostedRowListMethods(Class, Generator, member)
 
 #endif

@@ -369,31 +369,7 @@ vtkPointPairDeformationFilter::~vtkPointPairDeformationFilter()
   this->SetGeneratorPitchArrayName(nullptr);
 }
 
-int vtkPointPairDeformationFilter::AddGenerator(
-  double x, double y, double z, double vx, double vy, double vz, double weight)
-{
-  return this->AddGenerator(x, y, z, vx, vy, vz, weight, POINT_PAIR, 0.0);
-}
-
-int vtkPointPairDeformationFilter::AddGenerator(double x, double y, double z, double vx,
-  double vy, double vz, double weight, double kind, double pitch)
-{
-  return this->Generators->Add({ x, y, z, vx, vy, vz, weight, kind, pitch });
-}
-
-void vtkPointPairDeformationFilter::SetGenerator(
-  int index, double x, double y, double z, double vx, double vy, double vz, double weight)
-{
-  this->SetGenerator(index, x, y, z, vx, vy, vz, weight, POINT_PAIR, 0.0);
-}
-
-void vtkPointPairDeformationFilter::SetGenerator(int index, double x, double y, double z,
-  double vx, double vy, double vz, double weight, double kind, double pitch)
-{
-  this->Generators->Set(index, { x, y, z, vx, vy, vz, weight, kind, pitch });
-}
-
-vtkBoostedRowListMethods(vtkPointPairDeformationFilter, Generator, Generators)
+vtkBoostedGeneratorRowMethods(vtkPointPairDeformationFilter, Generators)
 
 void vtkPointPairDeformationFilter::SetGeneratorsConnection(vtkAlgorithmOutput* output)
 {

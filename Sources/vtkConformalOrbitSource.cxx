@@ -84,31 +84,7 @@ vtkConformalOrbitSource::vtkConformalOrbitSource()
 
 vtkConformalOrbitSource::~vtkConformalOrbitSource() = default;
 
-int vtkConformalOrbitSource::AddGenerator(
-  double x, double y, double z, double dx, double dy, double dz, double weight)
-{
-  return this->AddGenerator(x, y, z, dx, dy, dz, weight, POINT_PAIR, 0.0);
-}
-
-int vtkConformalOrbitSource::AddGenerator(double x, double y, double z, double dx, double dy,
-  double dz, double weight, double kind, double pitch)
-{
-  return this->Generators->Add({ x, y, z, dx, dy, dz, weight, kind, pitch });
-}
-
-void vtkConformalOrbitSource::SetGenerator(
-  int index, double x, double y, double z, double dx, double dy, double dz, double weight)
-{
-  this->SetGenerator(index, x, y, z, dx, dy, dz, weight, POINT_PAIR, 0.0);
-}
-
-void vtkConformalOrbitSource::SetGenerator(int index, double x, double y, double z, double dx,
-  double dy, double dz, double weight, double kind, double pitch)
-{
-  this->Generators->Set(index, { x, y, z, dx, dy, dz, weight, kind, pitch });
-}
-
-vtkBoostedRowListMethods(vtkConformalOrbitSource, Generator, Generators)
+vtkBoostedGeneratorRowMethods(vtkConformalOrbitSource, Generators)
 
 int vtkConformalOrbitSource::AddSeed(double x, double y, double z)
 {

@@ -138,31 +138,7 @@ vtkDipoleFieldSource::vtkDipoleFieldSource()
 
 vtkDipoleFieldSource::~vtkDipoleFieldSource() = default;
 
-int vtkDipoleFieldSource::AddGenerator(
-  double x, double y, double z, double dx, double dy, double dz, double weight)
-{
-  return this->AddGenerator(x, y, z, dx, dy, dz, weight, POINT_PAIR, 0.0);
-}
-
-int vtkDipoleFieldSource::AddGenerator(double x, double y, double z, double dx, double dy,
-  double dz, double weight, double kind, double pitch)
-{
-  return this->Generators->Add({ x, y, z, dx, dy, dz, weight, kind, pitch });
-}
-
-void vtkDipoleFieldSource::SetGenerator(
-  int index, double x, double y, double z, double dx, double dy, double dz, double weight)
-{
-  this->SetGenerator(index, x, y, z, dx, dy, dz, weight, POINT_PAIR, 0.0);
-}
-
-void vtkDipoleFieldSource::SetGenerator(int index, double x, double y, double z, double dx,
-  double dy, double dz, double weight, double kind, double pitch)
-{
-  this->Generators->Set(index, { x, y, z, dx, dy, dz, weight, kind, pitch });
-}
-
-vtkBoostedRowListMethods(vtkDipoleFieldSource, Generator, Generators)
+vtkBoostedGeneratorRowMethods(vtkDipoleFieldSource, Generators)
 
 std::string vtkDipoleFieldSource::Validate() const
 {
