@@ -161,6 +161,25 @@ class PluginXmlTest(unittest.TestCase):
                     self.assertEqual(getattr(cls, constant, None), value,
                                      "entry %r is not %s.%s" % (text, class_name, constant))
 
+    def test_decorators_name_properties_and_values_of_their_proxy(self):
+        """Every visibility decorator of a panel names a property of its own proxy and, where that
+        property is an enumeration, one of its values (a typo would hide a property for good)."""
+        decorators = 0
+        for path in sorted(glob.glob(os.path.join(PLUGIN_DIR, "*.xml"))):
+            for proxy in ET.parse(path).getroot().iter("SourceProxy"):
+                properties = {p.get("name"): p for p in proxy if p.get("name")}
+                for decorator in proxy.iter("PropertyWidgetDecorator"):
+                    if decorator.get("type") != "GenericDecorator":
+                        continue
+                    decorators += 1
+                    name, value = decorator.get("property"), decorator.get("value")
+                    with self.subTest(proxy=proxy.get("name"), property=name, value=value):
+                        self.assertIn(name, properties)
+                        domain = properties[name].find("EnumerationDomain")
+                        if domain is not None:
+                            self.assertIn(value, [e.get("value") for e in domain.findall("Entry")])
+        self.assertGreater(decorators, 20)
+
     def test_kind_columns_are_the_class_constants(self):
         tables = 0
         for path in sorted(glob.glob(os.path.join(PLUGIN_DIR, "*.xml"))):
