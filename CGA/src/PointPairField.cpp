@@ -118,13 +118,13 @@ namespace
 {
 // The rows as field generators in space (FieldGenerator::of: a zero or non-finite direction gives
 // a NaN weight, which the field skips).
-std::vector<FieldGenerator> fieldsOf(const std::vector<GeneratorParameters>& rows)
+std::vector<FieldGenerator> fieldsOf(const GeneratorParameters* rows, std::size_t count)
 {
   std::vector<FieldGenerator> fields;
-  fields.reserve(rows.size());
-  for (const GeneratorParameters& row : rows)
+  fields.reserve(count);
+  for (std::size_t i = 0; i < count; ++i)
   {
-    fields.push_back(row.field());
+    fields.push_back(rows[i].field());
   }
   return fields;
 }
@@ -144,7 +144,7 @@ PointPairField::PointPairField(const PointPairGenerator* generators,
     rows[i].direction = generators[i].direction;
     rows[i].weight = generators[i].weight;
   }
-  this->add(fieldsOf(rows).data(), rows.data(), count);
+  this->add(fieldsOf(rows.data(), count).data(), rows.data(), count);
 }
 
 PointPairField::PointPairField(const GeneratorParameters* generators,
@@ -154,8 +154,7 @@ PointPairField::PointPairField(const GeneratorParameters* generators,
   : Falloff(falloff)
   , Epsilon(epsilon)
 {
-  const std::vector<GeneratorParameters> rows(generators, generators + count);
-  this->add(fieldsOf(rows).data(), generators, count);
+  this->add(fieldsOf(generators, count).data(), generators, count);
 }
 
 PointPairField::PointPairField(const FieldGenerator* generators,

@@ -32,14 +32,16 @@ using cga::GeneratorParameters;
 using cga::Vec3;
 using cgatest::Random;
 
-vtkNew<vtkPolyData> randomPoints(Random& random, int count)
+// `count` random points in the cube [-half, half]^3, stored as `pointType`.
+vtkNew<vtkPolyData> randomPoints(
+  Random& random, int count, double half = 2.0, int pointType = VTK_DOUBLE)
 {
   vtkNew<vtkPolyData> mesh;
   vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
+  points->SetDataType(pointType);
   for (int i = 0; i < count; ++i)
   {
-    const Vec3 p = random.vec3(2.0);
+    const Vec3 p = random.vec3(half);
     points->InsertNextPoint(p.x, p.y, p.z);
   }
   mesh->SetPoints(points);
@@ -263,15 +265,7 @@ TEST(PointPairDeformationKinds, HugeWeightsOfEveryKindGiveFiniteOutputOrTheSingl
   Random random(45);
   for (int pointType : { VTK_FLOAT, VTK_DOUBLE })
   {
-    vtkNew<vtkPolyData> mesh;
-    vtkNew<vtkPoints> points;
-    points->SetDataType(pointType);
-    for (int i = 0; i < 20; ++i)
-    {
-      const Vec3 p = random.vec3(2.0);
-      points->InsertNextPoint(p.x, p.y, p.z);
-    }
-    mesh->SetPoints(points);
+    auto mesh = randomPoints(random, 20, 2.0, pointType);
     for (GeneratorKind kind : cgatest::kAllKinds)
     {
       for (double weight : { 1e308, -1e308, 1e150, 1e40, 1e-3 })
@@ -332,15 +326,7 @@ namespace
 TEST(PointPairDeformationKinds, TranslatingRowsOfEveryKindAndTheMeshTranslatesTheOutput)
 {
   Random random(91);
-  vtkNew<vtkPolyData> mesh;
-  vtkNew<vtkPoints> points;
-  points->SetDataType(VTK_DOUBLE);
-  for (int i = 0; i < 30; ++i)
-  {
-    const Vec3 p = random.vec3(1.5);
-    points->InsertNextPoint(p.x, p.y, p.z);
-  }
-  mesh->SetPoints(points);
+  auto mesh = randomPoints(random, 30, 1.5);
   struct Row
   {
     Vec3 location, direction;
