@@ -78,3 +78,11 @@ def regression_test(renderer, camera_position, view_up, zoom, baseline, output_d
     camera.Zoom(zoom)
     window.Render()
     return compare_with_baseline(window, baseline, output_dir, threshold)
+
+
+def example_regression_test(figure, args):
+    """regression_test of an example module's own scene: its build_scene(), VIEW and SIZE, with
+    the command line `args` of parse_image_arguments. Returns the exit code."""
+    return regression_test(figure.build_scene(), figure.VIEW["view_direction"],
+                           figure.VIEW["view_up"], figure.VIEW["zoom"], args.baseline,
+                           args.output_dir, args.threshold, size=figure.SIZE)

@@ -20,9 +20,7 @@ import fig11_deformation as fig11  # noqa: E402
 
 def main():
     args = common.parse_image_arguments(__doc__.splitlines()[0])
-    return common.regression_test(fig11.build_scene(), fig11.VIEW["view_direction"],
-                                  fig11.VIEW["view_up"], fig11.VIEW["zoom"], args.baseline,
-                                  args.output_dir, args.threshold, size=fig11.SIZE)
+    return common.example_regression_test(fig11, args)
 
 
 if __name__ == "__main__":

@@ -23,9 +23,7 @@ FIGURES = {"TwistedBar": twisted_bar, "BoostVersusTwist": boost_versus_twist}
 def main():
     args = common.parse_image_arguments(__doc__.splitlines()[0], FIGURES)
     figure = FIGURES[args.figure]
-    return common.regression_test(figure.build_scene(), figure.VIEW["view_direction"],
-                                  figure.VIEW["view_up"], figure.VIEW["zoom"], args.baseline,
-                                  args.output_dir, args.threshold, size=figure.SIZE)
+    return common.example_regression_test(figure, args)
 
 
 if __name__ == "__main__":

@@ -19,9 +19,7 @@ import torus_knots_and_orbits as figure  # noqa: E402
 
 def main():
     args = common.parse_image_arguments(__doc__.splitlines()[0])
-    return common.regression_test(figure.build_scene(), figure.VIEW["view_direction"],
-                                  figure.VIEW["view_up"], figure.VIEW["zoom"], args.baseline,
-                                  args.output_dir, args.threshold, size=figure.SIZE)
+    return common.example_regression_test(figure, args)
 
 
 if __name__ == "__main__":
