@@ -10,17 +10,18 @@
 #   <root>/usr/lib for the loader's default /usr/lib (through that link $ORIGIN is /usr/bin/...).
 # * CMake: find_package(BoostedSurfaces) with CMAKE_PREFIX_PATH=<root>/usr builds and runs
 #   Testing/Install/ExternalProject against the unpacked libraries.
-# Usage: test_debian_package.sh <build dir> <python> <pvpython> <external project dir>
+# Usage: test_debian_package.sh <cpack> <build dir> <python> <pvpython> <external project dir>
 set -euo pipefail
-build_dir="$1"
-python="$2"
-pvpython="$3"
-project_dir="$4"
+cpack="$1"
+build_dir="$2"
+python="$3"
+pvpython="$4"
+project_dir="$5"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAILED: $*" >&2; exit 1; }
 
-cpack -G DEB -B "$work/package" --config "$build_dir/CPackConfig.cmake" >"$work/cpack.log" 2>&1 ||
+"$cpack" -G DEB -B "$work/package" --config "$build_dir/CPackConfig.cmake" >"$work/cpack.log" 2>&1 ||
   { cat "$work/cpack.log"; fail "cpack -G DEB"; }
 deb="$(find "$work/package" -maxdepth 1 -name 'boostedsurfaces_*_amd64.deb')"
 [ -n "$deb" ] || { cat "$work/cpack.log"; fail "no boostedsurfaces_<version>_amd64.deb"; }
