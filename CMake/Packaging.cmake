@@ -40,12 +40,14 @@ set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME boostedsurfaces)
 set(CPACK_PACKAGE_VERSION "${PROJECT_VERSION}")
 set(CPACK_PACKAGE_CONTACT "BoostedSurfaces maintainers")
-set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
-  "ParaView plugin and VTK/Python classes for boosted surfaces in conformal geometric algebra")
-set(CPACK_PACKAGE_DESCRIPTION "Point pairs exponentiated into boosts bend lines into circles and \
-sweep circles into surfaces (P. Colapinto, Boosted Surfaces, 2014): VTK sources and a filter, the \
-Python package boostedsurfaces, and the ParaView plugin BoostedSurfaces (Sources and Filters > \
-Boosted Surfaces), loaded automatically by ParaView 5.11.")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "ParaView plugin and VTK classes for boosted surfaces")
+set(CPACK_PACKAGE_DESCRIPTION [[
+Point pairs of conformal geometric algebra, exponentiated into boosts,
+bend lines into circles and sweep circles into surfaces (P. Colapinto,
+Boosted Surfaces, 2014). VTK sources and a deformation filter, the Python
+package boostedsurfaces, and the ParaView plugin BoostedSurfaces (Sources
+and Filters > Boosted Surfaces), loaded automatically by ParaView 5.11.]])
+set(CPACK_STRIP_FILES ON)
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)  # boostedsurfaces_<version>_amd64.deb
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
