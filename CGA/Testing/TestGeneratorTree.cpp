@@ -1,5 +1,5 @@
 // The far-field approximation of PointPairField::setTolerance (docs/conventions.md section 3
-// item 13) against the direct sum (tolerance 0): the a-priori bound |B_tree - B|_max <= t A(p)
+// item 14) against the direct sum (tolerance 0): the a-priori bound |B_tree - B|_max <= t A(p)
 // must hold at every point of random and adversarial configurations.
 #include "TestSupport.h"
 

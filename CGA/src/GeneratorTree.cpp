@@ -126,7 +126,7 @@ GeneratorTree::GeneratorTree(const double* generators,
   }
   this->MomentCount = static_cast<int>(this->MonomialPowers.size());
   // e_b(u) = sum over g with 2g <= b of coef(b - 2g, |g|) |g|!/g! u^(b - 2g), with
-  // coef(a, l) = |a|!/a! C(|a| + l, l) 2^|a| (-1)^l (docs/conventions.md section 3 item 13).
+  // coef(a, l) = |a|!/a! C(|a| + l, l) 2^|a| (-1)^l (docs/conventions.md section 3 item 14).
   for (int moment = 0; moment < this->MomentCount; ++moment)
   {
     const auto& beta = this->MonomialPowers[static_cast<std::size_t>(moment)];

@@ -1,5 +1,5 @@
 // Internal: the far-field approximation of the generator sum B(p) = sum_i g_i / (k |p - x_i|^2 + eps)
-// (g_i = w_i G_i) behind PointPairField::setTolerance (docs/conventions.md section 3 item 13).
+// (g_i = w_i G_i) behind PointPairField::setTolerance (docs/conventions.md section 3 item 14).
 //
 // A binary tree over the generators (split at the median of the widest extent, leaves of at most
 // kLeafSize); each node holds the Cartesian moments mu_b = sum_i g_i yhat_i^b, |b| <= P, of its

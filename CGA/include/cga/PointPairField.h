@@ -159,7 +159,7 @@ public:
   /// The center c the field computes relative to: the mean location of the kept generators.
   Vec3 center() const { return this->Center; }
 
-  /// The far-field approximation of B(p) (docs/conventions.md section 3 item 13): with a
+  /// The far-field approximation of B(p) (docs/conventions.md section 3 item 14): with a
   /// tolerance t > 0, every B(p) that generatorAt, map and mapPoints compute is within
   ///   t * A(p),  A(p) = sum_i |w_i G_i|_max / (k |p - x_i|^2 + eps),
   /// of the direct sum in each component (|.|_max: the largest component), by a tree over the
