@@ -13,6 +13,8 @@ namespace
 using namespace cgatest;
 
 constexpr double kFalloff = 1.0;
+// The tests build trees over a few hundred generators (the default crossover is far above).
+constexpr std::size_t kTreeFrom = 256;
 constexpr double kEpsilon = 0.05;
 
 // A(p) = sum_i |w_i G_i|_max / (k |p - x_i|^2 + eps) of the generators as the field keeps them
@@ -43,7 +45,7 @@ Worst worstRelativeError(const std::vector<FieldGenerator>& generators,
 {
   const PointPairField direct(generators.data(), generators.size(), falloff, epsilon);
   PointPairField tree(generators.data(), generators.size(), falloff, epsilon);
-  EXPECT_TRUE(tree.setTolerance(tolerance));
+  EXPECT_TRUE(tree.setTolerance(tolerance, kTreeFrom));
   EXPECT_GT(tree.treeDegree(), 0) << "the tree must be in use (" << generators.size() << " generators)";
   const Vec3 c = direct.center();
   Worst worst;
@@ -163,18 +165,20 @@ TEST(GeneratorTree, ToleranceDomainAndSmallFields)
   EXPECT_FALSE(field.setTolerance(-1e-3));
   EXPECT_EQ(field.tolerance(), 0.0);
   EXPECT_EQ(field.treeBytes(), 0u);
-  EXPECT_TRUE(field.setTolerance(std::numeric_limits<double>::infinity()));
+  EXPECT_TRUE(field.setTolerance(std::numeric_limits<double>::infinity(), kTreeFrom));
   EXPECT_EQ(field.tolerance(), PointPairField::maximumTolerance());
   EXPECT_GT(field.treeBytes(), 0u);
   EXPECT_TRUE(field.setTolerance(0.0));
   EXPECT_EQ(field.treeBytes(), 0u);
   // Below the crossover (M = 1 included) the field sums directly: bit for bit the direct sum.
-  for (const std::size_t count : { std::size_t{ 1 }, PointPairField::treeMinimumGenerators() - 1 })
+  EXPECT_TRUE(field.setTolerance(1e-3));
+  EXPECT_EQ(field.treeBytes(), 0u) << "400 generators are below the default crossover";
+  for (const std::size_t count : { std::size_t{ 1 }, kTreeFrom - 1 })
   {
     const std::vector<FieldGenerator> few(generators.begin(), generators.begin() + static_cast<long>(count));
     PointPairField direct(few.data(), few.size(), kFalloff, kEpsilon);
     PointPairField withTolerance(few.data(), few.size(), kFalloff, kEpsilon);
-    EXPECT_TRUE(withTolerance.setTolerance(1e-3));
+    EXPECT_TRUE(withTolerance.setTolerance(1e-3, kTreeFrom));
     EXPECT_EQ(withTolerance.treeBytes(), 0u);
     const Vec3 p{ 0.3, 0.1, -0.2 };
     EXPECT_EQ(direct.generatorAt(p).c, withTolerance.generatorAt(p).c);
@@ -188,7 +192,7 @@ TEST(GeneratorTree, NonFiniteGeneratorsAreSkippedAndNonFinitePointsLeftInPlace)
   generators[3].location.x = std::nan("");
   generators[7].weight = std::numeric_limits<double>::infinity();
   PointPairField field(generators.data(), generators.size(), kFalloff, kEpsilon);
-  ASSERT_TRUE(field.setTolerance(1e-4));
+  ASSERT_TRUE(field.setTolerance(1e-4, kTreeFrom));
   EXPECT_EQ(field.skippedGenerators(), 2u);
   std::vector<double> points = { 0.1, 0.2, 0.3, std::nan(""), 0.0, 0.0, 1.0, -1.0, 0.5 };
   std::vector<double> images(points.size());
@@ -215,7 +219,7 @@ TEST(GeneratorTree, ImagesFollowTheBoundThroughTheMap)
   PointPairField direct(generators.data(), generators.size(), kFalloff, kEpsilon);
   PointPairField tree(generators.data(), generators.size(), kFalloff, kEpsilon);
   const double tolerance = 1e-3, strength = 0.5;
-  ASSERT_TRUE(tree.setTolerance(tolerance));
+  ASSERT_TRUE(tree.setTolerance(tolerance, kTreeFrom));
   const auto points = randomPoints(random, 200, {}, 2.5);
   std::vector<double> in;
   for (const Vec3& p : points)

@@ -229,7 +229,7 @@ kernel::FieldArgs PointPairField::args(double strength, ExponentialRule rule) co
   return args;
 }
 
-bool PointPairField::setTolerance(double tolerance)
+bool PointPairField::setTolerance(double tolerance, std::size_t minimumGenerators)
 {
   if (!(tolerance >= 0.0))
   {
@@ -237,7 +237,7 @@ bool PointPairField::setTolerance(double tolerance)
   }
   this->Tolerance = std::min(tolerance, maximumTolerance());
   this->Tree.reset();
-  if (this->Tolerance > 0.0 && this->Count >= treeMinimumGenerators())
+  if (this->Tolerance > 0.0 && this->Count >= std::max<std::size_t>(1, minimumGenerators))
   {
     this->Tree = std::make_shared<const detail::GeneratorTree>(
       this->Generators.data(), this->Count, this->Falloff, this->Epsilon, this->Tolerance);

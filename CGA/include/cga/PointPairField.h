@@ -165,12 +165,14 @@ public:
   /// of the direct sum in each component (|.|_max: the largest component), by a tree over the
   /// generators whose remainder bound is enforced per block of points. 0 (the default) is the
   /// direct sum. A tolerance above maximumTolerance() is used as maximumTolerance(). Returns false,
-  /// changing nothing, for a NaN or negative tolerance. Fields of fewer than treeMinimumGenerators()
-  /// generators always sum directly (faster there). The tree takes O(M) memory (treeBytes()).
-  bool setTolerance(double tolerance);
+  /// changing nothing, for a NaN or negative tolerance. Fields of fewer than `minimumGenerators`
+  /// generators (default treeMinimumGenerators(), the measured crossover below which the direct
+  /// sum is faster; tests pass smaller values) always sum directly. The tree takes O(M) memory
+  /// (treeBytes()).
+  bool setTolerance(double tolerance, std::size_t minimumGenerators = treeMinimumGenerators());
   double tolerance() const { return this->Tolerance; }
   static constexpr double maximumTolerance() { return 1e-2; }
-  static constexpr std::size_t treeMinimumGenerators() { return 256; }
+  static constexpr std::size_t treeMinimumGenerators() { return 20000; }
   /// Bytes the tree holds (0 without one), and its expansion degree (0 without one).
   std::size_t treeBytes() const;
   int treeDegree() const;

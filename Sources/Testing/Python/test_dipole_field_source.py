@@ -91,13 +91,13 @@ class DipoleFieldSourceTest(unittest.TestCase):
             source = vtkDipoleFieldSource()
             events = common.ErrorRecorder(source)
             source.RemoveAllGenerators()
-            for _ in range(400):
+            for _ in range(20000):  # the tree's crossover (treeMinimumGenerators)
                 source.AddGenerator(rng.uniform(-2, 2), rng.uniform(-2, 2), 0.0,
-                                    rng.uniform(-1, 1), rng.uniform(-1, 1), 0.0, 0.01)
+                                    rng.uniform(-1, 1), rng.uniform(-1, 1), 0.0, 2e-4)
             rng.seed(5)
             self.assertEqual(source.GetTolerance(), 0.0)
             source.SetTolerance(tolerance)
-            source.SetDimensions(11, 11, 1)
+            source.SetDimensions(5, 5, 1)
             source.Update()
             output = source.GetOutput()
             if tolerance < 0:
