@@ -172,7 +172,7 @@ public:
   bool setTolerance(double tolerance, std::size_t minimumGenerators = treeMinimumGenerators());
   double tolerance() const { return this->Tolerance; }
   static constexpr double maximumTolerance() { return 1e-2; }
-  static constexpr std::size_t treeMinimumGenerators() { return 20000; }
+  static constexpr std::size_t treeMinimumGenerators() { return 50000; }
   /// Bytes the tree holds (0 without one), and its expansion degree (0 without one).
   std::size_t treeBytes() const;
   int treeDegree() const;
