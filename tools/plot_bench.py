@@ -1,10 +1,10 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Plots the time per 1,000,000 points against the number of generators M, direct sum and tree,
 from BoostedBench's JSON output (the Many/Direct and Many/Tree rows, bench/BenchManyGenerators.cpp).
 
     build/bin/BoostedBench --benchmark_filter=Many/ --benchmark_out=many.json \\
         --benchmark_out_format=json
-    python3 tools/plot_bench.py many.json many.png
+    /usr/bin/python3 tools/plot_bench.py many.json many.png   (Debian's python3 has matplotlib)
 """
 import argparse
 import collections
