@@ -281,6 +281,14 @@ bool GeneratorTree::computeMoments(int index)
   // yhat_parent = lambda yhat_child + delta: mu_b += sum_{g <= b} C(b, g) lambda^|g| delta^(b-g) mu_g.
   const int P = this->Degree;
   auto at = [P](int a, int b, int c) { return (a * (P + 1) + b) * (P + 1) + c; };
+  double binomials[kMaxDegree + 1][kMaxDegree + 1];
+  for (int n = 0; n <= P; ++n)
+  {
+    for (int k = 0; k <= n; ++k)
+    {
+      binomials[n][k] = binomial(n, k);
+    }
+  }
   for (int child : node.children)
   {
     const Node& c = this->Nodes[static_cast<std::size_t>(child)];
@@ -290,6 +298,12 @@ bool GeneratorTree::computeMoments(int index)
                               (c.center[1] - node.center[1]) / scale,
                               (c.center[2] - node.center[2]) / scale };
     powers(delta);
+    double lambdaPower[kMaxDegree + 1];
+    lambdaPower[0] = 1.0;
+    for (int n = 1; n <= P; ++n)
+    {
+      lambdaPower[n] = lambdaPower[n - 1] * lambda;
+    }
     const double* childMoments = this->Moments.data() + c.moments;
     double* mu = this->Moments.data() + offset;
     for (int b = 0; b < M; ++b)
@@ -304,8 +318,8 @@ bool GeneratorTree::computeMoments(int index)
             const int gamma = this->MonomialIndex[static_cast<std::size_t>(at(g0, g1, g2))];
             const int rest = this->MonomialIndex[static_cast<std::size_t>(
               at(beta[0] - g0, beta[1] - g1, beta[2] - g2))];
-            const double factor = binomial(beta[0], g0) * binomial(beta[1], g1) *
-              binomial(beta[2], g2) * std::pow(lambda, g0 + g1 + g2) *
+            const double factor = binomials[beta[0]][g0] * binomials[beta[1]][g1] *
+              binomials[beta[2]][g2] * lambdaPower[g0 + g1 + g2] *
               power[static_cast<std::size_t>(rest)];
             for (int k = 0; k < kComponents; ++k)
             {
