@@ -450,6 +450,11 @@ int vtkPointPairDeformationFilter::RequestData(
                   << this->Strength << ", " << this->Falloff << " and " << this->Epsilon);
     return 1; // the output stays empty
   }
+  if (!(this->Tolerance >= 0.0))
+  {
+    vtkErrorMacro(<< "Tolerance must be 0 or positive; it is " << this->Tolerance);
+    return 1; // the output stays empty
+  }
 
   // The list, with the selected generator moved to the handle's location, then the second port.
   if (!this->Generators->CheckForUpdate())
@@ -480,7 +485,7 @@ int vtkPointPairDeformationFilter::RequestData(
       return 1;
     }
   }
-  const cga::PointPairField field(
+  cga::PointPairField field(
     generators.data(), generators.size(), this->Falloff, this->Epsilon);
   if (field.skippedGenerators() > 0)
   {
@@ -503,7 +508,11 @@ int vtkPointPairDeformationFilter::RequestData(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   const double strength =
     this->Strength * vtkBoostedTimeSweep::Fraction(outInfo, this->NumberOfTimeSteps);
-  if (!vtkBoostedMemoryBudget::Run(this, [&] { this->Deform(input, field, strength, output); }))
+  // The tree (O(M), a few hundred bytes per generator) is built inside the budget's guard.
+  if (!vtkBoostedMemoryBudget::Run(this, [&] {
+        field.setTolerance(this->Tolerance);
+        this->Deform(input, field, strength, output);
+      }))
   {
     output->Initialize(); // no half-built output
   }
@@ -597,6 +606,7 @@ void vtkPointPairDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
   os << indent << "Falloff: " << this->Falloff << "\n";
   os << indent << "Epsilon: " << this->Epsilon << "\n";
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "ExponentialRule: " << (this->ExponentialRule == PAPER ? "PAPER" : "EXACT")
      << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";

@@ -170,6 +170,10 @@ std::string vtkDipoleFieldSource::Validate() const
   {
     return "Falloff and Epsilon must be finite";
   }
+  if (!(this->Tolerance >= 0.0))
+  {
+    return "Tolerance must be 0 or positive";
+  }
   for (double t : this->GeneratorsTranslation)
   {
     if (!std::isfinite(t))
@@ -286,7 +290,7 @@ int vtkDipoleFieldSource::RequestData(
     std::string problem;
     vtkBoostedGeneratorRows::Read(g, location, i, generators[i], problem);
   }
-  const cga::DipoleField field(generators.data(), generators.size(), this->Falloff,
+  cga::DipoleField field(generators.data(), generators.size(), this->Falloff,
     this->Epsilon, vtkBoostedExponentialRule<vtkDipoleFieldSource>(this->ExponentialRule));
 
   const vtkIdType n = output->GetNumberOfPoints();
@@ -294,6 +298,7 @@ int vtkDipoleFieldSource::RequestData(
   vtkSmartPointer<vtkDataArray> summedGenerators, summedDisplacements, difference,
     differenceMagnitude, potential;
   if (!vtkBoostedMemoryBudget::Run(this, [&] {
+        field.setTolerance(this->Tolerance); // the tree: O(M), a few hundred bytes per generator
         summedGenerators = newArray(precision, "DisplacementSummedGenerators", 3, n);
         summedDisplacements = newArray(precision, "DisplacementSummedDisplacements", 3, n);
         difference = newArray(precision, "DisplacementDifference", 3, n);
@@ -360,6 +365,7 @@ void vtkDipoleFieldSource::PrintSelf(ostream& os, vtkIndent indent)
      << this->GeneratorsTranslation[1] << ", " << this->GeneratorsTranslation[2] << ")\n";
   os << indent << "Falloff: " << this->Falloff << "\n";
   os << indent << "Epsilon: " << this->Epsilon << "\n";
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "ExponentialRule: " << (this->ExponentialRule == PAPER ? "PAPER" : "EXACT")
      << "\n";
   os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";

@@ -124,6 +124,15 @@ public:
   ///@}
 
   ///@{
+  /// Method (a)'s far-field approximation of B (cga::PointPairField::setTolerance): 0 (default)
+  /// is the direct sum; t > 0 keeps B within t A(p) of it, A(p) = sum_i |w_i G_i|_max / d_i^2.
+  /// Values above 0.01 are used as 0.01; NaN or negative is an error (empty output). Method (b)
+  /// stays exact. Fewer than 50,000 generators always sum directly.
+  vtkSetMacro(Tolerance, double);
+  vtkGetMacro(Tolerance, double);
+  ///@}
+
+  ///@{
   /// EXACT (default) or PAPER: the exponential of both methods (they agree on method b's blades).
   vtkSetClampMacro(ExponentialRule, int, EXACT, PAPER);
   vtkGetMacro(ExponentialRule, int);
@@ -158,6 +167,7 @@ protected:
   double GeneratorsTranslation[3] = { 0.0, 0.0, 0.0 };
   double Falloff = 1.0;
   double Epsilon = 0.1;
+  double Tolerance = 0.0;
   int ExponentialRule = EXACT;
   int NumberOfTimeSteps = 0;
   int OutputPointsPrecision = DOUBLE_PRECISION;

@@ -4,6 +4,7 @@
 #include "cga/PointPairs.h"
 #include "cga/PointSandwich.h"
 
+#include "GeneratorTree.h"
 #include "PointPairKernelDispatch.h"
 #include "PointMapCore.h"
 
@@ -228,12 +229,57 @@ kernel::FieldArgs PointPairField::args(double strength, ExponentialRule rule) co
   return args;
 }
 
+bool PointPairField::setTolerance(double tolerance, std::size_t minimumGenerators)
+{
+  if (!(tolerance >= 0.0))
+  {
+    return false;
+  }
+  this->Tolerance = std::min(tolerance, maximumTolerance());
+  this->Tree.reset();
+  if (this->Tolerance > 0.0 && this->Count >= std::max<std::size_t>(1, minimumGenerators))
+  {
+    this->Tree = std::make_shared<const detail::GeneratorTree>(
+      this->Generators.data(), this->Count, this->Falloff, this->Epsilon, this->Tolerance);
+  }
+  return true;
+}
+
+std::size_t PointPairField::treeBytes() const
+{
+  return this->Tree ? this->Tree->bytes() : 0;
+}
+
+int PointPairField::treeDegree() const
+{
+  return this->Tree ? this->Tree->degree() : 0;
+}
+
 Bivector PointPairField::generatorAt(Vec3 p) const
 {
   const Vec3 relative = p - this->Center;
-  const double xyz[3] = { relative.x, relative.y, relative.z };
   Bivector b;
-  core::fieldBivector(this->args(1.0, ExponentialRule::Exact), xyz, 1.0, b.c.data());
+  if (this->Tree)
+  {
+    constexpr int L = kernel::kLanes;
+    double xyz[3 * L], lanes[Bivector::Count * L];
+    for (int l = 0; l < L; ++l)
+    {
+      xyz[l] = relative.x;
+      xyz[L + l] = relative.y;
+      xyz[2 * L + l] = relative.z;
+    }
+    this->Tree->evaluate(xyz, lanes);
+    for (int c = 0; c < Bivector::Count; ++c)
+    {
+      b[c] = lanes[c * L];
+    }
+  }
+  else
+  {
+    const double xyz[3] = { relative.x, relative.y, relative.z };
+    core::fieldBivector(this->args(1.0, ExponentialRule::Exact), xyz, 1.0, b.c.data());
+  }
   return translatedBivector(b, this->Center); // back in space
 }
 
@@ -251,6 +297,17 @@ bool PointPairField::map(Vec3 p, double strength, ExponentialRule rule, Vec3& ou
   if (this->Count == 0 || strength == 0.0)
   {
     out = p;
+    return true;
+  }
+  if (this->Tree)
+  {
+    const double in[3] = { p.x, p.y, p.z };
+    double image[3];
+    if (this->mapPointsOf(in, image, 1, strength, rule) != 0)
+    {
+      return false;
+    }
+    out = { image[0], image[1], image[2] };
     return true;
   }
   // core::mapPoint for one point: the block kernel instantiates the same template for its lanes.
@@ -302,8 +359,10 @@ std::size_t copyPoints(const In* in, Out* out, std::size_t count)
 
 // The points relative to the field's center c (as map()): each lane holds p - c, each image
 // comes back as p + (image - (p - c)), p itself where the map leaves it in place.
+// With a tree, B(p) of each block comes from it and the kernel maps with the given B.
 template <typename In, typename Out>
 std::size_t mapPointsInBlocks(const kernel::FieldArgs& args,
+                              const detail::GeneratorTree* tree,
                               Vec3 c,
                               const In* in,
                               Out* out,
@@ -311,9 +370,11 @@ std::size_t mapPointsInBlocks(const kernel::FieldArgs& args,
 {
   constexpr int L = kernel::kLanes;
   const kernel::MapBlock mapBlock = kernel::activeMapBlock();
+  const kernel::MapBlockWithBivector mapBlockWithBivector = kernel::activeMapBlockWithBivector();
   std::size_t unchanged = 0;
   alignas(64) double xyz[3 * L];
   alignas(64) double image[3 * L];
+  alignas(64) double bivectors[Bivector::Count * L];
   std::uint8_t mapped[L];
   for (std::size_t first = 0; first < count; first += L)
   {
@@ -326,7 +387,15 @@ std::size_t mapPointsInBlocks(const kernel::FieldArgs& args,
       xyz[L + l] = static_cast<double>(p[1]) - c.y;
       xyz[2 * L + l] = static_cast<double>(p[2]) - c.z;
     }
-    mapBlock(args, xyz, image, mapped);
+    if (tree)
+    {
+      tree->evaluate(xyz, bivectors);
+      mapBlockWithBivector(args, xyz, bivectors, image, mapped);
+    }
+    else
+    {
+      mapBlock(args, xyz, image, mapped);
+    }
     for (int l = 0; l < n; ++l)
     {
       Out* o = out + 3 * (first + l);
@@ -357,7 +426,8 @@ std::size_t PointPairField::mapPointsOf(
   {
     return copyPoints(in, out, count);
   }
-  return mapPointsInBlocks(this->args(strength, rule), this->Center, in, out, count);
+  return mapPointsInBlocks(
+    this->args(strength, rule), this->Tree.get(), this->Center, in, out, count);
 }
 
 std::size_t PointPairField::mapPoints(

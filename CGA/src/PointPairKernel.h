@@ -47,19 +47,27 @@ using MapBlock = void (*)(const FieldArgs& args,
                           double* image,
                           std::uint8_t* mapped);
 
-namespace baseline
-{
-void mapBlock(const FieldArgs&, const double*, double*, std::uint8_t*);
-}
+/// The same for given bivectors (the generator tree's B(p), GeneratorTree.h): bivectors holds
+/// Bivector::Count components of B(p) per lane, component-major (bivectors[c * kLanes + l]); the
+/// kernel maps with K = exp(-strength B(p)) and does not read args.generators.
+using MapBlockWithBivector = void (*)(const FieldArgs& args,
+                                      const double* xyz,
+                                      const double* bivectors,
+                                      double* image,
+                                      std::uint8_t* mapped);
+
+#define BOOSTED_KERNEL_DECLARE(isa)                                                              \
+  namespace isa                                                                                  \
+  {                                                                                              \
+  void mapBlock(const FieldArgs&, const double*, double*, std::uint8_t*);                        \
+  void mapBlockWithBivector(const FieldArgs&, const double*, const double*, double*,             \
+                            std::uint8_t*);                                                      \
+  }
+BOOSTED_KERNEL_DECLARE(baseline)
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
-namespace avx2
-{
-void mapBlock(const FieldArgs&, const double*, double*, std::uint8_t*);
-}
-namespace avx512
-{
-void mapBlock(const FieldArgs&, const double*, double*, std::uint8_t*);
-}
+BOOSTED_KERNEL_DECLARE(avx2)
+BOOSTED_KERNEL_DECLARE(avx512)
 #endif
+#undef BOOSTED_KERNEL_DECLARE
 } // namespace kernel
 } // namespace cga

@@ -16,6 +16,7 @@ struct Candidate
 {
   const char* name;
   MapBlock block;
+  MapBlockWithBivector blockWithBivector;
   bool (*supported)();
 };
 
@@ -39,10 +40,10 @@ bool hasAvx512()
 
 // Narrowest first.
 const Candidate kCandidates[] = {
-  { "baseline", &baseline::mapBlock, &always },
+  { "baseline", &baseline::mapBlock, &baseline::mapBlockWithBivector, &always },
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
-  { "avx2", &avx2::mapBlock, &hasAvx2 },
-  { "avx512", &avx512::mapBlock, &hasAvx512 },
+  { "avx2", &avx2::mapBlock, &avx2::mapBlockWithBivector, &hasAvx2 },
+  { "avx512", &avx512::mapBlock, &avx512::mapBlockWithBivector, &hasAvx512 },
 #endif
 };
 constexpr int kCandidateCount = sizeof(kCandidates) / sizeof(kCandidates[0]);
@@ -90,6 +91,11 @@ std::atomic<int>& choice()
 MapBlock activeMapBlock()
 {
   return kCandidates[choice().load(std::memory_order_relaxed)].block;
+}
+
+MapBlockWithBivector activeMapBlockWithBivector()
+{
+  return kCandidates[choice().load(std::memory_order_relaxed)].blockWithBivector;
 }
 
 std::vector<std::string> availableInstructionSets()

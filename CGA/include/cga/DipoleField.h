@@ -54,6 +54,11 @@ public:
   }
 
   std::size_t size() const { return this->Singles.size(); }
+
+  /// Method (a)'s far-field approximation (PointPairField::setTolerance: 0, the default, is the
+  /// direct sum; false for NaN or negative). Method (b) maps each generator alone, a sum of
+  /// displacements rather than of generators, and stays exact.
+  bool setTolerance(double tolerance) { return this->Summed.setTolerance(tolerance); }
   std::size_t skippedGenerators() const { return this->Summed.skippedGenerators(); }
 
   /// Method (a). Returns false (out = zero vector) where p is not finite or its image is at

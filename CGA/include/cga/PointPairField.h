@@ -20,6 +20,7 @@
 #include "cga/Vec3.h"
 
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,10 @@ namespace cga
 namespace kernel
 {
 struct FieldArgs;
+}
+namespace detail
+{
+class GeneratorTree;
 }
 
 /// Which exponential turns B(p) into K (docs/conventions.md section 2).
@@ -154,6 +159,24 @@ public:
   /// The center c the field computes relative to: the mean location of the kept generators.
   Vec3 center() const { return this->Center; }
 
+  /// The far-field approximation of B(p) (docs/conventions.md section 3 item 14): with a
+  /// tolerance t > 0, every B(p) that generatorAt, map and mapPoints compute is within
+  ///   t * A(p),  A(p) = sum_i |w_i G_i|_max / (k |p - x_i|^2 + eps),
+  /// of the direct sum in each component (|.|_max: the largest component), by a tree over the
+  /// generators whose remainder bound is enforced per block of points. 0 (the default) is the
+  /// direct sum. A tolerance above maximumTolerance() is used as maximumTolerance(). Returns false,
+  /// changing nothing, for a NaN or negative tolerance. Fields of fewer than `minimumGenerators`
+  /// generators (default treeMinimumGenerators(), the measured crossover below which the direct
+  /// sum is faster; tests pass smaller values) always sum directly. The tree takes O(M) memory
+  /// (treeBytes()).
+  bool setTolerance(double tolerance, std::size_t minimumGenerators = treeMinimumGenerators());
+  double tolerance() const { return this->Tolerance; }
+  static constexpr double maximumTolerance() { return 1e-2; }
+  static constexpr std::size_t treeMinimumGenerators() { return 50000; }
+  /// Bytes the tree holds (0 without one), and its expansion degree (0 without one).
+  std::size_t treeBytes() const;
+  int treeDegree() const;
+
   /// B(p).
   Bivector generatorAt(Vec3 p) const;
 
@@ -196,6 +219,8 @@ private:
   double Falloff = 1.0;
   double Epsilon = 1e-2;
   std::size_t Skipped = 0;
+  double Tolerance = 0.0;
+  std::shared_ptr<const detail::GeneratorTree> Tree; // null: the direct sum
 };
 
 /// The instruction sets of mapPoints()' block kernel that this build holds and this CPU runs,

@@ -81,6 +81,41 @@ class DipoleFieldSourceTest(unittest.TestCase):
             self.assertAlmostEqual(got[c], expected[c], delta=1e-12)
         self.assertGreater(math.sqrt(sum(t * t for t in got)), 0.01)
 
+    def test_tolerance_approximates_method_a_only(self):
+        """Tolerance (the generator tree of method a): 0 by default; a tolerance moves method a's
+        displacements by little, leaves method b's bit for bit; a negative one is an error."""
+        import random
+        rng = random.Random(5)
+        arrays = {}
+        for tolerance in (0.0, 1e-3, -1.0):
+            source = vtkDipoleFieldSource()
+            events = common.ErrorRecorder(source)
+            source.RemoveAllGenerators()
+            for _ in range(50000):  # the tree's crossover (treeMinimumGenerators)
+                source.AddGenerator(rng.uniform(-2, 2), rng.uniform(-2, 2), 0.0,
+                                    rng.uniform(-1, 1), rng.uniform(-1, 1), 0.0, 1e-4)
+            rng.seed(5)
+            self.assertEqual(source.GetTolerance(), 0.0)
+            source.SetTolerance(tolerance)
+            source.SetDimensions(5, 5, 1)
+            source.Update()
+            output = source.GetOutput()
+            if tolerance < 0:
+                self.assertEqual(output.GetNumberOfPoints(), 0)
+                self.assertEqual(len(events.messages), 1)
+                continue
+            arrays[tolerance] = [
+                [output.GetPointData().GetArray(name).GetTuple3(i)
+                 for i in range(output.GetNumberOfPoints())]
+                for name in ("DisplacementSummedGenerators", "DisplacementSummedDisplacements")]
+        exact, approximate = arrays[0.0], arrays[1e-3]
+        self.assertEqual(exact[1], approximate[1])
+        largest = max(math.dist(e, (0, 0, 0)) for e in exact[0])
+        error = max(math.dist(a, e) for a, e in zip(approximate[0], exact[0]))
+        self.assertGreater(largest, 0.01)
+        self.assertGreater(error, 0.0)
+        self.assertLess(error, 1e-3 * largest)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -1,0 +1,527 @@
+#include "GeneratorTree.h"
+
+#include "cga/Compact.h"
+
+#include <algorithm>
+#include <cmath>
+
+// The two loops over lanes are compiled for AVX-512, AVX2 and the baseline, chosen at load time
+// (GCC's function multiversioning), as the block kernel is (PointPairKernel.h).
+#if defined(BOOSTED_KERNEL_X86_DISPATCH) && defined(__GNUC__) && !defined(__clang__)
+#define BOOSTED_TREE_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#else
+#define BOOSTED_TREE_CLONES
+#endif
+
+namespace cga
+{
+namespace detail
+{
+namespace
+{
+constexpr int L = kernel::kLanes;
+constexpr int kStride = kernel::kGeneratorStride;
+constexpr int kComponents = Bivector::Count;
+
+// The degree-P remainder bound times the share factor (1+q)^2 (GeneratorTree.h).
+double openingBound(int degree, double q)
+{
+  const double p = static_cast<double>(degree);
+  return std::pow(q, p + 1.0) * ((p + 2.0) - (p + 1.0) * q) / ((1.0 - q) * (1.0 - q)) *
+    (1.0 + q) * (1.0 + q);
+}
+
+// The largest q with openingBound(degree, q) <= tolerance (the bound grows with q on [0, 1)).
+double largestOpening(int degree, double tolerance)
+{
+  double low = 0.0, high = 1.0;
+  for (int i = 0; i < 80; ++i)
+  {
+    const double mid = 0.5 * (low + high);
+    (openingBound(degree, mid) <= tolerance ? low : high) = mid;
+  }
+  return low;
+}
+
+double binomial(int n, int k)
+{
+  double r = 1.0;
+  for (int i = 1; i <= k; ++i)
+  {
+    r = r * (n - k + i) / i;
+  }
+  return r;
+}
+
+double factorial(int n)
+{
+  double r = 1.0;
+  for (int i = 2; i <= n; ++i)
+  {
+    r *= i;
+  }
+  return r;
+}
+
+constexpr int monomialCount(int degree)
+{
+  return (degree + 1) * (degree + 2) * (degree + 3) / 6;
+}
+
+constexpr int kMaxMoments = monomialCount(GeneratorTree::kMaxDegree);
+
+// The degree whose expected work, (moments) / limit^2.5, is least: a higher degree opens fewer
+// nodes but costs more per node (the exponent between the 2-D and 3-D node counts).
+int chooseDegree(double tolerance)
+{
+  int best = 2;
+  double bestCost = HUGE_VAL;
+  for (int degree = 2; degree <= GeneratorTree::kMaxDegree; degree += 2)
+  {
+    const double limit = largestOpening(degree, tolerance);
+    const double cost = monomialCount(degree) / std::pow(limit, 2.5);
+    if (cost < bestCost)
+    {
+      best = degree;
+      bestCost = cost;
+    }
+  }
+  return best;
+}
+} // namespace
+
+GeneratorTree::GeneratorTree(const double* generators,
+                             std::size_t count,
+                             double falloff,
+                             double epsilon,
+                             double tolerance)
+  : Falloff(falloff)
+  , Epsilon(epsilon)
+{
+  this->Degree = chooseDegree(tolerance);
+  this->QLimit = largestOpening(this->Degree, tolerance);
+  const int P = this->Degree;
+  // Monomials in graded order, each one power above a lower one.
+  this->MonomialIndex.assign(static_cast<std::size_t>((P + 1) * (P + 1) * (P + 1)), -1);
+  auto at = [P](int a, int b, int c) { return (a * (P + 1) + b) * (P + 1) + c; };
+  for (int n = 0; n <= P; ++n)
+  {
+    for (int a = n; a >= 0; --a)
+    {
+      for (int b = n - a; b >= 0; --b)
+      {
+        const int c = n - a - b;
+        const int index = static_cast<int>(this->MonomialPowers.size());
+        this->MonomialIndex[static_cast<std::size_t>(at(a, b, c))] = index;
+        this->MonomialPowers.push_back({ a, b, c });
+        this->MonomialDegree.push_back(n);
+        const int axis = a > 0 ? 0 : (b > 0 ? 1 : 2);
+        this->MonomialAxis.push_back(axis);
+        this->MonomialParent.push_back(
+          n == 0 ? -1
+                 : this->MonomialIndex[static_cast<std::size_t>(
+                     at(a - (axis == 0), b - (axis == 1), c - (axis == 2)))]);
+      }
+    }
+  }
+  this->MomentCount = static_cast<int>(this->MonomialPowers.size());
+  // e_b(u) = sum over g with 2g <= b of coef(b - 2g, |g|) |g|!/g! u^(b - 2g), with
+  // coef(a, l) = |a|!/a! C(|a| + l, l) 2^|a| (-1)^l (docs/conventions.md section 3 item 14).
+  for (int moment = 0; moment < this->MomentCount; ++moment)
+  {
+    const auto& beta = this->MonomialPowers[static_cast<std::size_t>(moment)];
+    for (int g0 = 0; 2 * g0 <= beta[0]; ++g0)
+    {
+      for (int g1 = 0; 2 * g1 <= beta[1]; ++g1)
+      {
+        for (int g2 = 0; 2 * g2 <= beta[2]; ++g2)
+        {
+          const int a0 = beta[0] - 2 * g0, a1 = beta[1] - 2 * g1, a2 = beta[2] - 2 * g2;
+          const int m = a0 + a1 + a2, l = g0 + g1 + g2;
+          const double coefficient = factorial(m) /
+              (factorial(a0) * factorial(a1) * factorial(a2)) * binomial(m + l, l) *
+              std::ldexp(1.0, m) * (l % 2 ? -1.0 : 1.0) * factorial(l) /
+              (factorial(g0) * factorial(g1) * factorial(g2));
+          this->Terms.push_back(
+            { moment, this->MonomialIndex[static_cast<std::size_t>(at(a0, a1, a2))], coefficient });
+        }
+      }
+    }
+  }
+  // A node is summed directly below (terms + 11 moments)/20 generators: of the two settings
+  // measured with the bench's Many/* rows, this one ((terms + 24 moments)/10 the other) was the
+  // faster at M = 100,000, where the tree is used.
+  this->DirectBelow =
+    static_cast<std::size_t>((this->Terms.size() + 11 * this->MomentCount) / 20);
+
+  std::vector<std::size_t> order(count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    order[i] = i;
+  }
+  this->Generators.assign(generators, generators + count * kStride);
+  if (count > 0)
+  {
+    this->build(0, count, order, 0);
+  }
+  std::vector<double> permuted(count * kStride);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    std::copy_n(generators + order[i] * kStride, kStride, permuted.data() + i * kStride);
+  }
+  this->Generators.swap(permuted);
+  if (count > 0)
+  {
+    this->computeMoments(0);
+  }
+}
+
+// Nodes [first, first + count) of `order`, split at the median of the widest extent.
+int GeneratorTree::build(std::size_t first, std::size_t count, std::vector<std::size_t>& order, int depth)
+{
+  const int index = static_cast<int>(this->Nodes.size());
+  this->Nodes.emplace_back();
+  double low[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, high[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+  const double* g = this->Generators.data();
+  for (std::size_t i = first; i < first + count; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      low[k] = std::min(low[k], g[order[i] * kStride + k]);
+      high[k] = std::max(high[k], g[order[i] * kStride + k]);
+    }
+  }
+  Node node;
+  node.first = first;
+  node.count = count;
+  int axis = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    node.center[k] = 0.5 * low[k] + 0.5 * high[k];
+    if (high[k] - low[k] > high[axis] - low[axis])
+    {
+      axis = k;
+    }
+  }
+  for (std::size_t i = first; i < first + count; ++i)
+  {
+    const double* x = g + order[i] * kStride;
+    const double dx = x[0] - node.center[0], dy = x[1] - node.center[1], dz = x[2] - node.center[2];
+    node.radius = std::max(node.radius, std::sqrt(dx * dx + dy * dy + dz * dz));
+  }
+  // Coincident generators stay in one leaf (radius 0: its expansion is exact).
+  if (count > kLeafSize && high[axis] > low[axis] && depth < 100)
+  {
+    const std::size_t half = count / 2;
+    std::nth_element(order.begin() + static_cast<long>(first),
+                     order.begin() + static_cast<long>(first + half),
+                     order.begin() + static_cast<long>(first + count),
+                     [g, axis](std::size_t a, std::size_t b) {
+                       return g[a * kStride + axis] < g[b * kStride + axis];
+                     });
+    node.children[0] = this->build(first, half, order, depth + 1);
+    node.children[1] = this->build(first + half, count - half, order, depth + 1);
+  }
+  this->Nodes[static_cast<std::size_t>(index)] = node;
+  return index;
+}
+
+// The moments of nodes of at least DirectBelow generators: from the children's (exact shift of
+// the polynomials) when both have them, else from the generators.
+bool GeneratorTree::computeMoments(int index)
+{
+  Node node = this->Nodes[static_cast<std::size_t>(index)];
+  bool childrenHaveMoments = node.children[0] >= 0;
+  for (int child : node.children)
+  {
+    if (child >= 0)
+    {
+      childrenHaveMoments = this->computeMoments(child) && childrenHaveMoments;
+    }
+  }
+  if (node.count < this->DirectBelow)
+  {
+    return false;
+  }
+  const int M = this->MomentCount;
+  const std::size_t offset = this->Moments.size();
+  this->Moments.resize(offset + static_cast<std::size_t>(M * kComponents), 0.0);
+  this->Nodes[static_cast<std::size_t>(index)].moments = static_cast<long>(offset);
+  const double scale = node.radius > 0.0 ? node.radius : 1.0;
+  std::vector<double> power(static_cast<std::size_t>(M));
+  auto powers = [&](const double* y) {
+    power[0] = 1.0;
+    for (int m = 1; m < M; ++m)
+    {
+      power[static_cast<std::size_t>(m)] =
+        power[static_cast<std::size_t>(this->MonomialParent[static_cast<std::size_t>(m)])] *
+        y[this->MonomialAxis[static_cast<std::size_t>(m)]];
+    }
+  };
+  if (!childrenHaveMoments)
+  {
+    for (std::size_t i = node.first; i < node.first + node.count; ++i)
+    {
+      const double* g = this->Generators.data() + i * kStride;
+      const double y[3] = { (g[0] - node.center[0]) / scale,
+                            (g[1] - node.center[1]) / scale,
+                            (g[2] - node.center[2]) / scale };
+      powers(y);
+      for (int m = 0; m < M; ++m)
+      {
+        double* mu = this->Moments.data() + offset + static_cast<std::size_t>(m * kComponents);
+        for (int c = 0; c < kComponents; ++c)
+        {
+          mu[c] += power[static_cast<std::size_t>(m)] * g[3 + c];
+        }
+      }
+    }
+    return true;
+  }
+  // yhat_parent = lambda yhat_child + delta: mu_b += sum_{g <= b} C(b, g) lambda^|g| delta^(b-g) mu_g.
+  const int P = this->Degree;
+  auto at = [P](int a, int b, int c) { return (a * (P + 1) + b) * (P + 1) + c; };
+  double binomials[kMaxDegree + 1][kMaxDegree + 1];
+  for (int n = 0; n <= P; ++n)
+  {
+    for (int k = 0; k <= n; ++k)
+    {
+      binomials[n][k] = binomial(n, k);
+    }
+  }
+  for (int child : node.children)
+  {
+    const Node& c = this->Nodes[static_cast<std::size_t>(child)];
+    const double childScale = c.radius > 0.0 ? c.radius : 1.0;
+    const double lambda = childScale / scale;
+    const double delta[3] = { (c.center[0] - node.center[0]) / scale,
+                              (c.center[1] - node.center[1]) / scale,
+                              (c.center[2] - node.center[2]) / scale };
+    powers(delta);
+    double lambdaPower[kMaxDegree + 1];
+    lambdaPower[0] = 1.0;
+    for (int n = 1; n <= P; ++n)
+    {
+      lambdaPower[n] = lambdaPower[n - 1] * lambda;
+    }
+    const double* childMoments = this->Moments.data() + c.moments;
+    double* mu = this->Moments.data() + offset;
+    for (int b = 0; b < M; ++b)
+    {
+      const auto& beta = this->MonomialPowers[static_cast<std::size_t>(b)];
+      for (int g0 = 0; g0 <= beta[0]; ++g0)
+      {
+        for (int g1 = 0; g1 <= beta[1]; ++g1)
+        {
+          for (int g2 = 0; g2 <= beta[2]; ++g2)
+          {
+            const int gamma = this->MonomialIndex[static_cast<std::size_t>(at(g0, g1, g2))];
+            const int rest = this->MonomialIndex[static_cast<std::size_t>(
+              at(beta[0] - g0, beta[1] - g1, beta[2] - g2))];
+            const double factor = binomials[beta[0]][g0] * binomials[beta[1]][g1] *
+              binomials[beta[2]][g2] * lambdaPower[g0 + g1 + g2] *
+              power[static_cast<std::size_t>(rest)];
+            for (int k = 0; k < kComponents; ++k)
+            {
+              mu[b * kComponents + k] += factor * childMoments[gamma * kComponents + k];
+            }
+          }
+        }
+      }
+    }
+  }
+  return true;
+}
+
+// sums[c * L + l] += the node's expansion at lane l's point (p: x[L], y[L], z[L]). The lanes are
+// the inner loops, so that they vectorize (compiled for the CPU's widest vectors: BOOSTED_TREE_CLONES).
+BOOSTED_TREE_CLONES
+void GeneratorTree::addMultipole(const Node& node, const double* moments, const double* p, double* sums) const
+{
+  const int M = this->MomentCount;
+  alignas(64) double u[3][L], q[L], scale[L];
+  alignas(64) double power[kMaxMoments][L], e[kMaxMoments][L];
+  for (int l = 0; l < L; ++l)
+  {
+    const double d0 = p[l] - node.center[0], d1 = p[L + l] - node.center[1],
+                 d2 = p[2 * L + l] - node.center[2];
+    const double D = this->Falloff * (d0 * d0 + d1 * d1 + d2 * d2) + this->Epsilon;
+    const double rootKappa = std::sqrt(this->Falloff / D);
+    q[l] = node.radius * rootKappa; // 0 for a node of coincident generators (only mu_0 != 0)
+    u[0][l] = rootKappa * d0;
+    u[1][l] = rootKappa * d1;
+    u[2][l] = rootKappa * d2;
+    scale[l] = 1.0 / D;
+    power[0][l] = 1.0;
+  }
+  for (int m = 1; m < M; ++m)
+  {
+    const double* parent = power[this->MonomialParent[static_cast<std::size_t>(m)]];
+    const double* axis = u[this->MonomialAxis[static_cast<std::size_t>(m)]];
+    for (int l = 0; l < L; ++l)
+    {
+      power[m][l] = parent[l] * axis[l];
+    }
+  }
+  for (int m = 0; m < M; ++m)
+  {
+    for (int l = 0; l < L; ++l)
+    {
+      e[m][l] = 0.0;
+    }
+  }
+  for (const Term& term : this->Terms)
+  {
+    const double* from = power[term.monomial];
+    double* to = e[term.moment];
+    for (int l = 0; l < L; ++l)
+    {
+      to[l] += term.coefficient * from[l];
+    }
+  }
+  // Each moment's coefficient times q^|b| / D.
+  int degree = 0;
+  double out[kComponents][L] = {};
+  for (int m = 0; m < M; ++m)
+  {
+    if (this->MonomialDegree[static_cast<std::size_t>(m)] != degree)
+    {
+      degree = this->MonomialDegree[static_cast<std::size_t>(m)];
+      for (int l = 0; l < L; ++l)
+      {
+        scale[l] *= q[l];
+      }
+    }
+    const double* mu = moments + m * kComponents;
+    for (int c = 0; c < kComponents; ++c)
+    {
+      for (int l = 0; l < L; ++l)
+      {
+        out[c][l] += e[m][l] * scale[l] * mu[c];
+      }
+    }
+  }
+  for (int c = 0; c < kComponents; ++c)
+  {
+    for (int l = 0; l < L; ++l)
+    {
+      sums[c * L + l] += out[c][l];
+    }
+  }
+}
+
+BOOSTED_TREE_CLONES
+void GeneratorTree::addDirect(const Node& node, const double* p, double* sums) const
+{
+  const double falloff = this->Falloff, epsilon = this->Epsilon;
+  for (std::size_t i = node.first; i < node.first + node.count; ++i)
+  {
+    const double* g = this->Generators.data() + i * kStride;
+    double factor[L];
+    for (int l = 0; l < L; ++l)
+    {
+      const double dx = p[l] - g[0], dy = p[L + l] - g[1], dz = p[2 * L + l] - g[2];
+      factor[l] = 1.0 / (falloff * (dx * dx + dy * dy + dz * dz) + epsilon);
+    }
+    for (int c = 0; c < kComponents; ++c)
+    {
+      for (int l = 0; l < L; ++l)
+      {
+        sums[c * L + l] += g[3 + c] * factor[l];
+      }
+    }
+  }
+}
+
+void GeneratorTree::evaluate(const double* xyz, double* bivectors) const
+{
+  bool finite[L];
+  double center[3] = { 0.0, 0.0, 0.0 };
+  int finiteCount = 0;
+  for (int l = 0; l < L; ++l)
+  {
+    finite[l] = std::isfinite(xyz[l]) && std::isfinite(xyz[L + l]) && std::isfinite(xyz[2 * L + l]);
+    if (finite[l])
+    {
+      ++finiteCount;
+      for (int k = 0; k < 3; ++k)
+      {
+        center[k] += xyz[k * L + l];
+      }
+    }
+  }
+  std::fill_n(bivectors, kComponents * L, 0.0);
+  if (finiteCount == 0 || this->Nodes.empty())
+  {
+    return;
+  }
+  for (double& c : center)
+  {
+    c /= finiteCount;
+  }
+  // The lanes' points, a non-finite one replaced by the block's center (its result is dropped).
+  double p[3 * L];
+  double blockRadius = 0.0;
+  for (int l = 0; l < L; ++l)
+  {
+    double distance2 = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      p[k * L + l] = finite[l] ? xyz[k * L + l] : center[k];
+      const double d = p[k * L + l] - center[k];
+      distance2 += d * d;
+    }
+    blockRadius = std::max(blockRadius, std::sqrt(distance2));
+  }
+  int stack[256];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0)
+  {
+    const Node& node = this->Nodes[static_cast<std::size_t>(stack[--top])];
+    if (node.moments < 0)
+    {
+      this->addDirect(node, p, bivectors);
+      continue;
+    }
+    const double dx = center[0] - node.center[0], dy = center[1] - node.center[1],
+                 dz = center[2] - node.center[2];
+    const double nearest = std::max(0.0, std::sqrt(dx * dx + dy * dy + dz * dz) - blockRadius);
+    const double q = node.radius > 0.0
+      ? node.radius * std::sqrt(this->Falloff / (this->Falloff * nearest * nearest + this->Epsilon))
+      : 0.0;
+    if (q <= this->QLimit)
+    {
+      this->addMultipole(node, this->Moments.data() + node.moments, p, bivectors);
+    }
+    else if (node.children[0] < 0)
+    {
+      this->addDirect(node, p, bivectors);
+    }
+    else
+    {
+      stack[top++] = node.children[1];
+      stack[top++] = node.children[0];
+    }
+  }
+  for (int l = 0; l < L; ++l)
+  {
+    if (!finite[l])
+    {
+      for (int c = 0; c < kComponents; ++c)
+      {
+        bivectors[c * L + l] = 0.0;
+      }
+    }
+  }
+}
+
+std::size_t GeneratorTree::bytes() const
+{
+  return this->Generators.capacity() * sizeof(double) + this->Nodes.capacity() * sizeof(Node) +
+    this->Moments.capacity() * sizeof(double) + this->Terms.capacity() * sizeof(Term) +
+    this->MonomialPowers.capacity() * sizeof(std::array<int, 3>) +
+    4 * this->MonomialIndex.capacity() * sizeof(int);
+}
+} // namespace detail
+} // namespace cga

@@ -1,0 +1,100 @@
+"""The filter's Tolerance (the generator tree, docs/conventions.md section 3 item 14) from Python:
+0 is the default and the direct sum; a tolerance moves the images by little and not at all below
+the tree's crossover; NaN or negative is an error and an empty output; a huge one is the cap.
+Plain Python, no numpy.
+
+    PYTHONPATH=<build>/lib/python3.11/site-packages python3 test_point_pair_deformation_tolerance.py -v
+"""
+import math
+import random
+import unittest
+
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkFiltersSources import vtkPlaneSource
+
+from boostedsurfaces import vtkPointPairDeformationFilter
+
+import python_test_common as common
+
+# cga::PointPairField::treeMinimumGenerators(): fewer generators always sum directly.
+TREE_FROM = 50000
+
+
+def generator_cloud(count, seed=20261202):
+    """count point pairs over the plane's square, weights scaled so that B stays moderate."""
+    rng = random.Random(seed)
+    data = vtkPolyData()
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    directions = vtkDoubleArray()
+    directions.SetName("Direction")
+    directions.SetNumberOfComponents(3)
+    for _ in range(count):
+        points.InsertNextPoint(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-0.3, 0.3))
+        directions.InsertNextTuple3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1))
+    data.SetPoints(points)
+    data.GetPointData().AddArray(directions)
+    return data
+
+
+class ToleranceTest(unittest.TestCase):
+    def deform(self, generators, tolerance=None):
+        plane = vtkPlaneSource()
+        plane.SetOrigin(-2, -2, 0)
+        plane.SetPoint1(2, -2, 0)
+        plane.SetPoint2(-2, 2, 0)
+        plane.SetResolution(40, 40)
+        plane.Update()
+        deformation = vtkPointPairDeformationFilter()
+        deformation.SetInputConnection(plane.GetOutputPort())
+        deformation.SetGeneratorsData(generators)
+        deformation.SetStrength(16.0 / generators.GetNumberOfPoints())
+        deformation.SetEpsilon(0.05)
+        if tolerance is not None:
+            deformation.SetTolerance(tolerance)
+        self.events = common.ErrorRecorder(deformation)
+        deformation.Update()
+        output = deformation.GetOutput()
+        source = plane.GetOutput()
+        images = [output.GetPoint(i) for i in range(output.GetNumberOfPoints())]
+        originals = [source.GetPoint(i) for i in range(source.GetNumberOfPoints())]
+        return images, originals
+
+    def test_default_is_the_direct_sum(self):
+        self.assertEqual(vtkPointPairDeformationFilter().GetTolerance(), 0.0)
+        generators = generator_cloud(600)
+        self.assertEqual(self.deform(generators)[0], self.deform(generators, 0.0)[0])
+
+    def test_a_tolerance_approximates_closely(self):
+        generators = generator_cloud(TREE_FROM)
+        exact, originals = self.deform(generators, 0.0)
+        approximate, _ = self.deform(generators, 1e-3)
+        self.assertEqual(len(approximate), len(exact))
+        largest_displacement = max(math.dist(e, p) for e, p in zip(exact, originals))
+        largest_error = max(math.dist(a, e) for a, e in zip(approximate, exact))
+        self.assertGreater(largest_displacement, 0.01)
+        self.assertGreater(largest_error, 0.0)  # the tree was used
+        # The core tests check the a-priori bound on B; here the images, measured: well below.
+        self.assertLess(largest_error, 1e-3 * largest_displacement)
+
+    def test_few_generators_sum_directly(self):
+        generators = generator_cloud(TREE_FROM - 1)
+        self.assertEqual(self.deform(generators, 0.0)[0], self.deform(generators, 1e-2)[0])
+
+    def test_huge_tolerance_is_the_cap(self):
+        generators = generator_cloud(TREE_FROM)
+        self.assertEqual(self.deform(generators, 1e300)[0], self.deform(generators, 0.01)[0])
+        self.assertEqual(self.events.messages, [])
+
+    def test_nan_or_negative_tolerance_is_an_error(self):
+        generators = generator_cloud(300)
+        for bad in (float("nan"), -1e-3):
+            images, _ = self.deform(generators, bad)
+            self.assertEqual(images, [])
+            self.assertEqual(len(self.events.messages), 1)
+            self.assertIn("Tolerance", self.events.messages[0])
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,141 @@
+// Many generators: the direct sum against the generator tree (PointPairField::setTolerance) on
+// the shared mesh, Many/Direct/M:<M> and Many/Tree/M:<M>/digits:<d> (Tolerance 10^-d), one thread,
+// the Exact rule. Both rows of one M map the same points, evenly spaced whole rows of the mesh
+// so that the direct sum takes about kPairs point-generator pairs per iteration at most (all
+// 1,000,000 points up to M = 500), and report the rate per point ("points timed": how many).
+// The tree rows build the tree at every M (setTolerance's crossover, treeMinimumGenerators(), is
+// where the two rows cross). The weights are scaled by 16/M, so that B stays of the size of the M = 16 field at every M.
+// The tree rows also report, against the direct sum on the same points:
+//   "error/displacement": the largest image error over the largest displacement, the target;
+//   "B error/A": the largest |B_tree - B|_max / A(p), which the tolerance bounds (on 200 points);
+// and "tree MB" (the tree's memory) and "degree" (its expansion's).
+#include "BenchSupport.h"
+
+#include "cga/PointPairs.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace
+{
+using namespace boostedbench;
+
+constexpr double kPairs = 5e8;
+
+std::vector<cga::PointPairGenerator> scaledGenerators(int count)
+{
+  auto generators = benchmarkGenerators(count);
+  for (cga::PointPairGenerator& g : generators)
+  {
+    g.weight *= 16.0 / count;
+  }
+  return generators;
+}
+
+// About 1/stride of the mesh's points as whole rows of it, evenly spaced: blocks of consecutive
+// points keep the full mesh's size, which the tree's acceptance test depends on.
+std::vector<double> pointSubset(std::size_t stride)
+{
+  const double* all = benchmarkPoints();
+  const std::size_t rows = std::max<std::size_t>(1, kMeshSide / stride);
+  std::vector<double> subset;
+  for (std::size_t r = 0; r < rows; ++r)
+  {
+    const std::size_t row = r * kMeshSide / rows;
+    subset.insert(subset.end(), all + 3 * row * kMeshSide, all + 3 * (row + 1) * kMeshSide);
+  }
+  return subset;
+}
+
+// The points both rows of a given M time: every stride-th point of the mesh, at most kPairs
+// point-generator pairs of the direct sum.
+std::vector<double> timedPoints(int count)
+{
+  return pointSubset(std::max<std::size_t>(
+    1, static_cast<std::size_t>(std::ceil(kMeshPoints * static_cast<double>(count) / kPairs))));
+}
+
+void ManyDirect(benchmark::State& state)
+{
+  const int count = static_cast<int>(state.range(0));
+  const cga::PointPairField field(scaledGenerators(count), kFalloff, kEpsilon);
+  const std::vector<double> points = timedPoints(count);
+  const std::size_t n = points.size() / 3;
+  std::vector<double> out(points.size());
+  for (auto _ : state)
+  {
+    field.mapPoints(points.data(), out.data(), n, kStrength, cga::ExponentialRule::Exact);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.counters["points timed"] = static_cast<double>(n);
+  reportPoints(state, n);
+}
+
+void ManyTree(benchmark::State& state)
+{
+  const int count = static_cast<int>(state.range(0));
+  const double tolerance = std::pow(10.0, -static_cast<double>(state.range(1)));
+  const auto generators = scaledGenerators(count);
+  const cga::PointPairField direct(generators, kFalloff, kEpsilon);
+  cga::PointPairField tree(generators, kFalloff, kEpsilon);
+  tree.setTolerance(tolerance, 1); // the tree at every M, below the crossover too
+  const std::vector<double> points = timedPoints(count);
+  const std::size_t n = points.size() / 3;
+  std::vector<double> out(points.size());
+  for (auto _ : state)
+  {
+    tree.mapPoints(points.data(), out.data(), n, kStrength, cga::ExponentialRule::Exact);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.counters["points timed"] = static_cast<double>(n);
+  reportPoints(state, n);
+  // The error against the direct sum on the same points, outside the timing.
+  std::vector<double> exact(points.size());
+  direct.mapPoints(points.data(), exact.data(), n, kStrength, cga::ExponentialRule::Exact);
+  double largestDisplacement = 0.0, largestError = 0.0, largestBError = 0.0;
+  const cga::Vec3 c = direct.center();
+  const std::size_t massStride = std::max<std::size_t>(1, n / 200); // A(p) costs M products
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const cga::Vec3 p{ points[3 * i], points[3 * i + 1], points[3 * i + 2] };
+    const double* e = exact.data() + 3 * i;
+    const double* a = out.data() + 3 * i;
+    largestDisplacement = std::max(largestDisplacement, std::hypot(e[0] - p.x, e[1] - p.y, e[2] - p.z));
+    largestError = std::max(largestError, std::hypot(a[0] - e[0], a[1] - e[1], a[2] - e[2]));
+    if (i % massStride == 0)
+    {
+      double mass = 0.0;
+      for (const cga::PointPairGenerator& g : generators)
+      {
+        const cga::Vec3 d = p - g.location;
+        const cga::Bivector weighted = cga::translatedBivector(
+          g.weight * cga::nullPointPairCompact(g.location, g.direction), -1.0 * c);
+        mass += weighted.maxAbs() / (kFalloff * cga::dot(d, d) + kEpsilon);
+      }
+      const cga::Bivector difference = cga::translatedBivector(tree.generatorAt(p), -1.0 * c) -
+        cga::translatedBivector(direct.generatorAt(p), -1.0 * c);
+      largestBError = std::max(largestBError, difference.maxAbs() / mass);
+    }
+  }
+  state.counters["error/displacement"] = largestError / largestDisplacement;
+  state.counters["B error/A"] = largestBError;
+  state.counters["tree MB"] = static_cast<double>(tree.treeBytes()) / 1e6;
+  state.counters["degree"] = tree.treeDegree();
+}
+
+const std::vector<long> kManyCounts = { 256, 1000, 3000, 10000, 30000, 100000 };
+
+BENCHMARK(ManyDirect)
+  ->Name("Many/Direct")
+  ->ArgsProduct({ kManyCounts })
+  ->ArgNames({ "M" })
+  ->Apply(timedPerPoint);
+BENCHMARK(ManyTree)
+  ->Name("Many/Tree")
+  ->ArgsProduct({ kManyCounts, { 3, 6 } })
+  ->ArgNames({ "M", "digits" })
+  ->Apply(timedPerPoint);
+} // namespace
