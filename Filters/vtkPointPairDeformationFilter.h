@@ -33,6 +33,10 @@
  * Output: the input's topology, cells and arrays with moved points, plus the point vector
  * "Displacement" = p' - p. Normals are dropped (they would be wrong once the points moved).
  * vtkImageData and vtkRectilinearGrid inputs give a vtkStructuredGrid, as vtkWarpVector does.
+ * Output 1, "Generators" (vtkBoostedGeneratorGlyphs, for glyphs): one vertex per generator as
+ * used (the list's rows, the selected one at SelectedGeneratorLocation, then the Generators
+ * input's points), with point arrays "Direction", "Weight", "Kind" and "Pitch"; on piece 0 only,
+ * and empty after an error. It is in the Generators input's format, so it can be fed back there.
  *
  * Bad input: points that are NaN or infinite pass through unchanged (Displacement 0) and are
  * counted in one warning; so are points whose image would be at infinity. Generators with a zero
@@ -192,6 +196,7 @@ protected:
   ~vtkPointPairDeformationFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int ExecuteInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int ComputeInputUpdateExtent(
@@ -215,8 +220,9 @@ protected:
 
 private:
   /// RequestData's allocating part, after the validation and the memory estimate: the explicit
-  /// copy of an image or rectilinear grid, the output points and Displacement, the deformation.
-  void Deform(
+  /// copy of an image or rectilinear grid, the output points and Displacement, the deformation;
+  /// false after an abort or an error (the output then empty).
+  bool Deform(
     vtkDataSet* input, const cga::PointPairField& field, double strength, vtkPointSet* output);
 
   vtkPointPairDeformationFilter(const vtkPointPairDeformationFilter&) = delete;
