@@ -496,6 +496,10 @@ int vtkPointPairDeformationFilter::RequestData(
       vtkErrorMacro(<< problem);
       return 1; // the output stays empty
     }
+    if (i == this->SelectedGenerator && this->AimSelectedGenerator)
+    {
+      generators[i].direction = cga::toVec3(this->SelectedGeneratorTip) - cga::toVec3(location);
+    }
   }
   if (vtkPointSet* generatorSet = vtkPointSet::GetData(inputVector[1]))
   {
@@ -626,6 +630,9 @@ void vtkPointPairDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SelectedGenerator: " << this->SelectedGenerator << "\n";
   os << indent << "SelectedGeneratorLocation: (" << this->SelectedGeneratorLocation[0] << ", "
      << this->SelectedGeneratorLocation[1] << ", " << this->SelectedGeneratorLocation[2] << ")\n";
+  os << indent << "AimSelectedGenerator: " << this->AimSelectedGenerator << "\n";
+  os << indent << "SelectedGeneratorTip: (" << this->SelectedGeneratorTip[0] << ", "
+     << this->SelectedGeneratorTip[1] << ", " << this->SelectedGeneratorTip[2] << ")\n";
   os << indent << "GeneratorDirectionArrayName: "
      << (this->GeneratorDirectionArrayName ? this->GeneratorDirectionArrayName : "(none)") << "\n";
   os << indent << "GeneratorWeightArrayName: "

@@ -120,6 +120,18 @@ public:
   ///@}
 
   ///@{
+  /// Aiming the selected generator (ParaView's line widget from its location to its tip): when
+  /// AimSelectedGenerator is on (default off) and SelectedGenerator is a valid index, that row's
+  /// direction is replaced by SelectedGeneratorTip - SelectedGeneratorLocation (its length, as a
+  /// row's direction's, multiplies the weight). Default tip (0, 0, 1).
+  vtkSetMacro(AimSelectedGenerator, bool);
+  vtkGetMacro(AimSelectedGenerator, bool);
+  vtkBooleanMacro(AimSelectedGenerator, bool);
+  vtkSetVector3Macro(SelectedGeneratorTip, double);
+  vtkGetVector3Macro(SelectedGeneratorTip, double);
+  ///@}
+
+  ///@{
   /// Names of the point arrays of the Generators input: directions (3 components, default
   /// "Direction") and weights (1 component, default "Weight", read only when
   /// UseGeneratorWeightArray is on; otherwise every weight is 1).
@@ -206,6 +218,8 @@ protected:
   std::unique_ptr<vtkBoostedRowList> Generators;
   int SelectedGenerator = -1;
   double SelectedGeneratorLocation[3] = { 0.0, 0.0, 0.0 };
+  bool AimSelectedGenerator = false;
+  double SelectedGeneratorTip[3] = { 0.0, 0.0, 1.0 };
   char* GeneratorDirectionArrayName = nullptr;
   char* GeneratorWeightArrayName = nullptr;
   char* GeneratorKindArrayName = nullptr;

@@ -104,6 +104,29 @@ class GeneratorPortsTest(unittest.TestCase):
                 self.assertAlmostEqual(again.GetOutput().GetPoint(i)[c],
                                        deformation.GetOutputDataObject(0).GetPoint(i)[c], places=12)
 
+    def test_filter_aims_the_selected_generator(self):
+        plane = vtkPlaneSource()
+        aimed = vtkPointPairDeformationFilter()
+        aimed.SetInputConnection(plane.GetOutputPort())
+        aimed.AddGenerator(9, 9, 9, 0, 0, 1, 0.5, 1, 0)  # a rotation, aimed below
+        aimed.SetSelectedGenerator(0)
+        aimed.SetSelectedGeneratorLocation(0.2, 0.1, 0.3)
+        aimed.SetSelectedGeneratorTip(0.2, 2.1, 0.3)
+        rows, _ = table(generators_port(aimed))
+        self.assertRow(rows[0], (0.2, 0.1, 0.3), (0, 0, 1), 0.5, Kind=(1,))  # not aimed yet
+        aimed.AimSelectedGeneratorOn()
+        rows, _ = table(generators_port(aimed))
+        self.assertRow(rows[0], (0.2, 0.1, 0.3), (0, 2, 0), 0.5, Kind=(1,), Pitch=(0,))
+        # The same field as the row written out with that location and direction.
+        written = vtkPointPairDeformationFilter()
+        written.SetInputConnection(plane.GetOutputPort())
+        written.AddGenerator(0.2, 0.1, 0.3, 0, 2, 0, 0.5, 1, 0)
+        written.Update()
+        for i in range(4):
+            self.assertEqual(aimed.GetOutputDataObject(0).GetPoint(i),
+                             written.GetOutput().GetPoint(i))
+        self.assertNotEqual(written.GetOutput().GetPoint(0), plane.GetOutput().GetPoint(0))
+
     def test_filter_port_is_empty_after_an_error(self):
         deformation = vtkPointPairDeformationFilter()
         plane = vtkPlaneSource()  # kept: the connection does not hold its algorithm
