@@ -111,7 +111,7 @@ public:
 
   ///@{
   /// A handle for one generator of the list: when SelectedGenerator is a valid index, its location
-  /// is replaced by SelectedGeneratorLocation (ParaView moves it with a handle widget). -1 (the
+  /// is replaced by SelectedGeneratorLocation (ParaView moves it with its line widget). -1 (the
   /// default) selects none.
   vtkSetClampMacro(SelectedGenerator, int, -1, VTK_INT_MAX);
   vtkGetMacro(SelectedGenerator, int);
