@@ -120,17 +120,29 @@ def generator_arrows(algorithm, length=1.0, color="Tomato", signed=False, shaft_
     arrow.SetTipLength(tip_length)
     arrow.SetShaftResolution(resolution)
     arrow.SetTipResolution(resolution)
+    actor = glyph_actor(port, arrow, length, color, orientation)
+    actor.pipeline += pipeline
+    return actor
+
+
+def glyph_actor(port, glyph, scale, color, orientation=None):
+    """`glyph` (an algorithm) at every point of the output `port`, `scale` times its size, turned
+    along the point array `orientation` when given, by a vtkGlyph3DMapper, in one colour. The
+    actor keeps `glyph` alive."""
     mapper = vtkGlyph3DMapper()
     mapper.SetInputConnection(port)
-    mapper.SetSourceConnection(arrow.GetOutputPort())
-    mapper.SetOrientationArray(orientation)
-    mapper.OrientOn()
+    mapper.SetSourceConnection(glyph.GetOutputPort())
+    if orientation:
+        mapper.SetOrientationArray(orientation)
+        mapper.OrientOn()
+    else:
+        mapper.OrientOff()
     mapper.ScalingOn()  # (with scaling off the mapper ignores the scale factor)
-    mapper.SetScaleModeToNoDataScaling()  # every arrow `length` long
-    mapper.SetScaleFactor(length)
+    mapper.SetScaleModeToNoDataScaling()  # every glyph `scale` times its size
+    mapper.SetScaleFactor(scale)
     mapper.ScalarVisibilityOff()
     actor = styled_actor(mapper, color)
-    actor.pipeline = pipeline + [arrow]  # ports do not keep their filters alive in Python
+    actor.pipeline = [glyph]  # ports do not keep their filters alive in Python
     return actor
 
 
