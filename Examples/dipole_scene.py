@@ -1,5 +1,5 @@
 """Pieces shared by the dipole figures (fig13_dipole.py, fig14_dipole_methods.py): the field source,
-its arrows, its equipotential lines and the generators' markers.
+its arrows, its equipotential lines and the generators' markers (from its Generators port).
 
 Arrows: vtkGlyph3D on a displacement array of vtkDipoleFieldSource, all of one length (the
 displacements span orders of magnitude), so they show the direction; the colour shows the
@@ -9,8 +9,6 @@ superposed dipole potentials; their level sets cross one generator's field at ri
 from boostedsurfaces import vtkDipoleFieldSource
 from vtkmodules.vtkFiltersCore import vtkContourFilter, vtkGlyph3D
 from vtkmodules.vtkFiltersSources import vtkArrowSource, vtkSphereSource
-from vtkmodules.vtkFiltersGeneral import vtkTransformFilter
-from vtkmodules.vtkCommonTransforms import vtkTransform
 
 import gallery_common as gc
 
@@ -62,28 +60,14 @@ def equipotential_lines(source, values, radius):
     return gc.colored_actor(gc.tubes(contour, radius, sides=8), color="DimGray")
 
 
-def generator_markers(generators, radius=0.07):
-    """A sphere at each generator's location and an arrow along its direction."""
-    actors = []
-    for x, y, z, dx, dy, dz, _ in generators:
-        sphere = vtkSphereSource()
-        sphere.SetCenter(x, y, z)
-        sphere.SetRadius(radius)
-        sphere.SetThetaResolution(24)
-        sphere.SetPhiResolution(24)
-        actors.append(gc.colored_actor(sphere, color="Crimson"))
-        arrow = vtkArrowSource()
-        transform = vtkTransform()  # the unit x arrow, turned onto (dx, dy, dz), 0.5 long
-        transform.Translate(x, y, z)
-        transform.RotateZ(_degrees(dx, dy))
-        transform.Scale(0.5, 0.5, 0.5)
-        moved = vtkTransformFilter()
-        moved.SetInputConnection(arrow.GetOutputPort())
-        moved.SetTransform(transform)
-        actors.append(gc.colored_actor(moved, color="Crimson"))
-    return actors
-
-
-def _degrees(dx, dy):
-    import math
-    return math.degrees(math.atan2(dy, dx))
+def generator_markers(source, radius=0.07):
+    """A sphere at each generator of `source` and an arrow along its direction, from its
+    Generators port (output 1)."""
+    sphere = vtkSphereSource()
+    sphere.SetRadius(radius)
+    sphere.SetThetaResolution(24)
+    sphere.SetPhiResolution(24)
+    spheres = gc.glyph_actor(source.GetOutputPort(1), sphere, 1.0, "Crimson")
+    spheres.pipeline.append(source)
+    return [spheres, gc.generator_arrows(source, 0.5, "Crimson", tip_radius=0.1, tip_length=0.35,
+                                         resolution=6)]

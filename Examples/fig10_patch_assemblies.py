@@ -62,7 +62,7 @@ def build_scene():
         source = cc.patch(points, Method=3, Origin=center, Size=(8.0, 8.0), UResolution=96,
                           VResolution=96, Falloff=1.0, Epsilon=EPSILON)
         renderer.AddActor(cc.surface_actor(source, "LightSteelBlue"))
-        cc.add_arrows(renderer, [(p[:3], p[3:6]) for p in points], length=0.6)
+        cc.add_arrows(renderer, source, length=0.6)
         renderer.AddActor2D(gc.label(name, (center[0], center[1] - 4.8, 0.0), font_size=20))
     return renderer
 

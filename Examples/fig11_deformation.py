@@ -10,10 +10,8 @@ array.
     python3 fig11_deformation.py --output fig11.png --size 900 700
 """
 from boostedsurfaces import vtkPointPairDeformationFilter
-from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkPolyData
-from vtkmodules.vtkFiltersCore import vtkArrayCalculator, vtkGlyph3D, vtkPolyDataNormals
-from vtkmodules.vtkFiltersSources import vtkArrowSource, vtkPlaneSource, vtkSphereSource
+from vtkmodules.vtkFiltersCore import vtkArrayCalculator, vtkPolyDataNormals
+from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
 
 import gallery_common as gc
 
@@ -42,14 +40,18 @@ VIEW = dict(view_direction=(0.15, -1.0, 0.6), view_up=(0, 0, 1), zoom=1.1)
 SIZE = (900, 700)
 
 
-def deformed(source, generators):
-    """The warped mesh with smooth normals and a point array "|Displacement|"."""
+def deformation_filter(source, generators):
     deformation = vtkPointPairDeformationFilter()
     deformation.SetInputConnection(source.GetOutputPort())
     for location, direction, weight in generators:
         deformation.AddGenerator(*location, *direction, weight)
     deformation.SetFalloff(FALLOFF)
     deformation.SetEpsilon(EPSILON)
+    return deformation
+
+
+def deformed(deformation):
+    """The warped mesh with smooth normals and a point array "|Displacement|"."""
     length = vtkArrayCalculator()
     length.SetInputConnection(deformation.GetOutputPort())
     length.AddVectorArrayName("Displacement")
@@ -59,32 +61,6 @@ def deformed(source, generators):
     normals.SetInputConnection(length.GetOutputPort())
     normals.SplittingOff()
     return normals
-
-
-def arrows(generators, length=0.45):
-    """An arrow per generator, from its location along its direction."""
-    points = vtkPoints()
-    directions = vtkDoubleArray()
-    directions.SetName("Direction")
-    directions.SetNumberOfComponents(3)
-    for location, direction, weight in generators:
-        points.InsertNextPoint(*location)
-        sign = 1.0 if weight >= 0 else -1.0  # a negative weight reverses the generator
-        directions.InsertNextTuple3(*(sign * c for c in direction))
-    data = vtkPolyData()
-    data.SetPoints(points)
-    data.GetPointData().SetVectors(directions)
-    glyph = vtkGlyph3D()
-    glyph.SetInputData(data)
-    arrow = vtkArrowSource()
-    arrow.SetTipResolution(24)
-    arrow.SetShaftResolution(24)
-    glyph.SetSourceConnection(arrow.GetOutputPort())
-    glyph.SetVectorModeToUseVector()
-    glyph.SetScaleModeToDataScalingOff()
-    glyph.SetScaleFactor(length)
-    glyph.OrientOn()
-    return glyph
 
 
 def build_scene():
@@ -102,8 +78,11 @@ def build_scene():
     lut = gc.lambda_lookup_table(DISPLACEMENT_RANGE)
     renderer = gc.new_renderer()
     for source, generators in ((plane, PLANE_GENERATORS), (sphere, SPHERE_GENERATORS)):
-        renderer.AddActor(gc.colored_actor(deformed(source, generators), lut, "|Displacement|"))
-        renderer.AddActor(gc.colored_actor(arrows(generators), color="Crimson"))
+        deformation = deformation_filter(source, generators)
+        renderer.AddActor(gc.colored_actor(deformed(deformation), lut, "|Displacement|"))
+        # The generators from the filter's Generators port, reversed where a weight is negative.
+        renderer.AddActor(gc.generator_arrows(deformation, 0.45, "Crimson", signed=True,
+                                              tip_radius=0.1, tip_length=0.35, resolution=24))
     renderer.AddActor2D(gc.scalar_bar(lut, "|displacement|"))
     return renderer
 

@@ -35,20 +35,13 @@ def bilinear_patch(x, directions, weights, resolution=48):
     return cc.patch(**settings)
 
 
-def corners(x):
-    h = SIZE / 2
-    return [(x - h, -h, 0.0), (x + h, -h, 0.0), (x - h, h, 0.0), (x + h, h, 0.0)]
-
-
 def build_scene():
     renderer = gc.new_renderer()
     for i, (name, directions, weights) in enumerate(CASES):
         x = i * SPACING
         source = bilinear_patch(x, directions, weights)
         renderer.AddActor(cc.surface_actor(source, "LightSteelBlue"))
-        arrows = [(c, tuple(w * d for d in direction))
-                  for c, direction, w in zip(corners(x), directions, weights) if w != 0]
-        cc.add_arrows(renderer, arrows, length=0.8)
+        cc.add_arrows(renderer, source, length=0.8, signed=True)  # every weight is non-zero
         renderer.AddActor2D(gc.label(name, (x, -2.6, 0.0), font_size=22))
     return renderer
 

@@ -27,7 +27,7 @@ def build_scene():
     renderer = gc.new_renderer()
     renderer.AddActor(ds.arrows(source, "DisplacementSummedGenerators", SPACING, lut))
     renderer.AddActor(ds.equipotential_lines(source, POTENTIALS, 0.008))
-    for actor in ds.generator_markers(GENERATORS):
+    for actor in ds.generator_markers(source):
         renderer.AddActor(actor)
     renderer.AddActor2D(gc.scalar_bar(lut, "|v|"))
     return renderer

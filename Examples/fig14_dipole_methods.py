@@ -34,7 +34,7 @@ def build_scene():
     for title, array, shift in PANELS:
         actors = [ds.arrows(source, array, SPACING, lut),
                   ds.equipotential_lines(source, POTENTIALS, 0.008)]
-        actors += ds.generator_markers(GENERATORS)
+        actors += ds.generator_markers(source)
         for actor in actors:
             actor.AddPosition(shift, 0.0, 0.0)  # the two panels side by side
             renderer.AddActor(actor)

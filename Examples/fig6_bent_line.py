@@ -32,7 +32,7 @@ def build_scene():
         lut.GetColor(kappa, rgb)
         renderer.AddActor(gc.colored_actor(gc.tubes(line, 0.03), color=rgb))
     renderer.AddActor(gc.colored_actor(gc.tubes(bent_line(0.0), 0.05), color="Black"))
-    cc.add_arrows(renderer, [((0, 0, 0), (0, 0, 1))], length=1.0, color="Tomato")
+    cc.add_arrows(renderer, bent_line(0.0), length=1.0, color="Tomato")  # at the origin along z
     renderer.AddActor2D(gc.scalar_bar(lut, "kappa"))
     renderer.AddActor2D(gc.label("kappa > 0: center below", (0.0, 0.0, -4.6)))
     renderer.AddActor2D(gc.label("kappa < 0: center above", (0.0, 0.0, 4.6)))

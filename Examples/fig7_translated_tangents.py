@@ -39,7 +39,7 @@ def build_scene():
         height.SetScalarRange(-1.2, 1.2)
         actor = gc.colored_actor(height, lut, array="Elevation")
         renderer.AddActor(actor)
-        cc.add_arrows(renderer, [((x, 0, 0), (0, 0, 1))], length=0.8)
+        cc.add_arrows(renderer, source, length=0.8)
         renderer.AddActor2D(gc.label(name, (x, -2.4, 0.0), font_size=22))
     return renderer
 

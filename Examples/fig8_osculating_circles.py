@@ -26,7 +26,7 @@ def build_scene():
         source = cc.patch(Method=2, Origin=(x, 0, 0), Size=(4.0, 4.0), UResolution=64,
                           VResolution=64, KappaU=ku, KappaV=kv, Epsilon=EPSILON)
         renderer.AddActor(cc.surface_actor(source, "LightSteelBlue"))
-        cc.add_arrows(renderer, [((x, 0, 0), (0, 0, 1))], length=0.8)
+        cc.add_arrows(renderer, source, length=0.8)
         renderer.AddActor2D(gc.label(name, (x, -3.0, 0.0), font_size=22))
     return renderer
 

@@ -41,9 +41,9 @@ def build_scene():
     renderer = gc.new_renderer()
     for i, (name, curvatures) in enumerate(CASES):
         x = i * SPACING
-        renderer.AddActor(cc.surface_actor(four_corner_patch(x, curvatures), "LightSteelBlue"))
-        points = control_points(x, curvatures)
-        cc.add_arrows(renderer, [(point[:3], point[3:6]) for point in points], length=0.8)
+        source = four_corner_patch(x, curvatures)
+        renderer.AddActor(cc.surface_actor(source, "LightSteelBlue"))
+        cc.add_arrows(renderer, source, length=0.8)
         renderer.AddActor2D(gc.label(name, (x, -3.6, 0.0), font_size=22))
     return renderer
 

@@ -8,12 +8,14 @@ import os
 
 from vtkmodules.vtkCommonColor import vtkNamedColors
 from vtkmodules.vtkCommonCore import vtkLookupTable
-from vtkmodules.vtkFiltersCore import vtkTubeFilter
+from vtkmodules.vtkFiltersCore import vtkArrayCalculator, vtkTubeFilter
+from vtkmodules.vtkFiltersSources import vtkArrowSource
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingAnnotation import vtkScalarBarActor
 from vtkmodules.vtkRenderingCore import (
     vtkActor,
     vtkColorTransferFunction,
+    vtkGlyph3DMapper,
     vtkLightKit,
     vtkPolyDataMapper,
     vtkRenderer,
@@ -78,6 +80,11 @@ def colored_actor(algorithm, lut=None, array="lambda", color=None):
         mapper.InterpolateScalarsBeforeMappingOn()
     else:
         mapper.ScalarVisibilityOff()
+    return styled_actor(mapper, color)
+
+
+def styled_actor(mapper, color=None):
+    """An actor for `mapper` with the figures' lighting, in one `color` when given."""
     actor = vtkActor()
     actor.SetMapper(mapper)
     if color is not None:
@@ -86,6 +93,56 @@ def colored_actor(algorithm, lut=None, array="lambda", color=None):
     actor.GetProperty().SetDiffuse(0.8)
     actor.GetProperty().SetSpecular(0.3)
     actor.GetProperty().SetSpecularPower(30)
+    return actor
+
+
+def generator_arrows(algorithm, length=1.0, color="Tomato", signed=False, shaft_radius=0.03,
+                     tip_radius=0.08, tip_length=0.3, resolution=16):
+    """An arrow of `length` at each generator of `algorithm` (its last output port, the class's
+    Generators port), along its Direction (reversed where its Weight is negative when `signed`),
+    drawn by a vtkGlyph3DMapper. The actor keeps its pipeline alive."""
+    port = algorithm.GetOutputPort(algorithm.GetNumberOfOutputPorts() - 1)
+    orientation = "Direction"
+    pipeline = [algorithm]
+    if signed:
+        calculator = vtkArrayCalculator()
+        calculator.SetInputConnection(port)
+        calculator.AddScalarArrayName("Weight")
+        calculator.AddVectorArrayName("Direction")
+        calculator.SetFunction("Direction*Weight")
+        orientation = "SignedDirection"
+        calculator.SetResultArrayName(orientation)
+        port = calculator.GetOutputPort()
+        pipeline.append(calculator)
+    arrow = vtkArrowSource()  # along +x from the origin, length 1
+    arrow.SetShaftRadius(shaft_radius)
+    arrow.SetTipRadius(tip_radius)
+    arrow.SetTipLength(tip_length)
+    arrow.SetShaftResolution(resolution)
+    arrow.SetTipResolution(resolution)
+    actor = glyph_actor(port, arrow, length, color, orientation)
+    actor.pipeline += pipeline
+    return actor
+
+
+def glyph_actor(port, glyph, scale, color, orientation=None):
+    """`glyph` (an algorithm) at every point of the output `port`, `scale` times its size, turned
+    along the point array `orientation` when given, by a vtkGlyph3DMapper, in one colour. The
+    actor keeps `glyph` alive."""
+    mapper = vtkGlyph3DMapper()
+    mapper.SetInputConnection(port)
+    mapper.SetSourceConnection(glyph.GetOutputPort())
+    if orientation:
+        mapper.SetOrientationArray(orientation)
+        mapper.OrientOn()
+    else:
+        mapper.OrientOff()
+    mapper.ScalingOn()  # (with scaling off the mapper ignores the scale factor)
+    mapper.SetScaleModeToNoDataScaling()  # every glyph `scale` times its size
+    mapper.SetScaleFactor(scale)
+    mapper.ScalarVisibilityOff()
+    actor = styled_actor(mapper, color)
+    actor.pipeline = [glyph]  # ports do not keep their filters alive in Python
     return actor
 
 

@@ -4,6 +4,7 @@
 #include "vtkArrayDispatch.h"
 #include "vtkBoostedBlockLoop.h"
 #include "vtkBoostedExponentialRule.h"
+#include "vtkBoostedGeneratorGlyphs.h"
 #include "vtkBoostedGeneratorRows.h"
 #include "vtkBoostedMemoryBudget.h"
 #include "vtkBoostedTimeSweep.h"
@@ -22,6 +23,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
+#include "vtkPolyData.h"
 #include "vtkPoints.h"
 #include "vtkRectilinearGrid.h"
 #include "vtkRectilinearGridToPointSet.h"
@@ -355,6 +357,7 @@ vtkPointPairDeformationFilter::vtkPointPairDeformationFilter()
 {
   static_assert(vtkBoostedGeneratorKinds<vtkPointPairDeformationFilter>(), "");
   this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(2); // the deformed input, the generators
   this->SetGeneratorDirectionArrayName("Direction");
   this->SetGeneratorWeightArrayName("Weight");
   this->SetGeneratorKindArrayName("Kind");
@@ -396,9 +399,20 @@ int vtkPointPairDeformationFilter::FillInputPortInformation(int port, vtkInforma
   return 1;
 }
 
+int vtkPointPairDeformationFilter::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    vtkBoostedGeneratorGlyphs::FillOutputPortInformation(info);
+    return 1;
+  }
+  return this->Superclass::FillOutputPortInformation(port, info);
+}
+
 int vtkPointPairDeformationFilter::RequestDataObject(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  int result = 1;
   // Images and rectilinear grids cannot hold moved points: they become structured grids.
   if (vtkImageData::GetData(inputVector[0]) || vtkRectilinearGrid::GetData(inputVector[0]))
   {
@@ -407,9 +421,20 @@ int vtkPointPairDeformationFilter::RequestDataObject(
       vtkNew<vtkStructuredGrid> output;
       outputVector->GetInformationObject(0)->Set(vtkDataObject::DATA_OBJECT(), output);
     }
-    return 1;
   }
-  return this->Superclass::RequestDataObject(request, inputVector, outputVector);
+  else
+  {
+    // (vtkPointSetAlgorithm gives every output port the input's type.)
+    result = this->Superclass::RequestDataObject(request, inputVector, outputVector);
+  }
+  vtkInformation* generatorsInfo = outputVector->GetInformationObject(1);
+  vtkDataObject* existing = generatorsInfo->Get(vtkDataObject::DATA_OBJECT());
+  if (!existing || std::string(existing->GetClassName()) != "vtkPolyData")
+  {
+    vtkNew<vtkPolyData> generators;
+    generatorsInfo->Set(vtkDataObject::DATA_OBJECT(), generators);
+  }
+  return result;
 }
 
 int vtkPointPairDeformationFilter::ExecuteInformation(
@@ -418,8 +443,11 @@ int vtkPointPairDeformationFilter::ExecuteInformation(
   // Without time steps of its own the filter keeps its input's (the executive copied them).
   if (this->NumberOfTimeSteps > 0)
   {
-    vtkBoostedTimeSweep::ReportTimeSteps(
-      outputVector->GetInformationObject(0), this->NumberOfTimeSteps);
+    for (int port = 0; port < this->GetNumberOfOutputPorts(); ++port)
+    {
+      vtkBoostedTimeSweep::ReportTimeSteps(
+        outputVector->GetInformationObject(port), this->NumberOfTimeSteps);
+    }
   }
   return 1;
 }
@@ -473,6 +501,10 @@ int vtkPointPairDeformationFilter::RequestData(
       vtkErrorMacro(<< problem);
       return 1; // the output stays empty
     }
+    if (i == this->SelectedGenerator && this->AimSelectedGenerator)
+    {
+      generators[i].direction = cga::toVec3(this->SelectedGeneratorTip) - cga::toVec3(location);
+    }
   }
   if (vtkPointSet* generatorSet = vtkPointSet::GetData(inputVector[1]))
   {
@@ -508,19 +540,31 @@ int vtkPointPairDeformationFilter::RequestData(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   const double strength =
     this->Strength * vtkBoostedTimeSweep::Fraction(outInfo, this->NumberOfTimeSteps);
+  vtkInformation* generatorsInfo = outputVector->GetInformationObject(1);
+  vtkPolyData* generatorsOutput = vtkPolyData::GetData(generatorsInfo);
+  bool deformed = false;
   // The tree (O(M), a few hundred bytes per generator) is built inside the budget's guard.
   if (!vtkBoostedMemoryBudget::Run(this, [&] {
         field.setTolerance(this->Tolerance);
-        this->Deform(input, field, strength, output);
+        deformed = this->Deform(input, field, strength, output);
       }))
   {
     output->Initialize(); // no half-built output
   }
+  else if (deformed && vtkBoostedGeneratorGlyphs::OnFirstPiece(outputVector))
+  {
+    // The generators as used (the selected row at the handle, then the Generators input's), once
+    // under MPI.
+    vtkBoostedGeneratorGlyphs glyphs(vtkBoostedGeneratorGlyphs::KindAndPitch);
+    glyphs.Add(generators);
+    glyphs.Write(generatorsOutput);
+  }
   vtkBoostedTimeSweep::StampTime(outInfo, this->NumberOfTimeSteps, output);
+  vtkBoostedTimeSweep::StampTime(generatorsInfo, this->NumberOfTimeSteps, generatorsOutput);
   return 1;
 }
 
-void vtkPointPairDeformationFilter::Deform(
+bool vtkPointPairDeformationFilter::Deform(
   vtkDataSet* input, const cga::PointPairField& field, double strength, vtkPointSet* output)
 {
   // Same topology, cells and arrays; normals would be wrong after the warp, so they are dropped.
@@ -536,7 +580,7 @@ void vtkPointPairDeformationFilter::Deform(
   const vtkIdType count = inPoints ? inPoints->GetNumberOfPoints() : 0;
   if (count == 0)
   {
-    return;
+    return true;
   }
   int outputType = inPoints->GetDataType() == VTK_FLOAT ? VTK_FLOAT : VTK_DOUBLE;
   if (this->OutputPointsPrecision == SINGLE_PRECISION)
@@ -565,7 +609,7 @@ void vtkPointPairDeformationFilter::Deform(
   if (vtkBoostedSurfacesCheckAbort(this))
   {
     output->Initialize(); // aborted: no half-deformed mesh
-    return;
+    return false;
   }
   if (beyondOutputType > 0)
   {
@@ -573,7 +617,7 @@ void vtkPointPairDeformationFilter::Deform(
                     std::to_string(beyondOutputType) + " of " + std::to_string(count) +
                     " points are"));
     output->Initialize();
-    return;
+    return false;
   }
   if (unchanged > 0)
   {
@@ -584,6 +628,7 @@ void vtkPointPairDeformationFilter::Deform(
   }
   output->SetPoints(outPoints);
   output->GetPointData()->AddArray(displacement);
+  return true;
 }
 
 void vtkPointPairDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
@@ -593,6 +638,9 @@ void vtkPointPairDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SelectedGenerator: " << this->SelectedGenerator << "\n";
   os << indent << "SelectedGeneratorLocation: (" << this->SelectedGeneratorLocation[0] << ", "
      << this->SelectedGeneratorLocation[1] << ", " << this->SelectedGeneratorLocation[2] << ")\n";
+  os << indent << "AimSelectedGenerator: " << this->AimSelectedGenerator << "\n";
+  os << indent << "SelectedGeneratorTip: (" << this->SelectedGeneratorTip[0] << ", "
+     << this->SelectedGeneratorTip[1] << ", " << this->SelectedGeneratorTip[2] << ")\n";
   os << indent << "GeneratorDirectionArrayName: "
      << (this->GeneratorDirectionArrayName ? this->GeneratorDirectionArrayName : "(none)") << "\n";
   os << indent << "GeneratorWeightArrayName: "

@@ -33,6 +33,10 @@
  * Output: the input's topology, cells and arrays with moved points, plus the point vector
  * "Displacement" = p' - p. Normals are dropped (they would be wrong once the points moved).
  * vtkImageData and vtkRectilinearGrid inputs give a vtkStructuredGrid, as vtkWarpVector does.
+ * Output 1, "Generators" (vtkBoostedGeneratorGlyphs, for glyphs): one vertex per generator as
+ * used (the list's rows, the selected one at SelectedGeneratorLocation, then the Generators
+ * input's points), with point arrays "Direction", "Weight", "Kind" and "Pitch"; on piece 0 only,
+ * and empty after an error. It is in the Generators input's format, so it can be fed back there.
  *
  * Bad input: points that are NaN or infinite pass through unchanged (Displacement 0) and are
  * counted in one warning; so are points whose image would be at infinity. Generators with a zero
@@ -107,12 +111,24 @@ public:
 
   ///@{
   /// A handle for one generator of the list: when SelectedGenerator is a valid index, its location
-  /// is replaced by SelectedGeneratorLocation (ParaView moves it with a handle widget). -1 (the
+  /// is replaced by SelectedGeneratorLocation (ParaView moves it with its line widget). -1 (the
   /// default) selects none.
   vtkSetClampMacro(SelectedGenerator, int, -1, VTK_INT_MAX);
   vtkGetMacro(SelectedGenerator, int);
   vtkSetVector3Macro(SelectedGeneratorLocation, double);
   vtkGetVector3Macro(SelectedGeneratorLocation, double);
+  ///@}
+
+  ///@{
+  /// Aiming the selected generator (ParaView's line widget from its location to its tip): when
+  /// AimSelectedGenerator is on (default off) and SelectedGenerator is a valid index, that row's
+  /// direction is replaced by SelectedGeneratorTip - SelectedGeneratorLocation (its length, as a
+  /// row's direction's, multiplies the weight). Default tip (0, 0, 1).
+  vtkSetMacro(AimSelectedGenerator, bool);
+  vtkGetMacro(AimSelectedGenerator, bool);
+  vtkBooleanMacro(AimSelectedGenerator, bool);
+  vtkSetVector3Macro(SelectedGeneratorTip, double);
+  vtkGetVector3Macro(SelectedGeneratorTip, double);
   ///@}
 
   ///@{
@@ -202,6 +218,7 @@ protected:
   ~vtkPointPairDeformationFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int ExecuteInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int ComputeInputUpdateExtent(
@@ -211,6 +228,8 @@ protected:
   std::unique_ptr<vtkBoostedRowList> Generators;
   int SelectedGenerator = -1;
   double SelectedGeneratorLocation[3] = { 0.0, 0.0, 0.0 };
+  bool AimSelectedGenerator = false;
+  double SelectedGeneratorTip[3] = { 0.0, 0.0, 1.0 };
   char* GeneratorDirectionArrayName = nullptr;
   char* GeneratorWeightArrayName = nullptr;
   char* GeneratorKindArrayName = nullptr;
@@ -226,8 +245,9 @@ protected:
 
 private:
   /// RequestData's allocating part, after the validation and the memory estimate: the explicit
-  /// copy of an image or rectilinear grid, the output points and Displacement, the deformation.
-  void Deform(
+  /// copy of an image or rectilinear grid, the output points and Displacement, the deformation;
+  /// false after an abort or an error (the output then empty).
+  bool Deform(
     vtkDataSet* input, const cga::PointPairField& field, double strength, vtkPointSet* output);
 
   vtkPointPairDeformationFilter(const vtkPointPairDeformationFilter&) = delete;

@@ -1,5 +1,6 @@
 #include "vtkConformalOrbitSource.h"
 
+#include "vtkBoostedGeneratorGlyphs.h"
 #include "vtkBoostedGeneratorRows.h"
 #include "vtkBoostedGridBuilder.h"
 #include "vtkBoostedGridDriver.h"
@@ -79,7 +80,7 @@ vtkConformalOrbitSource::vtkConformalOrbitSource()
 {
   static_assert(vtkBoostedGeneratorKinds<vtkConformalOrbitSource>(), "");
   this->SetNumberOfInputPorts(1);  // optional seeds (INPUT_POINTS)
-  this->SetNumberOfOutputPorts(2); // the orbits, the cores
+  this->SetNumberOfOutputPorts(3); // the orbits, the cores, the generators
 }
 
 vtkConformalOrbitSource::~vtkConformalOrbitSource() = default;
@@ -105,10 +106,20 @@ int vtkConformalOrbitSource::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
+int vtkConformalOrbitSource::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 2)
+  {
+    vtkBoostedGeneratorGlyphs::FillOutputPortInformation(info);
+    return 1;
+  }
+  return this->Superclass::FillOutputPortInformation(port, info);
+}
+
 int vtkConformalOrbitSource::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  for (int port = 0; port < 2; ++port)
+  for (int port = 0; port < this->GetNumberOfOutputPorts(); ++port)
   {
     outputVector->GetInformationObject(port)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
     vtkBoostedTimeSweep::ReportTimeSteps(
@@ -131,6 +142,11 @@ int vtkConformalOrbitSource::RequestData(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkPolyData* orbits = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* cores = vtkPolyData::GetData(outputVector, 1);
+  // The generators (output 2), written last, once every other output is built: after an error
+  // every output stays empty.
+  vtkBoostedGeneratorGlyphs glyphs(this->GeneratorType == TORUS_KNOT
+      ? vtkBoostedGeneratorGlyphs::NoColumns
+      : vtkBoostedGeneratorGlyphs::KindAndPitch);
   vtkPointSet* input = inputVector[0]->GetNumberOfInformationObjects() > 0
     ? vtkPointSet::GetData(inputVector[0]->GetInformationObject(0))
     : nullptr;
@@ -182,6 +198,12 @@ int vtkConformalOrbitSource::RequestData(
       }
       kept.push_back(generator);
     }
+    for (int i = 0; problem.empty() && i < this->Generators->GetNumberOfRows(); ++i)
+    {
+      cga::GeneratorParameters generator;
+      vtkBoostedGeneratorRows::Read(this->Generators->Row(i), this->Generators->Row(i), i, generator, problem);
+      glyphs.Add(generator);
+    }
     // The mean as a sum of x_i / n (as cga::PointPairField's center): no overflow, and a lone
     // row's location exactly.
     for (const cga::GeneratorParameters& generator : kept)
@@ -201,6 +223,25 @@ int vtkConformalOrbitSource::RequestData(
     }
   }
   const cga::Orbit orbit = problem.empty() && isKnot ? knot.orbit() : cga::Orbit(b);
+  // TORUS_KNOT's generators: the two core circles, at their centers along their normals, with
+  // their rates pi/P and pi/Q as weights.
+  if (problem.empty() && isKnot)
+  {
+    const cga::TorusKnot::Circle circles[2] = { knot.coreA(), knot.coreC() };
+    const double pi = std::acos(-1.0);
+    const double rates[2] = { pi / knot.p, pi / knot.q };
+    for (int i = 0; i < 2; ++i)
+    {
+      glyphs.Add(circles[i].center + center, circles[i].normal, rates[i]);
+    }
+  }
+  // Output 2, on piece 0 only (as the cores), once the other outputs are built.
+  auto writeGenerators = [&] {
+    if (vtkBoostedGeneratorGlyphs::OnFirstPiece(outputVector))
+    {
+      glyphs.Write(vtkPolyData::GetData(outputVector, 2));
+    }
+  };
   if (problem.empty())
   {
     problem = orbit.problem();
@@ -311,6 +352,7 @@ int vtkConformalOrbitSource::RequestData(
         return 1;
       }
     }
+    writeGenerators();
     this->StampTime(outputVector);
     return 1;
   }
@@ -429,13 +471,14 @@ int vtkConformalOrbitSource::RequestData(
       return 1;
     }
   }
+  writeGenerators();
   this->StampTime(outputVector);
   return 1;
 }
 
 void vtkConformalOrbitSource::StampTime(vtkInformationVector* outputVector)
 {
-  for (int port = 0; port < 2; ++port)
+  for (int port = 0; port < this->GetNumberOfOutputPorts(); ++port)
   {
     vtkInformation* info = outputVector->GetInformationObject(port);
     vtkBoostedTimeSweep::StampTime(info, this->NumberOfTimeSteps, vtkPolyData::GetData(info));

@@ -47,6 +47,10 @@
  * Output 1: the cores, the circle (or line, cut at the clip sphere) about which each rotating part
  * of B turns, CoreResolution points each, point array "CoreId" (the part: 0 for A, 1 for C with
  * TORUS_KNOT); on piece 0 only.
+ * Output 2: the generators (vtkBoostedGeneratorGlyphs), on piece 0 only: with GENERATOR_LIST one
+ * vertex per row at its location, point arrays "Direction", "Weight", "Kind" and "Pitch" (the
+ * row's values); with TORUS_KNOT the two core circles A and C, each a vertex at its center with
+ * its unit normal as "Direction" and its rate pi/P or pi/Q as "Weight".
  *
  * Invalid parameters (non-finite values, a zero or parallel knot direction, KnotRadius <= 0,
  * KnotP or KnotQ 0, min t > max t, a non-finite or too large B, a refused list, INPUT_POINTS
@@ -214,6 +218,7 @@ protected:
   ~vtkConformalOrbitSource() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

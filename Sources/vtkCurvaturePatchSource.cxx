@@ -1,6 +1,7 @@
 #include "vtkCurvaturePatchSource.h"
 
 #include "vtkBoostedExponentialRule.h"
+#include "vtkBoostedGeneratorGlyphs.h"
 #include "vtkBoostedGridDriver.h"
 #include "vtkBoostedTimeSweep.h"
 #include "vtkBoostedMemoryBudget.h"
@@ -22,6 +23,7 @@ vtkCurvaturePatchSource::vtkCurvaturePatchSource()
       this, "ControlPoint", { 0, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0 }))
 {
   this->SetNumberOfInputPorts(0);
+  this->SetNumberOfOutputPorts(2); // the patch, its generators
 }
 
 vtkCurvaturePatchSource::~vtkCurvaturePatchSource() = default;
@@ -40,12 +42,25 @@ void vtkCurvaturePatchSource::SetControlPoint(int index, double x, double y, dou
 
 vtkBoostedRowListMethods(vtkCurvaturePatchSource, ControlPoint, ControlPoints)
 
+int vtkCurvaturePatchSource::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    vtkBoostedGeneratorGlyphs::FillOutputPortInformation(info);
+    return 1;
+  }
+  return this->Superclass::FillOutputPortInformation(port, info);
+}
+
 int vtkCurvaturePatchSource::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  outputVector->GetInformationObject(0)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
-  vtkBoostedTimeSweep::ReportTimeSteps(
-    outputVector->GetInformationObject(0), this->NumberOfTimeSteps);
+  for (int port = 0; port < this->GetNumberOfOutputPorts(); ++port)
+  {
+    outputVector->GetInformationObject(port)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
+    vtkBoostedTimeSweep::ReportTimeSteps(
+      outputVector->GetInformationObject(port), this->NumberOfTimeSteps);
+  }
   return 1;
 }
 
@@ -144,8 +159,42 @@ int vtkCurvaturePatchSource::RequestData(
   grid.AddColumnParameter("u", us);
   grid.AddRowParameter("v", vs);
   grid.AddPointParameter("GeneratorWeight", weights);
-  driver.Build(vtkPolyData::GetData(outInfo));
-  vtkBoostedTimeSweep::StampTime(outInfo, this->NumberOfTimeSteps, vtkPolyData::GetData(outInfo));
+  if (driver.Build(vtkPolyData::GetData(outInfo)) &&
+    vtkBoostedGeneratorGlyphs::OnFirstPiece(outputVector))
+  {
+    // Output 1, the generators of the Method as used (validated, at this time's curvatures).
+    vtkBoostedGeneratorGlyphs glyphs(vtkBoostedGeneratorGlyphs::Curvature);
+    const cga::PatchFrame& frame = patch.frame;
+    const double hu = 0.5 * patch.sizeU;
+    switch (this->Method)
+    {
+      case CONTROL_POINTS:
+        for (const cga::CurvatureControlPoint& c : patch.controlPoints)
+        {
+          glyphs.Add(c.location, c.normal, 1.0, 0, 0.0, c.kappaU, c.kappaV);
+        }
+        break;
+      case LINEAR:
+        glyphs.Add(frame.at(-hu, 0.0), patch.corners[0].direction, patch.corners[0].weight);
+        glyphs.Add(frame.at(hu, 0.0), patch.corners[1].direction, patch.corners[1].weight);
+        break;
+      case BILINEAR:
+        for (int i = 0; i < 4; ++i)
+        {
+          glyphs.Add(patch.cornerLocations()[i], patch.corners[i].direction, patch.corners[i].weight);
+        }
+        break;
+      default: // the curvatures at Origin (BENT_LINE: KappaU only)
+        glyphs.Add(frame.origin, frame.normal, 1.0, 0, 0.0, patch.kappaU,
+          this->Method == BENT_LINE ? 0.0 : patch.kappaV);
+    }
+    glyphs.Write(vtkPolyData::GetData(outputVector, 1));
+  }
+  for (int port = 0; port < this->GetNumberOfOutputPorts(); ++port)
+  {
+    vtkInformation* info = outputVector->GetInformationObject(port);
+    vtkBoostedTimeSweep::StampTime(info, this->NumberOfTimeSteps, vtkPolyData::GetData(info));
+  }
   return 1;
 }
 

@@ -29,6 +29,16 @@
  * infinity are dropped with their cells; the output is cut exactly at the clip sphere, radius
  * ClipRadius about Origin (vtkBoostedGridDriver).
  *
+ * Output 1, "Generators" (vtkBoostedGeneratorGlyphs, for glyphs), on piece 0 only, empty after
+ * an error: the Method's generators, one vertex each, with point arrays "Direction", "Weight"
+ * and "Curvature" (kappa_u, kappa_v), at the curvatures of the requested time. CONTROL_POINTS:
+ * each control point at its location (the selected one at SelectedControlPointLocation), its unit
+ * normal, weight 1, its curvatures. LINEAR: corners 1 and 2 at the ends of the middle u row
+ * (Origin -+ Size[0]/2 u); BILINEAR: the four corners (Origin -+ Size[0]/2 u -+ Size[1]/2 v);
+ * each with its direction and weight, curvature (0, 0). BENT_LINE, TRANSLATED_TANGENTS and
+ * OSCULATING_CIRCLES: one vertex at Origin along n = u x v, weight 1, curvature (KappaU, KappaV)
+ * (or the preset's; (KappaU, 0) for BENT_LINE).
+ *
  * Pieces: the rows are divided among the requested pieces (neighbouring bands repeat their shared
  * row of points; cells are never repeated; LINES partitions the points exactly).
  *
@@ -216,6 +226,7 @@ protected:
   vtkCurvaturePatchSource();
   ~vtkCurvaturePatchSource() override;
 
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 

@@ -2,6 +2,7 @@
 
 #include "vtkBoostedBlockLoop.h"
 #include "vtkBoostedExponentialRule.h"
+#include "vtkBoostedGeneratorGlyphs.h"
 #include "vtkBoostedGeneratorRows.h"
 #include "vtkBoostedMemoryBudget.h"
 #include "vtkBoostedRowList.h"
@@ -15,6 +16,7 @@
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
@@ -133,6 +135,7 @@ vtkDipoleFieldSource::vtkDipoleFieldSource()
 {
   static_assert(vtkBoostedGeneratorKinds<vtkDipoleFieldSource>(), "");
   this->SetNumberOfInputPorts(0);
+  this->SetNumberOfOutputPorts(2); // the field, the generators
   this->AddGenerator(0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.5);
 }
 
@@ -223,6 +226,7 @@ int vtkDipoleFieldSource::RequestInformation(
     outInfo, this->OutputPointsPrecision == SINGLE_PRECISION ? VTK_FLOAT : VTK_DOUBLE, 1);
 
   vtkBoostedTimeSweep::ReportTimeSteps(outInfo, this->NumberOfTimeSteps);
+  vtkBoostedTimeSweep::ReportTimeSteps(outputVector->GetInformationObject(1), this->NumberOfTimeSteps);
   return 1;
 }
 
@@ -241,14 +245,19 @@ int vtkDipoleFieldSource::RequestData(
   }
 
   // Only the requested extent, clipped to the whole grid.
-  int extent[6];
-  outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+  int extent[6] = { 0, this->Dimensions[0] - 1, 0, this->Dimensions[1] - 1, 0,
+    this->Dimensions[2] - 1 }; // the whole grid when only the generators were requested
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
+  {
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+  }
   for (int c = 0; c < 3; ++c)
   {
     extent[2 * c] = std::max(extent[2 * c], 0);
     extent[2 * c + 1] = std::min(extent[2 * c + 1], this->Dimensions[c] - 1);
     if (extent[2 * c] > extent[2 * c + 1])
     {
+      this->WriteGenerators(outputVector);
       return 1; // an empty request
     }
   }
@@ -348,7 +357,44 @@ int vtkDipoleFieldSource::RequestData(
   pointData->AddArray(differenceMagnitude);
   pointData->SetScalars(potential);
   pointData->SetVectors(summedGenerators);
+  this->WriteGenerators(outputVector);
   return 1;
+}
+
+int vtkDipoleFieldSource::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    vtkBoostedGeneratorGlyphs::FillOutputPortInformation(info);
+    return 1;
+  }
+  return this->Superclass::FillOutputPortInformation(port, info);
+}
+
+void vtkDipoleFieldSource::WriteGenerators(vtkInformationVector* outputVector)
+{
+  vtkInformation* info = outputVector->GetInformationObject(1);
+  vtkPolyData* output = vtkPolyData::GetData(info);
+  if (vtkBoostedGeneratorGlyphs::OnFirstPiece(outputVector))
+  {
+    // The rows as the field uses them: moved by GeneratorsTranslation, weights at this time.
+    const double weightScale =
+      vtkBoostedTimeSweep::Fraction(outputVector->GetInformationObject(0), this->NumberOfTimeSteps);
+    vtkBoostedGeneratorGlyphs glyphs(vtkBoostedGeneratorGlyphs::KindAndPitch);
+    for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
+    {
+      const double* g = this->Generators->Row(i);
+      const double* t = this->GeneratorsTranslation;
+      const double location[3] = { g[0] + t[0], g[1] + t[1], g[2] + t[2] };
+      cga::GeneratorParameters generator;
+      std::string problem;
+      vtkBoostedGeneratorRows::Read(g, location, i, generator, problem); // validated rows
+      generator.weight *= weightScale;
+      glyphs.Add(generator);
+    }
+    glyphs.Write(output);
+  }
+  vtkBoostedTimeSweep::StampTime(info, this->NumberOfTimeSteps, output);
 }
 
 void vtkDipoleFieldSource::PrintSelf(ostream& os, vtkIndent indent)

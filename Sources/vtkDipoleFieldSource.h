@@ -40,6 +40,10 @@
  * fixed. Where a boost sends a grid point to infinity the failed displacement is zero and a
  * warning counts those points. Every array saturates at the largest value of its precision where
  * huge weights would overflow it.
+ *
+ * Output 1, "Generators" (vtkBoostedGeneratorGlyphs, for glyphs): one vertex per row at its
+ * location plus GeneratorsTranslation, point arrays "Direction", "Weight" (the row's weight times
+ * the time sweep's factor), "Kind" and "Pitch"; on piece 0 only, empty after an error.
  */
 #ifndef vtkDipoleFieldSource_h
 #define vtkDipoleFieldSource_h
@@ -157,6 +161,7 @@ protected:
   vtkDipoleFieldSource();
   ~vtkDipoleFieldSource() override;
 
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
@@ -178,6 +183,8 @@ private:
 
   // Empty when the parameters are valid, otherwise what is wrong.
   std::string Validate() const;
+  // Output 1 after a successful update (on piece 0 only), with output 0's time.
+  void WriteGenerators(vtkInformationVector* outputVector);
 };
 
 #endif

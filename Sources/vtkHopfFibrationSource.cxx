@@ -1,5 +1,6 @@
 #include "vtkHopfFibrationSource.h"
 
+#include "vtkBoostedGeneratorGlyphs.h"
 #include "vtkBoostedGridDriver.h"
 #include "vtkBoostedMemoryBudget.h"
 #include "vtkBoostedRowList.h"
@@ -48,6 +49,7 @@ vtkHopfFibrationSource::vtkHopfFibrationSource()
   : BasePoints(new vtkBoostedRowList(this, "BasePoint", { 0.0, 0.0 }))
 {
   this->SetNumberOfInputPorts(1); // optional points on a sphere (INPUT_POINTS)
+  this->SetNumberOfOutputPorts(2); // the fibers or mesh, the base points
 }
 
 int vtkHopfFibrationSource::FillInputPortInformation(int, vtkInformation* info)
@@ -71,12 +73,25 @@ void vtkHopfFibrationSource::SetBasePoint(int index, double theta, double phi)
 
 vtkBoostedRowListMethods(vtkHopfFibrationSource, BasePoint, BasePoints)
 
+int vtkHopfFibrationSource::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    vtkBoostedGeneratorGlyphs::FillOutputPortInformation(info);
+    return 1;
+  }
+  return this->Superclass::FillOutputPortInformation(port, info);
+}
+
 int vtkHopfFibrationSource::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  outputVector->GetInformationObject(0)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
-  vtkBoostedTimeSweep::ReportTimeSteps(
-    outputVector->GetInformationObject(0), this->NumberOfTimeSteps);
+  for (int port = 0; port < this->GetNumberOfOutputPorts(); ++port)
+  {
+    outputVector->GetInformationObject(port)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
+    vtkBoostedTimeSweep::ReportTimeSteps(
+      outputVector->GetInformationObject(port), this->NumberOfTimeSteps);
+  }
   return 1;
 }
 
@@ -194,8 +209,29 @@ int vtkHopfFibrationSource::RequestData(
   {
     grid.AddRowIntegerParameter("StripId", base.strip);
   }
-  driver.Build(vtkPolyData::GetData(outInfo));
-  vtkBoostedTimeSweep::StampTime(outInfo, this->NumberOfTimeSteps, vtkPolyData::GetData(outInfo));
+  if (driver.Build(vtkPolyData::GetData(outInfo)) &&
+    vtkBoostedGeneratorGlyphs::OnFirstPiece(outputVector))
+  {
+    // Output 1: each base point on the base sphere (C's center and radius, C's frame), along the
+    // paper's boost direction v_theta, with the boost's k as its weight.
+    vtkBoostedGeneratorGlyphs glyphs(vtkBoostedGeneratorGlyphs::NoColumns);
+    const double pi = std::acos(-1.0);
+    for (std::size_t i = 0; i < base.size(); ++i)
+    {
+      const double theta = base.theta[i], phi = base.phi[i];
+      const cga::Vec3 onSphere{ std::cos(phi) * std::cos(theta), std::cos(phi) * std::sin(theta),
+        std::sin(phi) };
+      const cga::Vec3 boost =
+        (1.0 / hopf.radius) * (hopf.toWorld({ std::cos(theta), std::sin(theta), 0.0 }) - hopf.center);
+      glyphs.Add(hopf.toWorld(onSphere), boost, 0.5 + phi / pi);
+    }
+    glyphs.Write(vtkPolyData::GetData(outputVector, 1));
+  }
+  for (int port = 0; port < this->GetNumberOfOutputPorts(); ++port)
+  {
+    vtkInformation* info = outputVector->GetInformationObject(port);
+    vtkBoostedTimeSweep::StampTime(info, this->NumberOfTimeSteps, vtkPolyData::GetData(info));
+  }
   return 1;
 }
 

@@ -38,6 +38,13 @@
  * quads become polygons of 3 to 6 points. Only samples at infinity drop their cells before the
  * cut.
  *
+ * Output 1, "Generators" (vtkBoostedGeneratorGlyphs, for glyphs): one vertex per base point, in
+ * the order of FiberId, on the base sphere drawn about C: CircleCenter + CircleRadius (cos phi
+ * cos theta a + cos phi sin theta b + sin phi n) in C's frame (a, b, n as in
+ * cga/surfaces/HopfFibration.h), with "Direction" the paper's unit boost direction
+ * v_theta = cos theta a + sin theta b and "Weight" its k = 1/2 + phi/pi (both modes); on piece 0
+ * only, empty after an error.
+ *
  * Pieces: fibers (FIBERS) or rows of quads (TWISTOR_MESH) are divided among the requested pieces.
  *
  * Invalid parameters (zero normal, radius <= 0, NaN or infinite values, a resolution of 0, a
@@ -208,6 +215,7 @@ protected:
   ~vtkHopfFibrationSource() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

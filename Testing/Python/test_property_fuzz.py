@@ -118,8 +118,10 @@ def run_trial(models, log, seed, trial, verbose=False):
             algorithm.SetInputDataObject(port, data)
             log.take(recorder)
             continue
-        before = algorithm.GetOutputDataObject(0)
-        stamp = before.GetMTime() if before is not None else None
+        # Every output port is checked (the Generators ports too): one update runs them all.
+        ports = range(algorithm.GetNumberOfOutputPorts())
+        befores = [algorithm.GetOutputDataObject(port) for port in ports]
+        stamps = [b.GetMTime() if b is not None else None for b in befores]
         getattr(algorithm, method)(*call_arguments)
         if not method.startswith("Update"):
             log.take(recorder)  # a setter's own error (a row outside the list) is not the update's
@@ -130,10 +132,17 @@ def run_trial(models, log, seed, trial, verbose=False):
         statistics["errors"] += bool(errors)
         output = algorithm.GetOutputDataObject(0)
         statistics["outputs"] += bool(not errors and output and output.GetNumberOfPoints())
-        unchanged = output is before and output is not None and output.GetMTime() == stamp
-        refused = bool(errors) and not own_errors and unchanged
-        found = fuzz_checks.output_problems(output, own_errors, pipeline_errors, unchanged,
-                                            all(finite_ports.values()))
+        found = []
+        for port in ports:
+            port_output = algorithm.GetOutputDataObject(port)
+            unchanged = (port_output is befores[port] and port_output is not None
+                         and port_output.GetMTime() == stamps[port])
+            if port == 0:
+                refused = bool(errors) and not own_errors and unchanged
+            found += [(category, ("output %d: " % port if port else "") + text)
+                      for category, text in fuzz_checks.output_problems(
+                          port_output, own_errors, pipeline_errors, unchanged,
+                          all(finite_ports.values()))]
         if verbose:
             print("%s: %d errors%s, %d warnings, %s%s" % (
                 method, len(errors), " (the pipeline's, output unchanged)" if refused else "",

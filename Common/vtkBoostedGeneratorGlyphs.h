@@ -1,0 +1,65 @@
+// The one builder of the classes' "Generators" output port (vtkPointPairDeformationFilter,
+// vtkDipoleFieldSource, vtkCurvaturePatchSource, vtkHopfFibrationSource, vtkConformalOrbitSource):
+// a vtkPolyData of one vertex per generator, control point, corner or base point, at its
+// location, with the point arrays a glyph filter (vtkGlyph3D, vtkGlyph3DMapper, ParaView's 3D
+// Glyphs representation) reads: "Direction" (3 components, as given: its length is part of the
+// generator; the active vectors) and "Weight" (the active scalars), and where the class has them
+// "Kind" (int, cga::GeneratorKind's values), "Pitch" and "Curvature" (2 components: kappa_u,
+// kappa_v). A generator with a non-finite value is left out (the classes that accept one ignore
+// it too), so the port holds finite values only.
+#ifndef vtkBoostedGeneratorGlyphs_h
+#define vtkBoostedGeneratorGlyphs_h
+
+#include "BoostedSurfacesCommonModule.h" // for export macro
+#include "cga/PointPairField.h"
+
+#include <vector>
+
+class vtkInformation;
+class vtkInformationVector;
+class vtkPolyData;
+
+class BOOSTEDSURFACESCOMMON_EXPORT vtkBoostedGeneratorGlyphs
+{
+public:
+  /// The optional arrays, or-ed: Kind and Pitch (generator rows), Curvature (control points).
+  enum Columns
+  {
+    NoColumns = 0,
+    KindAndPitch = 1,
+    Curvature = 2
+  };
+  explicit vtkBoostedGeneratorGlyphs(int columns)
+    : Columns(columns)
+  {
+  }
+
+  /// One point; kind, pitch and the curvatures are written only when the columns have them.
+  void Add(const cga::Vec3& location, const cga::Vec3& direction, double weight,
+    int kind = 0, double pitch = 0.0, double kappaU = 0.0, double kappaV = 0.0);
+  /// A generator row as the core reads it (location, direction, weight, kind, pitch).
+  void Add(const cga::GeneratorParameters& generator);
+  /// Each of `generators`.
+  void Add(const std::vector<cga::GeneratorParameters>& generators);
+
+  /// Replaces `output` by the points added so far (double points, one vertex each).
+  void Write(vtkPolyData* output) const;
+
+  /// The information of a "Generators" output port: vtkPolyData.
+  static void FillOutputPortInformation(vtkInformation* info);
+  /// True when every output port of this update asks for piece 0: the generators come once
+  /// under MPI (a consumer of any port on another rank asks for its own piece).
+  static bool OnFirstPiece(vtkInformationVector* outputVector);
+
+private:
+  struct Point
+  {
+    cga::Vec3 location, direction;
+    double weight, pitch, kappaU, kappaV;
+    int kind;
+  };
+  int Columns;
+  std::vector<Point> Points;
+};
+
+#endif
