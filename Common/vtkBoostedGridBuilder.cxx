@@ -168,14 +168,6 @@ void vtkBoostedGridBuilder::SetOrigin(const double origin[3])
   }
 }
 
-void vtkBoostedGridBuilder::SetPoint(int row, int column, const double point[3])
-{
-  double* p = &this->Points[3 * this->Index(row, column)];
-  p[0] = point[0];
-  p[1] = point[1];
-  p[2] = point[2];
-}
-
 void vtkBoostedGridBuilder::SetRowFallbackNormal(int row, const double normal[3])
 {
   for (int i = 0; i < 3; ++i)
@@ -200,12 +192,6 @@ void vtkBoostedGridBuilder::AddPointParameter(
   const std::string& name, const std::vector<double>& valuePerPoint)
 {
   this->Parameters.push_back({ name, false, valuePerPoint, true });
-}
-
-bool vtkBoostedGridBuilder::Usable(int row, int column) const
-{
-  const double* p = &this->Points[3 * this->Index(row, column)];
-  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
 }
 
 void vtkBoostedGridBuilder::ComputeNormal(int row, int column, double normal[3]) const

@@ -32,6 +32,7 @@
 
 #include "BoostedSurfacesCommonModule.h" // for export macro
 
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -48,7 +49,13 @@ public:
   /// point. A source far from the origin samples relative to its construction's center, so that
   /// its samples and their normals keep their precision (eps |origin| in the output).
   void SetOrigin(const double origin[3]);
-  void SetPoint(int row, int column, const double point[3]);
+  void SetPoint(int row, int column, const double point[3])
+  {
+    double* p = &this->Points[3 * static_cast<size_t>(this->Index(row, column))];
+    p[0] = point[0];
+    p[1] = point[1];
+    p[2] = point[2];
+  }
   /// Used where the grid gives no normal (a degenerate neighbourhood): e.g. the plane of the row's curve.
   void SetRowFallbackNormal(int row, const double normal[3]);
   /// A named per-point parameter, given per row and per column (value = row value or column value).
@@ -93,7 +100,12 @@ private:
   };
 
   int Index(int row, int column) const { return row * this->Columns + column; }
-  bool Usable(int row, int column) const;
+  // Inline (not through the shared library's PLT): called several times for every sample.
+  bool Usable(int row, int column) const
+  {
+    const double* p = &this->Points[3 * static_cast<size_t>(this->Index(row, column))];
+    return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+  }
   void ComputeNormal(int row, int column, double normal[3]) const;
   /// Writes the usable points of rows [firstRow, lastRow] and returns the map grid index -> point id.
   std::vector<long long> WritePoints(

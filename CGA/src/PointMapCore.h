@@ -422,12 +422,13 @@ BOOSTED_CORE_INLINE void normalize(const T* p, const T* r, T* image, bool* mappe
   }
 }
 
-/// The map p -> fn(<K up(p) ~K>_1), K = exp(-strength B(p)) by the rule of args, on every lane.
+/// The map p -> fn(<K up(p) ~K>_1), K = exp(b) by the rule of args, on every lane, for a given
+/// bivector b (overwritten): mapPoint after its B(p), for callers with their own exponent per point
+/// (kernel::MapBlockBy; the curvature patch).
 template <typename T>
-void mapPoint(const kernel::FieldArgs& args, const T* p, T* image, bool* mapped)
+void mapPointBy(const kernel::FieldArgs& args, T* b, const T* p, T* image, bool* mapped)
 {
-  T b[kBivector], x[kVector], r[kVector];
-  fieldBivector(args, p, -args.strength, b);
+  T x[kVector], r[kVector];
   upPoint(p, x);
   if (!args.exactRule)
   {
@@ -442,6 +443,15 @@ void mapPoint(const kernel::FieldArgs& args, const T* p, T* image, bool* mapped)
     sandwichEven(*args.tables, k, x, r);
   }
   normalize(p, r, image, mapped);
+}
+
+/// The map p -> fn(<K up(p) ~K>_1), K = exp(-strength B(p)) by the rule of args, on every lane.
+template <typename T>
+void mapPoint(const kernel::FieldArgs& args, const T* p, T* image, bool* mapped)
+{
+  T b[kBivector];
+  fieldBivector(args, p, -args.strength, b);
+  mapPointBy(args, b, p, image, mapped);
 }
 } // namespace
 } // namespace core

@@ -47,18 +47,30 @@ using MapBlock = void (*)(const FieldArgs& args,
                           double* image,
                           std::uint8_t* mapped);
 
+/// The same for a given exponent per point: K = exp(b) by args' rule (its field and strength are
+/// not read), b holding the ten Bivector components of each lane's exponent, component-major
+/// (b[c * kLanes + l]); b is overwritten.
+using MapBlockBy = void (*)(const FieldArgs& args,
+                            double* bivectors,
+                            const double* xyz,
+                            double* image,
+                            std::uint8_t* mapped);
+
 namespace baseline
 {
 void mapBlock(const FieldArgs&, const double*, double*, std::uint8_t*);
+void mapBlockBy(const FieldArgs&, double*, const double*, double*, std::uint8_t*);
 }
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
 namespace avx2
 {
 void mapBlock(const FieldArgs&, const double*, double*, std::uint8_t*);
+void mapBlockBy(const FieldArgs&, double*, const double*, double*, std::uint8_t*);
 }
 namespace avx512
 {
 void mapBlock(const FieldArgs&, const double*, double*, std::uint8_t*);
+void mapBlockBy(const FieldArgs&, double*, const double*, double*, std::uint8_t*);
 }
 #endif
 } // namespace kernel

@@ -16,6 +16,7 @@ struct Candidate
 {
   const char* name;
   MapBlock block;
+  MapBlockBy blockBy;
   bool (*supported)();
 };
 
@@ -39,10 +40,10 @@ bool hasAvx512()
 
 // Narrowest first.
 const Candidate kCandidates[] = {
-  { "baseline", &baseline::mapBlock, &always },
+  { "baseline", &baseline::mapBlock, &baseline::mapBlockBy, &always },
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
-  { "avx2", &avx2::mapBlock, &hasAvx2 },
-  { "avx512", &avx512::mapBlock, &hasAvx512 },
+  { "avx2", &avx2::mapBlock, &avx2::mapBlockBy, &hasAvx2 },
+  { "avx512", &avx512::mapBlock, &avx512::mapBlockBy, &hasAvx512 },
 #endif
 };
 constexpr int kCandidateCount = sizeof(kCandidates) / sizeof(kCandidates[0]);
@@ -90,6 +91,11 @@ std::atomic<int>& choice()
 MapBlock activeMapBlock()
 {
   return kCandidates[choice().load(std::memory_order_relaxed)].block;
+}
+
+MapBlockBy activeMapBlockBy()
+{
+  return kCandidates[choice().load(std::memory_order_relaxed)].blockBy;
 }
 
 std::vector<std::string> availableInstructionSets()

@@ -11,6 +11,7 @@ namespace cga
 namespace kernel
 {
 MapBlock activeMapBlock();
+MapBlockBy activeMapBlockBy();
 std::vector<std::string> availableInstructionSets();
 std::string activeInstructionSet();
 bool useInstructionSet(const std::string& name);

@@ -111,6 +111,29 @@ void mapBlock(const FieldArgs& args, const double* xyz, double* image, std::uint
     mapped[l] = ok[l] ? 1 : 0;
   }
 }
+void mapBlockBy(const FieldArgs& args, double* bivectors, const double* xyz, double* image,
+  std::uint8_t* mapped)
+{
+  LaneVector b[core::kBivector], p[3], out[3];
+  for (int c = 0; c < core::kBivector; ++c)
+  {
+    fromLanes(bivectors + c * L, b[c]);
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    fromLanes(xyz + i * L, p[i]);
+  }
+  bool ok[L];
+  core::mapPointBy(args, b, p, out, ok);
+  for (int i = 0; i < 3; ++i)
+  {
+    toLanes(out[i], image + i * L);
+  }
+  for (int l = 0; l < L; ++l)
+  {
+    mapped[l] = ok[l] ? 1 : 0;
+  }
+}
 } // namespace BOOSTED_KERNEL_ISA
 } // namespace kernel
 } // namespace cga
