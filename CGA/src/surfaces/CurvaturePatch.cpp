@@ -148,6 +148,13 @@ void CurvaturePatch::mapRow(
 {
   // Computed about the origin (the patch moved by -origin, the images moved back).
   constexpr std::size_t kChunk = 64;
+  // The control points' pieces that do not depend on the sample, once for the row.
+  const ControlPointSum controlPointSum(method == CurvatureMethod::ControlPoints
+      ? controlPoints.data() : nullptr,
+    method == CurvatureMethod::ControlPoints ? controlPoints.size() : 0, falloff, epsilon,
+    frame.origin);
+  PatchFrame moved = frame; // as generatorAbout moves it
+  moved.origin = frame.origin - frame.origin;
   Bivector exponents[kChunk];
   Vec3 points[kChunk], images[kChunk];
   double chunkWeights[kChunk];
@@ -157,7 +164,9 @@ void CurvaturePatch::mapRow(
     const std::size_t n = std::min(kChunk, count - first);
     for (std::size_t i = 0; i < n; ++i)
     {
-      const CurvatureGenerator g = generatorAbout(a[first + i], b, frame.origin);
+      const CurvatureGenerator g = method == CurvatureMethod::ControlPoints
+        ? controlPointSum.at(moved.at(a[first + i], b))
+        : generatorAbout(a[first + i], b, frame.origin);
       exponents[i] = g.exponent;
       chunkWeights[i] = g.weight;
       points[i] = Vec3{} + a[first + i] * frame.u + b * frame.v;
