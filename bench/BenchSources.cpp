@@ -20,9 +20,9 @@ using namespace boostedbench;
 
 // Updates `source` each iteration on `threads` threads and reports its output points per second;
 // an error when the output does not have kMeshPoints points (the sizes below are chosen for it).
-void timeSource(benchmark::State& state, vtkAlgorithm* source)
+void timeSource(benchmark::State& state, vtkAlgorithm* source, long threads)
 {
-  const long long points = updateEachIteration(state, source, static_cast<int>(state.range(0)));
+  const long long points = updateEachIteration(state, source, static_cast<int>(threads));
   if (points != static_cast<long long>(kMeshPoints))
   {
     state.SkipWithError(("the source made " + std::to_string(points) + " points").c_str());
@@ -38,7 +38,7 @@ void Torus(benchmark::State& state)
   source->SetParametricFunction(torus);
   source->SetUResolution(kMeshSide);
   source->SetVResolution(kMeshSide);
-  timeSource(state, source);
+  timeSource(state, source, state.range(0));
 }
 
 void BoostedSurface(benchmark::State& state)
@@ -50,7 +50,7 @@ void BoostedSurface(benchmark::State& state)
     source->SetLambdaResolution(kMeshSide - 1);
   source->SetThetaResolution(kMeshSide - 1);
   source->SetClipRadius(1e6);
-  timeSource(state, source);
+  timeSource(state, source, state.range(0));
 }
 
 void HopfFibration(benchmark::State& state)
@@ -64,7 +64,7 @@ void HopfFibration(benchmark::State& state)
   source->SetPhiRange(-1.5, 1.5);
   source->SetFiberResolution(kMeshSide - 1);
   source->SetClipRadius(1e6);
-  timeSource(state, source);
+  timeSource(state, source, state.range(0));
 }
 
 void CurvaturePatch(benchmark::State& state, int method)
@@ -80,7 +80,7 @@ void CurvaturePatch(benchmark::State& state, int method)
   source->SetUResolution(kMeshSide - 1);
   source->SetVResolution(kMeshSide - 1);
   source->SetClipRadius(1e6);
-  timeSource(state, source);
+  timeSource(state, source, state.range(0));
 }
 
 void ConformalOrbit(benchmark::State& state)
@@ -94,24 +94,25 @@ void ConformalOrbit(benchmark::State& state)
   }
   source->SetTResolution(static_cast<int>(kMeshPoints / 100)); // the last sample closes the orbit
   source->SetClipRadius(1e6);
-  timeSource(state, source);
+  timeSource(state, source, state.range(0));
 }
 
 void DipoleField(benchmark::State& state)
 {
-  // A 100 x 100 x 100 grid over [-2, 2]^2 x [-0.3, 0.3], the kernel benchmark's M = 4 generators.
+  // A 100 x 100 x 100 grid over [-2, 2]^2 x [-0.3, 0.3], the kernel benchmark's first M
+  // generators: M + 1 fields mapped per point (the summed one and each generator's own).
   vtkNew<vtkDipoleFieldSource> source;
   source->SetDimensions(100, 100, 100);
   source->SetOrigin(-2.0, -2.0, -0.3);
   source->SetSpacing(4.0 / 99, 4.0 / 99, 0.6 / 99);
-  for (const cga::PointPairGenerator& g : benchmarkGenerators(4))
+  for (const cga::PointPairGenerator& g : benchmarkGenerators(static_cast<int>(state.range(0))))
   {
     source->AddGenerator(g.location.x, g.location.y, g.location.z, g.direction.x, g.direction.y,
       g.direction.z, g.weight);
   }
   source->SetFalloff(kFalloff);
   source->SetEpsilon(kEpsilon);
-  timeSource(state, source);
+  timeSource(state, source, state.range(1));
 }
 
 void perThreads(benchmark::internal::Benchmark* benchmark)
@@ -129,5 +130,5 @@ BENCHMARK_CAPTURE(CurvaturePatch, ControlPoints, vtkCurvaturePatchSource::CONTRO
   ->Apply(perThreads);
 BENCHMARK_CAPTURE(CurvaturePatch, Bilinear, vtkCurvaturePatchSource::BILINEAR)->Apply(perThreads);
 BENCHMARK(ConformalOrbit)->Apply(perThreads);
-BENCHMARK(DipoleField)->Apply(perThreads);
+BENCHMARK(DipoleField)->ArgsProduct({ { 1, 4 }, { 1, 2 } })->ArgNames({ "M", "threads" })->Apply(timedPerPoint);
 } // namespace

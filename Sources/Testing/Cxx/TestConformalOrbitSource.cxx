@@ -7,6 +7,7 @@
 #include "BadParameterCases.h"
 #include "GridSourceChecks.h"
 #include "LinkingNumber.h"
+#include "ProgressLog.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -591,4 +592,31 @@ TEST(ConformalOrbitSource, SinglePrecisionBeyondTheLargestFloatIsAnError)
   ASSERT_GT(cores()->GetNumberOfPoints(), 0);
   EXPECT_EQ(source->GetOutput()->GetPoints()->GetDataType(), VTK_FLOAT);
   EXPECT_EQ(cores()->GetPoints()->GetDataType(), VTK_FLOAT);
+}
+
+TEST(ConformalOrbitSource, ReportsProgressAndAnAbortedUpdateIsEmpty)
+{
+  for (bool abort : { false, true })
+  {
+    // One seed, 262,144 t columns: 4 blocks of 65,536 columns (vtkBoostedBlockLoop: 65,536
+    // samples a block; vtkBoostedGridDriver::SampleColumns counts a column as its rows' samples).
+    vtkNew<vtkConformalOrbitSource> source;
+    source->SetTResolution(4 * 65536 - 1);
+    ProgressLog log;
+    log.abortAfterFirstStep = abort; // after the first block
+    log.Observe(source);
+    source->Update();
+    vtkPolyData* orbits = source->GetOutput(0);
+    if (!abort)
+    {
+      EXPECT_EQ(log.Steps().size(), 4u + 1); // and the executive's 1 at the end
+      EXPECT_EQ(orbits->GetNumberOfPoints(), 4 * 65536 - 1); // the last t closes the orbit
+    }
+    else
+    {
+      EXPECT_LT(log.Steps().size(), 4u);
+      EXPECT_EQ(orbits->GetNumberOfPoints(), 0);
+      EXPECT_EQ(orbits->GetNumberOfCells(), 0);
+    }
+  }
 }
