@@ -155,9 +155,14 @@ vtkBoostedGridBuilder::vtkBoostedGridBuilder(int rows, int columns, bool periodi
   : Rows(rows)
   , Columns(columns)
   , PeriodicColumns(periodicColumns)
-  , Points(3 * static_cast<size_t>(rows) * columns, std::numeric_limits<double>::quiet_NaN())
+  , Points(new double[3 * static_cast<size_t>(rows) * columns])
   , FallbackNormals(3 * static_cast<size_t>(rows), 0.0)
 {
+  // Filled on the threads (with its first touch of the pages): an unset sample is NaN.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  double* points = this->Points.get();
+  vtkSMPTools::For(vtkIdType(0), 3 * static_cast<vtkIdType>(rows) * columns,
+    [points, nan](vtkIdType first, vtkIdType last) { std::fill(points + first, points + last, nan); });
 }
 
 void vtkBoostedGridBuilder::SetOrigin(const double origin[3])

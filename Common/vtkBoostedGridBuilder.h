@@ -33,6 +33,7 @@
 #include "BoostedSurfacesCommonModule.h" // for export macro
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -121,7 +122,7 @@ private:
   bool PeriodicColumns;
   bool MergeSeam = false;
   double Origin[3] = { 0.0, 0.0, 0.0 };
-  std::vector<double> Points; // relative to Origin
+  std::unique_ptr<double[]> Points; // 3 x rows x columns, relative to Origin; NaN: not set
   std::vector<double> FallbackNormals;
   std::vector<Parameter> Parameters;
   int RowsPerBlock = 0; // 0: one block of all rows
