@@ -291,8 +291,9 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
   // column and its pole refer back to its first points).
   const std::vector<Segment> segments =
     Segments(firstRow, lastRow, 0, columns, merge ? columns : ColumnsPerSegment);
-  // The new point of sample (r, c): -1 when it has none (unusable, or it reuses another's).
-  // `reuse(c, id)` is told when it reuses the point `id`.
+  // walk(segment, newPoint, reuse): newPoint(c) (returning the new point's id) for each sample
+  // of the segment that becomes a point of its own, reuse(c, id) for each usable sample that
+  // shares the point `id` (the merged seam column, a pole's samples); unusable samples are skipped.
   auto walk = [&](const Segment& s, auto&& newPoint, auto&& reuse) {
     if (merge && sameAs[s.Row - firstRow] != s.Row)
     {
