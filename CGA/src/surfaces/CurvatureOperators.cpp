@@ -140,29 +140,31 @@ CurvatureGenerator ControlPointSum::at(Vec3 p) const
 {
   // PointPairField does not fit here: its generator weights are fixed, while W_i depends on p
   // through the osculating circle distances as well as through |p - x_i|. The terms are
-  // osculatingCircles' and osculatingTerm's, in their order of operations.
-  auto term = [&p, this](const CurvatureControlPoint& c, Vec3 planeNormal, double kappa) {
-    if (kappa == 0.0)
-    {
-      return 0.0;
-    }
-    const Vec3 q = p - c.location;
-    const double sphere = 0.5 * norm2(q) + dot(q, c.normal) / kappa;
-    const double plane = dot(q, planeNormal) / kappa;
-    return kappa / (sphere * sphere + plane * plane + this->Epsilon);
-  };
+  // osculatingCircles' and osculatingTerm's, in their order of operations; |q|^2 and q.n, which
+  // they and eq 22's distance each compute, are computed once.
   CurvatureGenerator g;
   for (const Prepared& prepared : this->Points)
   {
     const CurvatureControlPoint& c = prepared.point;
-    const double weight = term(c, prepared.planeNormalU, c.kappaU) + term(c, prepared.planeNormalV, c.kappaV);
+    const Vec3 q = p - c.location;
+    const double q2 = norm2(q), qn = dot(q, c.normal);
+    auto term = [&](Vec3 planeNormal, double kappa) {
+      if (kappa == 0.0)
+      {
+        return 0.0;
+      }
+      const double sphere = 0.5 * q2 + qn / kappa;
+      const double plane = dot(q, planeNormal) / kappa;
+      return kappa / (sphere * sphere + plane * plane + this->Epsilon);
+    };
+    const double weight = term(prepared.planeNormalU, c.kappaU) + term(prepared.planeNormalV, c.kappaV);
     Bivector exponent;
     if (weight != 0.0) // else zero: tau of a far-away location may not be finite (0 * inf)
     {
       exponent = prepared.pair * (-weight);
     }
     // eq 22: d_p^2 = -2 up(p).up(x) = |p - x|^2
-    const double scale = 1.0 / (this->Falloff * norm2(p - c.location) + this->Epsilon);
+    const double scale = 1.0 / (this->Falloff * q2 + this->Epsilon);
     g.exponent += exponent * scale;
     g.weight += weight * scale;
   }
