@@ -366,6 +366,7 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
   forEach(segments.size(), [&](size_t i) {
     const Segment& s = segments[i];
     const int r = s.Row;
+    const double v = (r % this->BlockRows()) * vScale; // the texture coordinate of the row
     vtkIdType next = offsets[i];
     walk(
       s,
@@ -398,7 +399,7 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
         if (withTCoords)
         {
           tcoords->SetValue(2 * id, static_cast<float>(c * uScale));
-          tcoords->SetValue(2 * id + 1, static_cast<float>((r % this->BlockRows()) * vScale));
+          tcoords->SetValue(2 * id + 1, static_cast<float>(v));
         }
         for (size_t k = 0; k < parameters.size(); ++k)
         {

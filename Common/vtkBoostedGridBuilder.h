@@ -130,7 +130,8 @@ private:
   int BlockRows() const { return this->RowsPerBlock > 0 ? this->RowsPerBlock : this->Rows; }
   bool SameBlock(int rowA, int rowB) const
   {
-    return rowA / this->BlockRows() == rowB / this->BlockRows();
+    // One block (the default): no integer divisions in the per-sample normals.
+    return this->RowsPerBlock <= 0 || rowA / this->BlockRows() == rowB / this->BlockRows();
   }
 };
 
