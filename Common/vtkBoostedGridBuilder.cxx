@@ -13,6 +13,8 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
 
 #include "cga/Vec3.h"
 
@@ -22,6 +24,88 @@
 
 namespace
 {
+// The builder's passes run on vtkSMPTools' threads, each over its own runs of columns of one row
+// (segments) or its own rows: their points, array values and cells are numbered from per-item
+// counts, so the output is the same, bit for bit, whatever the threads. No pass allocates in a
+// worker thread.
+struct Segment
+{
+  int Row, FirstColumn, LastColumn; // columns [FirstColumn, LastColumn)
+};
+
+// Long rows are cut into segments of at most this many columns, so that a grid of a few long rows
+// (one orbit of a million samples) still spreads over the threads.
+constexpr int ColumnsPerSegment = 16384;
+
+std::vector<Segment> Segments(int firstRow, int lastRow, int firstColumn, int lastColumn, int perSegment)
+{
+  perSegment = std::max(1, perSegment);
+  std::vector<Segment> segments;
+  for (int r = firstRow; r <= lastRow; ++r)
+  {
+    for (int c = firstColumn; c < lastColumn; c += perSegment)
+    {
+      segments.push_back({ r, c, std::min(lastColumn, c + perSegment) });
+    }
+  }
+  return segments;
+}
+
+// work(i) for every i in [0, count), on vtkSMPTools' threads.
+template <typename Work>
+void forEach(size_t count, const Work& work)
+{
+  vtkSMPTools::For(vtkIdType(0), static_cast<vtkIdType>(count), [&work](vtkIdType first, vtkIdType last) {
+    for (vtkIdType i = first; i < last; ++i)
+    {
+      work(static_cast<size_t>(i));
+    }
+  });
+}
+
+// offsets[i] = counts[0] + ... + counts[i - 1]; offsets[counts.size()] is the total.
+std::vector<vtkIdType> PrefixSums(const std::vector<vtkIdType>& counts)
+{
+  std::vector<vtkIdType> offsets(counts.size() + 1, 0);
+  for (size_t i = 0; i < counts.size(); ++i)
+  {
+    offsets[i + 1] = offsets[i] + counts[i];
+  }
+  return offsets;
+}
+
+// Writes the cells of one item (a segment or a row) into the shared arrays, from its first cell
+// and its first connectivity index on.
+struct CellWriter
+{
+  vtkIdType* Offsets;
+  vtkIdType* Connectivity;
+  vtkIdType Cell, At;
+  void Start() { this->Offsets[this->Cell++] = this->At; }
+  void Add(vtkIdType id) { this->Connectivity[this->At++] = id; }
+};
+
+// The cells that fill(i, writer) writes for every item i in [0, cellCounts.size()), in item order
+// (item i: cellCounts[i] cells of sizes[i] ids in all), written on vtkSMPTools' threads.
+template <typename Fill>
+vtkSmartPointer<vtkCellArray> CellsInOrder(
+  const std::vector<vtkIdType>& cellCounts, const std::vector<vtkIdType>& sizes, const Fill& fill)
+{
+  const std::vector<vtkIdType> firstCells = PrefixSums(cellCounts), firstIds = PrefixSums(sizes);
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfValues(firstCells.back() + 1);
+  offsets->SetValue(firstCells.back(), firstIds.back());
+  connectivity->SetNumberOfValues(firstIds.back());
+  forEach(cellCounts.size(), [&](size_t i) {
+    CellWriter writer{ offsets->GetPointer(0), connectivity->GetPointer(0), firstCells[i],
+      firstIds[i] };
+    fill(i, writer);
+  });
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->SetData(offsets, connectivity);
+  return cells;
+}
+
 // Merged rows can leave points no cell uses (a pole between two poles, a row that repeats its
 // neighbour through infinity): they are dropped, so that an export (STL keeps only what its
 // triangles use) keeps every point.
@@ -71,9 +155,14 @@ vtkBoostedGridBuilder::vtkBoostedGridBuilder(int rows, int columns, bool periodi
   : Rows(rows)
   , Columns(columns)
   , PeriodicColumns(periodicColumns)
-  , Points(3 * static_cast<size_t>(rows) * columns, std::numeric_limits<double>::quiet_NaN())
+  , Points(new double[3 * static_cast<size_t>(rows) * columns])
   , FallbackNormals(3 * static_cast<size_t>(rows), 0.0)
 {
+  // Filled on the threads (with its first touch of the pages): an unset sample is NaN.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  double* points = this->Points.get();
+  vtkSMPTools::For(vtkIdType(0), 3 * static_cast<vtkIdType>(rows) * columns,
+    [points, nan](vtkIdType first, vtkIdType last) { std::fill(points + first, points + last, nan); });
 }
 
 void vtkBoostedGridBuilder::SetOrigin(const double origin[3])
@@ -82,14 +171,6 @@ void vtkBoostedGridBuilder::SetOrigin(const double origin[3])
   {
     this->Origin[i] = origin[i];
   }
-}
-
-void vtkBoostedGridBuilder::SetPoint(int row, int column, const double point[3])
-{
-  double* p = &this->Points[3 * this->Index(row, column)];
-  p[0] = point[0];
-  p[1] = point[1];
-  p[2] = point[2];
 }
 
 void vtkBoostedGridBuilder::SetRowFallbackNormal(int row, const double normal[3])
@@ -116,12 +197,6 @@ void vtkBoostedGridBuilder::AddPointParameter(
   const std::string& name, const std::vector<double>& valuePerPoint)
 {
   this->Parameters.push_back({ name, false, valuePerPoint, true });
-}
-
-bool vtkBoostedGridBuilder::Usable(int row, int column) const
-{
-  const double* p = &this->Points[3 * this->Index(row, column)];
-  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
 }
 
 void vtkBoostedGridBuilder::ComputeNormal(int row, int column, double normal[3]) const
@@ -196,30 +271,6 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
   vtkPolyData* output, int firstRow, int lastRow, int precision, bool withSurfaceAttributes) const
 {
   std::vector<long long> ids(static_cast<size_t>(this->Rows) * this->Columns, -1);
-  vtkNew<vtkPoints> points;
-  points->SetDataType(precision == vtkAlgorithm::SINGLE_PRECISION ? VTK_FLOAT : VTK_DOUBLE);
-
-  vtkNew<vtkFloatArray> normals;
-  normals->SetName("Normals");
-  normals->SetNumberOfComponents(3);
-  vtkNew<vtkFloatArray> tcoords;
-  tcoords->SetName("TextureCoordinates");
-  tcoords->SetNumberOfComponents(2);
-  std::vector<vtkSmartPointer<vtkDoubleArray>> parameters;
-  std::vector<vtkSmartPointer<vtkIntArray>> integerParameters;
-  for (const auto& parameter : this->IntegerParameters)
-  {
-    auto array = vtkSmartPointer<vtkIntArray>::New();
-    array->SetName(parameter.first.c_str());
-    integerParameters.push_back(array);
-  }
-  for (const Parameter& parameter : this->Parameters)
-  {
-    auto array = vtkSmartPointer<vtkDoubleArray>::New();
-    array->SetName(parameter.Name.c_str());
-    parameters.push_back(array);
-  }
-
   // Curves never repeat the seam (see below), so only surfaces merge.
   const bool merge = this->MergeSeam && withSurfaceAttributes;
   const bool withTCoords = withSurfaceAttributes && !merge;
@@ -234,64 +285,150 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
   // Curves need no texture seam: the repeated last column of periodic grids is left out.
   const int columns =
     (this->PeriodicColumns && !withSurfaceAttributes) ? this->Columns - 1 : this->Columns;
-  for (int r = firstRow; r <= lastRow; ++r)
-  {
-    if (merge && sameAs[r - firstRow] != r)
+
+  // Which samples become points, in grid order: the points of a segment of a row are numbered
+  // after those of the segments before it. With merging, a whole row is one segment (its seam
+  // column and its pole refer back to its first points).
+  const std::vector<Segment> segments =
+    Segments(firstRow, lastRow, 0, columns, merge ? columns : ColumnsPerSegment);
+  // walk(segment, newPoint, reuse): newPoint(c) (returning the new point's id) for each sample
+  // of the segment that becomes a point of its own, reuse(c, id) for each usable sample that
+  // shares the point `id` (the merged seam column, a pole's samples); unusable samples are skipped.
+  auto walk = [&](const Segment& s, auto&& newPoint, auto&& reuse) {
+    if (merge && sameAs[s.Row - firstRow] != s.Row)
     {
-      for (int c = 0; c < columns; ++c)
-      {
-        ids[this->Index(r, c)] = ids[this->Index(sameAs[r - firstRow], c)];
-      }
-      continue;
+      return; // a repeated row: its ids are copied below
     }
     long long poleId = -1;
-    for (int c = 0; c < columns; ++c)
+    for (int c = s.FirstColumn; c < s.LastColumn; ++c)
     {
-      if (!this->Usable(r, c))
+      if (!this->Usable(s.Row, c))
       {
         continue;
       }
       if (merge && this->PeriodicColumns && c == this->Columns - 1)
       {
-        ids[this->Index(r, c)] = ids[this->Index(r, 0)];
+        reuse(c, ids[this->Index(s.Row, 0)]);
         continue;
       }
       if (poleId >= 0)
       {
-        ids[this->Index(r, c)] = poleId;
+        reuse(c, poleId);
         continue;
       }
-      const double* relative = &this->Points[3 * this->Index(r, c)];
-      ids[this->Index(r, c)] = points->InsertNextPoint(this->Origin[0] + relative[0],
-        this->Origin[1] + relative[1], this->Origin[2] + relative[2]);
-      if (merge && pole[r - firstRow])
+      const long long id = newPoint(c);
+      if (merge && pole[s.Row - firstRow])
       {
-        poleId = ids[this->Index(r, c)];
+        poleId = id;
       }
-      if (withSurfaceAttributes)
+    }
+  };
+  std::vector<vtkIdType> counts(segments.size(), 0);
+  forEach(segments.size(), [&](size_t i) {
+    vtkIdType count = 0;
+    walk(segments[i], [&](int) { return count++; }, [](int, long long) {});
+    counts[i] = count;
+  });
+  const std::vector<vtkIdType> offsets = PrefixSums(counts);
+  const vtkIdType total = offsets.back();
+
+  vtkNew<vtkPoints> points;
+  points->SetDataType(precision == vtkAlgorithm::SINGLE_PRECISION ? VTK_FLOAT : VTK_DOUBLE);
+  points->SetNumberOfPoints(total);
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(withSurfaceAttributes ? total : 0);
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetName("TextureCoordinates");
+  tcoords->SetNumberOfComponents(2);
+  tcoords->SetNumberOfTuples(withTCoords ? total : 0);
+  std::vector<vtkSmartPointer<vtkDoubleArray>> parameters;
+  std::vector<vtkSmartPointer<vtkIntArray>> integerParameters;
+  for (const auto& parameter : this->IntegerParameters)
+  {
+    auto array = vtkSmartPointer<vtkIntArray>::New();
+    array->SetName(parameter.first.c_str());
+    array->SetNumberOfTuples(total);
+    integerParameters.push_back(array);
+  }
+  for (const Parameter& parameter : this->Parameters)
+  {
+    auto array = vtkSmartPointer<vtkDoubleArray>::New();
+    array->SetName(parameter.Name.c_str());
+    array->SetNumberOfTuples(total);
+    parameters.push_back(array);
+  }
+  auto* doublePoints = vtkDoubleArray::FastDownCast(points->GetData());
+  auto* floatPoints = vtkFloatArray::FastDownCast(points->GetData());
+
+  // Each segment writes its own range of every array.
+  forEach(segments.size(), [&](size_t i) {
+    const Segment& s = segments[i];
+    const int r = s.Row;
+    const double v = (r % this->BlockRows()) * vScale; // the texture coordinate of the row
+    vtkIdType next = offsets[i];
+    walk(
+      s,
+      [&](int c) {
+        const vtkIdType id = next++;
+        ids[this->Index(r, c)] = id;
+        const double* relative = &this->Points[3 * this->Index(r, c)];
+        const double p[3] = { this->Origin[0] + relative[0], this->Origin[1] + relative[1],
+          this->Origin[2] + relative[2] };
+        for (int k = 0; k < 3; ++k)
+        {
+          if (doublePoints)
+          {
+            doublePoints->SetValue(3 * id + k, p[k]);
+          }
+          else
+          {
+            floatPoints->SetValue(3 * id + k, static_cast<float>(p[k]));
+          }
+        }
+        if (withSurfaceAttributes)
+        {
+          double n[3];
+          this->ComputeNormal(r, c, n);
+          for (int k = 0; k < 3; ++k)
+          {
+            normals->SetValue(3 * id + k, static_cast<float>(n[k]));
+          }
+        }
+        if (withTCoords)
+        {
+          tcoords->SetValue(2 * id, static_cast<float>(c * uScale));
+          tcoords->SetValue(2 * id + 1, static_cast<float>(v));
+        }
+        for (size_t k = 0; k < parameters.size(); ++k)
+        {
+          const Parameter& parameter = this->Parameters[k];
+          parameters[k]->SetValue(id,
+            parameter.PerPoint ? parameter.Values[this->Index(r, c)]
+                               : parameter.Values[parameter.PerRow ? r : c]);
+        }
+        for (size_t k = 0; k < integerParameters.size(); ++k)
+        {
+          integerParameters[k]->SetValue(id, this->IntegerParameters[k].second[r]);
+        }
+        return static_cast<long long>(id);
+      },
+      [&](int c, long long id) { ids[this->Index(r, c)] = id; });
+  });
+  if (merge)
+  {
+    // A repeated row reuses the points of the row it repeats (an earlier row, numbered above).
+    for (int r = firstRow; r <= lastRow; ++r)
+    {
+      const int same = sameAs[r - firstRow];
+      if (same != r)
       {
-        double n[3];
-        this->ComputeNormal(r, c, n);
-        normals->InsertNextTuple(n);
-      }
-      if (withTCoords)
-      {
-        const double uv[2] = { c * uScale, (r % this->BlockRows()) * vScale };
-        tcoords->InsertNextTuple(uv);
-      }
-      for (size_t k = 0; k < parameters.size(); ++k)
-      {
-        const Parameter& parameter = this->Parameters[k];
-        parameters[k]->InsertNextValue(parameter.PerPoint
-            ? parameter.Values[this->Index(r, c)]
-            : parameter.Values[parameter.PerRow ? r : c]);
-      }
-      for (size_t k = 0; k < integerParameters.size(); ++k)
-      {
-        integerParameters[k]->InsertNextValue(this->IntegerParameters[k].second[r]);
+        std::copy_n(&ids[this->Index(same, 0)], columns, &ids[this->Index(r, 0)]);
       }
     }
   }
+
   output->SetPoints(points);
   if (withSurfaceAttributes)
   {
@@ -317,43 +454,60 @@ void vtkBoostedGridBuilder::BuildSurface(
 {
   const std::vector<long long> ids =
     this->WritePoints(output, firstRow, lastRow, outputPointsPrecision, true);
-  vtkNew<vtkCellArray> quads;
-  for (int r = firstRow; r < lastRow; ++r)
-  {
-    if (!this->SameBlock(r, r + 1))
+  // The cell of the quad between rows r, r + 1 and columns c, c + 1: its size (0: no cell).
+  auto quadCell = [&](int r, int c, vtkIdType cell[4]) -> vtkIdType {
+    const vtkIdType quad[4] = { ids[this->Index(r, c)], ids[this->Index(r, c + 1)],
+      ids[this->Index(r + 1, c + 1)], ids[this->Index(r + 1, c)] };
+    if (quad[0] < 0 || quad[1] < 0 || quad[2] < 0 || quad[3] < 0)
     {
-      continue; // blocks are separate strips
+      return 0;
     }
-    for (int c = 0; c + 1 < this->Columns; ++c)
+    // Merged points: a quad with a point twice is a triangle, one with fewer than three a
+    // degenerate cell that is left out (without merging all four are distinct).
+    vtkIdType size = 0;
+    for (int k = 0; k < 4; ++k)
     {
-      const vtkIdType quad[4] = { ids[this->Index(r, c)], ids[this->Index(r, c + 1)],
-        ids[this->Index(r + 1, c + 1)], ids[this->Index(r + 1, c)] };
-      if (quad[0] < 0 || quad[1] < 0 || quad[2] < 0 || quad[3] < 0)
+      if (size == 0 || cell[size - 1] != quad[k])
       {
-        continue;
+        cell[size++] = quad[k];
       }
-      // Merged points: a quad with a point twice is a triangle, one with fewer than three a
-      // degenerate cell that is left out (without merging all four are distinct).
-      vtkIdType cell[4];
-      vtkIdType size = 0;
-      for (int k = 0; k < 4; ++k)
+    }
+    while (size > 1 && cell[size - 1] == cell[0])
+    {
+      --size;
+    }
+    return (size == 4 && cell[0] != cell[2] && cell[1] != cell[3]) || size == 3 ? size : 0;
+  };
+  // The quads of row r start at column segments' first columns; blocks are separate strips.
+  std::vector<Segment> segments = Segments(firstRow, lastRow - 1, 0, this->Columns - 1, ColumnsPerSegment);
+  segments.erase(std::remove_if(segments.begin(), segments.end(),
+                   [this](const Segment& s) { return !this->SameBlock(s.Row, s.Row + 1); }),
+    segments.end());
+  std::vector<vtkIdType> cellCounts(segments.size(), 0), sizes(segments.size(), 0);
+  forEach(segments.size(), [&](size_t i) {
+    vtkIdType cell[4];
+    for (int c = segments[i].FirstColumn; c < segments[i].LastColumn; ++c)
+    {
+      const vtkIdType size = quadCell(segments[i].Row, c, cell);
+      cellCounts[i] += size > 0;
+      sizes[i] += size;
+    }
+  });
+  output->SetPolys(CellsInOrder(cellCounts, sizes, [&](size_t i, CellWriter& writer) {
+    vtkIdType cell[4];
+    for (int c = segments[i].FirstColumn; c < segments[i].LastColumn; ++c)
+    {
+      const vtkIdType size = quadCell(segments[i].Row, c, cell);
+      if (size > 0)
       {
-        if (size == 0 || cell[size - 1] != quad[k])
+        writer.Start();
+        for (vtkIdType k = 0; k < size; ++k)
         {
-          cell[size++] = quad[k];
+          writer.Add(cell[k]);
         }
       }
-      while (size > 1 && cell[size - 1] == cell[0])
-      {
-        --size;
-      }
-      if ((size == 4 && cell[0] != cell[2] && cell[1] != cell[3]) || size == 3)
-      {
-        quads->InsertNextCell(size, cell);
-      }
     }
-  }
-  output->SetPolys(quads);
+  }));
   if (this->MergeSeam)
   {
     dropUnusedPoints(output);
@@ -460,11 +614,33 @@ void vtkBoostedGridBuilder::BuildCurves(
   // With periodic columns the last column repeats the first: each row is a closed polyline of
   // grid indices.
   const int distinct = this->PeriodicColumns ? this->Columns - 1 : this->Columns;
-  vtkNew<vtkCellArray> lines;
+  const int rows = lastRow - firstRow + 1;
+  // A row whose samples are all usable is one polyline (closed with periodic columns), written
+  // in place below; the others are split into runs by the one walker first.
+  std::vector<char> whole(std::max(rows, 0), 0);
+  forEach(whole.size(), [&](size_t i) {
+    const int r = firstRow + static_cast<int>(i);
+    bool all = distinct >= 3;
+    for (int c = 0; c < distinct && all; ++c)
+    {
+      all = ids[this->Index(r, c)] >= 0;
+    }
+    whole[i] = all;
+  });
+  const vtkIdType wholeSize = this->PeriodicColumns ? distinct + 1 : distinct;
+  std::vector<vtkSmartPointer<vtkCellArray>> split(whole.size());
+  std::vector<vtkIdType> cellCounts(whole.size()), sizes(whole.size());
   vtkBoostedPolylineRuns runs;
   std::vector<vtkIdType> row(this->PeriodicColumns ? distinct + 1 : distinct);
-  for (int r = firstRow; r <= lastRow; ++r)
+  for (size_t i = 0; i < whole.size(); ++i)
   {
+    if (whole[i])
+    {
+      cellCounts[i] = 1;
+      sizes[i] = wholeSize;
+      continue;
+    }
+    const int r = firstRow + static_cast<int>(i);
     for (int c = 0; c < distinct; ++c)
     {
       row[c] = this->Index(r, c);
@@ -473,12 +649,40 @@ void vtkBoostedGridBuilder::BuildCurves(
     {
       row[distinct] = row[0];
     }
+    split[i] = vtkSmartPointer<vtkCellArray>::New();
     runs.Walk(
-      row.data(), static_cast<vtkIdType>(row.size()), [&ids](vtkIdType i) { return ids[i] >= 0; },
-      [&ids](vtkIdType i) { return static_cast<vtkIdType>(ids[i]); },
-      [](vtkIdType, vtkIdType) { return vtkIdType(-1); }, lines);
+      row.data(), static_cast<vtkIdType>(row.size()), [&ids](vtkIdType k) { return ids[k] >= 0; },
+      [&ids](vtkIdType k) { return static_cast<vtkIdType>(ids[k]); },
+      [](vtkIdType, vtkIdType) { return vtkIdType(-1); }, split[i]);
+    cellCounts[i] = split[i]->GetNumberOfCells();
+    sizes[i] = split[i]->GetNumberOfConnectivityIds();
   }
-  output->SetLines(lines);
+  output->SetLines(CellsInOrder(cellCounts, sizes, [&](size_t i, CellWriter& writer) {
+    const int r = firstRow + static_cast<int>(i);
+    if (whole[i])
+    {
+      writer.Start();
+      for (int c = 0; c < distinct; ++c)
+      {
+        writer.Add(ids[this->Index(r, c)]);
+      }
+      if (this->PeriodicColumns)
+      {
+        writer.Add(ids[this->Index(r, 0)]);
+      }
+      return;
+    }
+    vtkIdType count;
+    const vtkIdType* cell;
+    for (split[i]->InitTraversal(); split[i]->GetNextCell(count, cell);)
+    {
+      writer.Start();
+      for (vtkIdType k = 0; k < count; ++k)
+      {
+        writer.Add(cell[k]);
+      }
+    }
+  }));
 }
 
 void vtkBoostedGridBuilder::SetRowsPerBlock(int rowsPerBlock)

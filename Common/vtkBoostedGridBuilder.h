@@ -22,12 +22,18 @@
  * Only the piece's own rows are merged: a piece boundary is not a seam (a strip's closing row
  * whose first row is on another piece keeps its points). Merged points have one texture
  * coordinate for two (u = 0 and 1), so TextureCoordinates are left out.
+ *
+ * Building runs on vtkSMPTools' threads: runs of one row's columns each write their own range of
+ * the points, arrays and cells, numbered from per-run counts, so the output is the same, bit for
+ * bit, whatever the backend and the number of threads.
  */
 #ifndef vtkBoostedGridBuilder_h
 #define vtkBoostedGridBuilder_h
 
 #include "BoostedSurfacesCommonModule.h" // for export macro
 
+#include <cmath>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,7 +50,13 @@ public:
   /// point. A source far from the origin samples relative to its construction's center, so that
   /// its samples and their normals keep their precision (eps |origin| in the output).
   void SetOrigin(const double origin[3]);
-  void SetPoint(int row, int column, const double point[3]);
+  void SetPoint(int row, int column, const double point[3])
+  {
+    double* p = &this->Points[3 * static_cast<size_t>(this->Index(row, column))];
+    p[0] = point[0];
+    p[1] = point[1];
+    p[2] = point[2];
+  }
   /// Used where the grid gives no normal (a degenerate neighbourhood): e.g. the plane of the row's curve.
   void SetRowFallbackNormal(int row, const double normal[3]);
   /// A named per-point parameter, given per row and per column (value = row value or column value).
@@ -89,7 +101,12 @@ private:
   };
 
   int Index(int row, int column) const { return row * this->Columns + column; }
-  bool Usable(int row, int column) const;
+  // Inline (not through the shared library's PLT): called several times for every sample.
+  bool Usable(int row, int column) const
+  {
+    const double* p = &this->Points[3 * static_cast<size_t>(this->Index(row, column))];
+    return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+  }
   void ComputeNormal(int row, int column, double normal[3]) const;
   /// Writes the usable points of rows [firstRow, lastRow] and returns the map grid index -> point id.
   std::vector<long long> WritePoints(
@@ -105,7 +122,7 @@ private:
   bool PeriodicColumns;
   bool MergeSeam = false;
   double Origin[3] = { 0.0, 0.0, 0.0 };
-  std::vector<double> Points; // relative to Origin
+  std::unique_ptr<double[]> Points; // 3 x rows x columns, relative to Origin; NaN: not set
   std::vector<double> FallbackNormals;
   std::vector<Parameter> Parameters;
   int RowsPerBlock = 0; // 0: one block of all rows
@@ -113,7 +130,8 @@ private:
   int BlockRows() const { return this->RowsPerBlock > 0 ? this->RowsPerBlock : this->Rows; }
   bool SameBlock(int rowA, int rowB) const
   {
-    return rowA / this->BlockRows() == rowB / this->BlockRows();
+    // One block (the default): no integer divisions in the per-sample normals.
+    return this->RowsPerBlock <= 0 || rowA / this->BlockRows() == rowB / this->BlockRows();
   }
 };
 

@@ -124,6 +124,35 @@ bool vtkBoostedGridDriver::SampleGrid(const std::function<void(int, int)>& sampl
     });
 }
 
+bool vtkBoostedGridDriver::SampleColumns(const std::function<void(int, int, int)>& sample)
+{
+  const int firstRow = this->SampleFirst, lastRow = this->SampleLast;
+  return this->Sample(0, this->Columns, lastRow - firstRow + 1,
+    [&sample, firstRow, lastRow](vtkIdType first, vtkIdType last) {
+      for (vtkIdType c = first; c < last; ++c)
+      {
+        sample(static_cast<int>(c), firstRow, lastRow);
+      }
+    });
+}
+
+bool vtkBoostedGridDriver::SampleRuns(const std::function<void(int, int, int)>& sample)
+{
+  const vtkIdType columns = this->Columns;
+  return this->Sample(this->SampleFirst * columns, (this->SampleLast + 1) * columns, 1,
+    [&sample, columns](vtkIdType first, vtkIdType last) {
+      // The chunk [first, last) of row-major sample indices, cut where rows end.
+      for (vtkIdType i = first; i < last;)
+      {
+        const vtkIdType row = i / columns;
+        const vtkIdType end = std::min(last, (row + 1) * columns);
+        sample(static_cast<int>(row), static_cast<int>(i - row * columns),
+          static_cast<int>(end - row * columns));
+        i = end;
+      }
+    });
+}
+
 bool vtkBoostedGridDriver::Sample(vtkIdType begin, vtkIdType end, vtkIdType samplesPerItem,
   const std::function<void(vtkIdType, vtkIdType)>& work)
 {

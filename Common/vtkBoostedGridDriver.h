@@ -74,6 +74,13 @@ public:
   /// aborted or out of memory (one error; the output stays empty).
   bool SampleRows(const std::function<void(int row)>& sample);
   bool SampleGrid(const std::function<void(int row, int column)>& sample);
+  /// Step 2 for a map that is the same down a column (the orbits' exp(t B) at one t):
+  /// sample(column, firstRow, lastRow) for every column, over the rows this piece needs.
+  bool SampleColumns(const std::function<void(int column, int firstRow, int lastRow)>& sample);
+  /// Step 2 in batches: sample(row, firstColumn, lastColumn) over runs of one row's columns
+  /// [firstColumn, lastColumn) that together cover the samples of the rows this piece needs, so
+  /// that a source can hoist its per-row work and map a run at once.
+  bool SampleRuns(const std::function<void(int row, int firstColumn, int lastColumn)>& sample);
 
   /// Step 3: this piece's cells, cut at the clip sphere, into `output`. False (`output` left
   /// empty) when aborted, out of memory or refused as single precision (an error was reported).

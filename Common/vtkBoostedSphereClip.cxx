@@ -10,9 +10,11 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 
 #include "cga/SegmentSphere.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -30,13 +32,14 @@ void vtkBoostedSphereClip::Clip(
     return cga::Vec3{ p[0], p[1], p[2] };
   };
   std::vector<char> inside(count, 0);
-  vtkIdType insideCount = 0;
-  for (vtkIdType i = 0; i < count; ++i)
-  {
-    const cga::Vec3 p = point(i);
-    inside[i] = cga::isFinite(p) && cga::norm2(p - c) <= radius * radius;
-    insideCount += inside[i];
-  }
+  vtkSMPTools::For(0, count, [&](vtkIdType first, vtkIdType last) {
+    for (vtkIdType i = first; i < last; ++i)
+    {
+      const cga::Vec3 p = point(i);
+      inside[i] = cga::isFinite(p) && cga::norm2(p - c) <= radius * radius;
+    }
+  });
+  const vtkIdType insideCount = std::count(inside.begin(), inside.end(), 1);
   if (insideCount == count)
   {
     output->ShallowCopy(input); // nothing to cut

@@ -15,6 +15,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <vector>
 
 vtkStandardNewMacro(vtkCurvaturePatchSource);
 
@@ -141,17 +143,23 @@ int vtkCurvaturePatchSource::RequestData(
     return 1; // the output stays empty
   }
   const double fallback[3] = { patch.frame.normal.x, patch.frame.normal.y, patch.frame.normal.z };
-  // Every sample writes only its own grid slot: the builder's points and `weights`.
-  driver.SampleGrid([&](int r, int c) {
-    cga::Vec3 image;
-    double weight = 0.0;
-    if (patch.map(us[c], vs[r], image, weight)) // false: at infinity; left NaN and dropped
+  // Runs of a row's samples mapped at once (the block kernel), each writing only its own grid
+  // slots: the builder's points and `weights`.
+  driver.SampleRuns([&](int r, int first, int last) {
+    const size_t count = static_cast<size_t>(last - first);
+    std::vector<cga::Vec3> images(count);
+    std::unique_ptr<bool[]> mapped(new bool[count]);
+    patch.mapRow(vs[r], &us[first], count, images.data(),
+      &weights[static_cast<size_t>(r) * columns + first], mapped.get());
+    for (size_t i = 0; i < count; ++i)
     {
-      const double point[3] = { image.x, image.y, image.z };
-      grid.SetPoint(r, c, point);
-      weights[static_cast<size_t>(r) * columns + c] = weight;
+      if (mapped[i]) // false: at infinity; left NaN and dropped
+      {
+        const double point[3] = { images[i].x, images[i].y, images[i].z };
+        grid.SetPoint(r, first + static_cast<int>(i), point);
+      }
     }
-    if (c == 0)
+    if (first == 0)
     {
       grid.SetRowFallbackNormal(r, fallback);
     }

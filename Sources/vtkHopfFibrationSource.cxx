@@ -178,14 +178,15 @@ int vtkHopfFibrationSource::RequestData(
 
   vtkBoostedGridBuilder& grid = driver.Grid();
   std::atomic<int> failures{ 0 };
+  const std::vector<cga::Vec3> circle = cga::HopfFibration::circleSamples(this->FiberResolution);
   driver.SampleRows([&](int r) {
-    std::vector<cga::Vec3> points;
-    if (!hopf.fiberPoints(base.theta[r], base.phi[r], this->FiberResolution, points))
+    std::vector<cga::Vec3> points(columns);
+    if (!hopf.fiberPoints(base.theta[r], base.phi[r], circle, points.data()))
     {
       ++failures;
       return;
     }
-    points.push_back(points.front()); // the seam column
+    points[columns - 1] = points.front(); // the seam column
     for (int c = 0; c < columns; ++c)
     {
       const double p[3] = { points[c].x, points[c].y, points[c].z };

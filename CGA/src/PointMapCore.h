@@ -422,11 +422,11 @@ BOOSTED_CORE_INLINE void normalize(const T* p, const T* r, T* image, bool* mappe
   }
 }
 
-/// The map p -> fn(<K up(p) ~K>_1), K = exp(b) by the rule of args, for a given b = -strength
-/// B(p) (the generator tree's evaluation, GeneratorTree.h, gives B(p) without the direct sum);
-/// b is overwritten.
+/// The map p -> fn(<K up(p) ~K>_1), K = exp(b) by the rule of args, on every lane, for a given
+/// bivector b (overwritten): mapPoint after its B(p), for callers with their own exponent per point
+/// (kernel::MapBlockBy; the curvature patch, the generator tree's B(p)).
 template <typename T>
-void mapPointWithBivector(const kernel::FieldArgs& args, const T* p, T* b, T* image, bool* mapped)
+void mapPointBy(const kernel::FieldArgs& args, T* b, const T* p, T* image, bool* mapped)
 {
   T x[kVector], r[kVector];
   upPoint(p, x);
@@ -451,7 +451,7 @@ void mapPoint(const kernel::FieldArgs& args, const T* p, T* image, bool* mapped)
 {
   T b[kBivector];
   fieldBivector(args, p, -args.strength, b);
-  mapPointWithBivector(args, p, b, image, mapped);
+  mapPointBy(args, b, p, image, mapped);
 }
 } // namespace
 } // namespace core

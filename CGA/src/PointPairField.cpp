@@ -370,7 +370,7 @@ std::size_t mapPointsInBlocks(const kernel::FieldArgs& args,
 {
   constexpr int L = kernel::kLanes;
   const kernel::MapBlock mapBlock = kernel::activeMapBlock();
-  const kernel::MapBlockWithBivector mapBlockWithBivector = kernel::activeMapBlockWithBivector();
+  const kernel::MapBlockBy mapBlockBy = kernel::activeMapBlockBy();
   std::size_t unchanged = 0;
   alignas(64) double xyz[3 * L];
   alignas(64) double image[3 * L];
@@ -390,7 +390,11 @@ std::size_t mapPointsInBlocks(const kernel::FieldArgs& args,
     if (tree)
     {
       tree->evaluate(xyz, bivectors);
-      mapBlockWithBivector(args, xyz, bivectors, image, mapped);
+      for (double& component : bivectors)
+      {
+        component *= -args.strength; // the exponent, as mapBlock's
+      }
+      mapBlockBy(args, bivectors, xyz, image, mapped);
     }
     else
     {

@@ -47,27 +47,31 @@ using MapBlock = void (*)(const FieldArgs& args,
                           double* image,
                           std::uint8_t* mapped);
 
-/// The same for given bivectors (the generator tree's B(p), GeneratorTree.h): bivectors holds
-/// Bivector::Count components of B(p) per lane, component-major (bivectors[c * kLanes + l]); the
-/// kernel maps with K = exp(-strength B(p)) and does not read args.generators.
-using MapBlockWithBivector = void (*)(const FieldArgs& args,
-                                      const double* xyz,
-                                      const double* bivectors,
-                                      double* image,
-                                      std::uint8_t* mapped);
+/// The same for a given exponent per point: K = exp(b) by args' rule (its field and strength are
+/// not read), b holding the ten Bivector components of each lane's exponent, component-major
+/// (b[c * kLanes + l]); b is overwritten.
+using MapBlockBy = void (*)(const FieldArgs& args,
+                            double* bivectors,
+                            const double* xyz,
+                            double* image,
+                            std::uint8_t* mapped);
 
-#define BOOSTED_KERNEL_DECLARE(isa)                                                              \
-  namespace isa                                                                                  \
-  {                                                                                              \
-  void mapBlock(const FieldArgs&, const double*, double*, std::uint8_t*);                        \
-  void mapBlockWithBivector(const FieldArgs&, const double*, const double*, double*,             \
-                            std::uint8_t*);                                                      \
-  }
-BOOSTED_KERNEL_DECLARE(baseline)
+namespace baseline
+{
+void mapBlock(const FieldArgs&, const double*, double*, std::uint8_t*);
+void mapBlockBy(const FieldArgs&, double*, const double*, double*, std::uint8_t*);
+}
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
-BOOSTED_KERNEL_DECLARE(avx2)
-BOOSTED_KERNEL_DECLARE(avx512)
+namespace avx2
+{
+void mapBlock(const FieldArgs&, const double*, double*, std::uint8_t*);
+void mapBlockBy(const FieldArgs&, double*, const double*, double*, std::uint8_t*);
+}
+namespace avx512
+{
+void mapBlock(const FieldArgs&, const double*, double*, std::uint8_t*);
+void mapBlockBy(const FieldArgs&, double*, const double*, double*, std::uint8_t*);
+}
 #endif
-#undef BOOSTED_KERNEL_DECLARE
 } // namespace kernel
 } // namespace cga

@@ -16,7 +16,7 @@ struct Candidate
 {
   const char* name;
   MapBlock block;
-  MapBlockWithBivector blockWithBivector;
+  MapBlockBy blockBy;
   bool (*supported)();
 };
 
@@ -40,10 +40,10 @@ bool hasAvx512()
 
 // Narrowest first.
 const Candidate kCandidates[] = {
-  { "baseline", &baseline::mapBlock, &baseline::mapBlockWithBivector, &always },
+  { "baseline", &baseline::mapBlock, &baseline::mapBlockBy, &always },
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
-  { "avx2", &avx2::mapBlock, &avx2::mapBlockWithBivector, &hasAvx2 },
-  { "avx512", &avx512::mapBlock, &avx512::mapBlockWithBivector, &hasAvx512 },
+  { "avx2", &avx2::mapBlock, &avx2::mapBlockBy, &hasAvx2 },
+  { "avx512", &avx512::mapBlock, &avx512::mapBlockBy, &hasAvx512 },
 #endif
 };
 constexpr int kCandidateCount = sizeof(kCandidates) / sizeof(kCandidates[0]);
@@ -93,9 +93,9 @@ MapBlock activeMapBlock()
   return kCandidates[choice().load(std::memory_order_relaxed)].block;
 }
 
-MapBlockWithBivector activeMapBlockWithBivector()
+MapBlockBy activeMapBlockBy()
 {
-  return kCandidates[choice().load(std::memory_order_relaxed)].blockWithBivector;
+  return kCandidates[choice().load(std::memory_order_relaxed)].blockBy;
 }
 
 std::vector<std::string> availableInstructionSets()

@@ -11,7 +11,7 @@ namespace cga
 namespace kernel
 {
 MapBlock activeMapBlock();
-MapBlockWithBivector activeMapBlockWithBivector();
+MapBlockBy activeMapBlockBy();
 std::vector<std::string> availableInstructionSets();
 std::string activeInstructionSet();
 bool useInstructionSet(const std::string& name);

@@ -111,25 +111,20 @@ void mapBlock(const FieldArgs& args, const double* xyz, double* image, std::uint
     mapped[l] = ok[l] ? 1 : 0;
   }
 }
-
-void mapBlockWithBivector(const FieldArgs& args,
-                          const double* xyz,
-                          const double* bivectors,
-                          double* image,
-                          std::uint8_t* mapped)
+void mapBlockBy(const FieldArgs& args, double* bivectors, const double* xyz, double* image,
+  std::uint8_t* mapped)
 {
-  LaneVector p[3], out[3], b[Bivector::Count];
+  LaneVector b[core::kBivector], p[3], out[3];
+  for (int c = 0; c < core::kBivector; ++c)
+  {
+    fromLanes(bivectors + c * L, b[c]);
+  }
   for (int i = 0; i < 3; ++i)
   {
     fromLanes(xyz + i * L, p[i]);
   }
-  for (int c = 0; c < Bivector::Count; ++c)
-  {
-    fromLanes(bivectors + c * L, b[c]);
-    b[c] = b[c] * -args.strength;
-  }
   bool ok[L];
-  core::mapPointWithBivector(args, p, b, out, ok);
+  core::mapPointBy(args, b, p, out, ok);
   for (int i = 0; i < 3; ++i)
   {
     toLanes(out[i], image + i * L);

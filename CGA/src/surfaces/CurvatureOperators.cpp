@@ -114,18 +114,59 @@ CurvatureGenerator controlPoints(const CurvatureControlPoint* points,
                                  double epsilon,
                                  Vec3 shift)
 {
-  // PointPairField does not fit here: its generator weights are fixed, while W_i depends on p
-  // through the osculating circle distances as well as through |p - x_i|.
-  CurvatureGenerator g;
+  return ControlPointSum(points, count, falloff, epsilon, shift).at(p);
+}
+
+ControlPointSum::ControlPointSum(const CurvatureControlPoint* points, std::size_t count,
+  double falloff, double epsilon, Vec3 shift)
+  : Falloff(falloff)
+  , Epsilon(epsilon)
+{
   for (std::size_t i = 0; i < count; ++i)
   {
-    CurvatureControlPoint c = points[i];
-    c.location = c.location - shift;
-    const CurvatureGenerator one = osculatingCircles(c, p, epsilon);
+    Prepared prepared;
+    prepared.point = points[i];
+    prepared.point.location = points[i].location - shift;
+    const CurvatureControlPoint& c = prepared.point;
+    // osculatingCircles' pieces: tau(x, n) and, for osculatingTerm, cross(along, n).
+    prepared.pair = nullPointPairCompact(c.location, c.normal);
+    prepared.planeNormalU = cross(c.uDirection, c.normal);
+    prepared.planeNormalV = cross(cross(c.normal, c.uDirection), c.normal);
+    this->Points.push_back(prepared);
+  }
+}
+
+CurvatureGenerator ControlPointSum::at(Vec3 p) const
+{
+  // PointPairField does not fit here: its generator weights are fixed, while W_i depends on p
+  // through the osculating circle distances as well as through |p - x_i|. The terms are
+  // osculatingCircles' and osculatingTerm's, in their order of operations; |q|^2 and q.n, which
+  // they and eq 22's distance each compute, are computed once.
+  CurvatureGenerator g;
+  for (const Prepared& prepared : this->Points)
+  {
+    const CurvatureControlPoint& c = prepared.point;
+    const Vec3 q = p - c.location;
+    const double q2 = norm2(q), qn = dot(q, c.normal);
+    auto term = [&](Vec3 planeNormal, double kappa) {
+      if (kappa == 0.0)
+      {
+        return 0.0;
+      }
+      const double sphere = 0.5 * q2 + qn / kappa;
+      const double plane = dot(q, planeNormal) / kappa;
+      return kappa / (sphere * sphere + plane * plane + this->Epsilon);
+    };
+    const double weight = term(prepared.planeNormalU, c.kappaU) + term(prepared.planeNormalV, c.kappaV);
+    Bivector exponent;
+    if (weight != 0.0) // else zero: tau of a far-away location may not be finite (0 * inf)
+    {
+      exponent = prepared.pair * (-weight);
+    }
     // eq 22: d_p^2 = -2 up(p).up(x) = |p - x|^2
-    const double scale = 1.0 / (falloff * norm2(p - c.location) + epsilon);
-    g.exponent += one.exponent * scale;
-    g.weight += one.weight * scale;
+    const double scale = 1.0 / (this->Falloff * q2 + this->Epsilon);
+    g.exponent += exponent * scale;
+    g.weight += weight * scale;
   }
   return g;
 }

@@ -1,7 +1,8 @@
 #include "cga/surfaces/CurvaturePatch.h"
 
-#include "cga/PointSandwich.h"
+#include "cga/ExponentialMap.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cga
@@ -137,21 +138,52 @@ CurvatureGenerator CurvaturePatch::generatorAbout(double a, double b, Vec3 shift
 
 bool CurvaturePatch::map(double a, double b, Vec3& out, double& weight) const
 {
-  const CurvatureGenerator g = generatorAbout(a, b, frame.origin);
-  const Even k = exponential(g.exponent, rule);
-  Vec3 image;
-  if (!sandwichPoint(k, Vec3{} + a * frame.u + b * frame.v, image) || !isFinite(image))
+  bool mapped = false;
+  this->mapRow(b, &a, 1, &out, &weight, &mapped);
+  return mapped;
+}
+
+void CurvaturePatch::mapRow(
+  double b, const double* a, std::size_t count, Vec3* out, double* weights, bool* mapped) const
+{
+  // Computed about the origin (the patch moved by -origin, the images moved back).
+  constexpr std::size_t kChunk = 64;
+  // The control points' pieces that do not depend on the sample, once for the row.
+  const ControlPointSum controlPointSum(method == CurvatureMethod::ControlPoints
+      ? controlPoints.data() : nullptr,
+    method == CurvatureMethod::ControlPoints ? controlPoints.size() : 0, falloff, epsilon,
+    frame.origin);
+  PatchFrame moved = frame; // as generatorAbout moves it
+  moved.origin = frame.origin - frame.origin;
+  Bivector exponents[kChunk];
+  Vec3 points[kChunk], images[kChunk];
+  double chunkWeights[kChunk];
+  bool finite[kChunk];
+  for (std::size_t first = 0; first < count; first += kChunk)
   {
-    return false;
+    const std::size_t n = std::min(kChunk, count - first);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const CurvatureGenerator g = method == CurvatureMethod::ControlPoints
+        ? controlPointSum.at(moved.at(a[first + i], b))
+        : generatorAbout(a[first + i], b, frame.origin);
+      exponents[i] = g.exponent;
+      chunkWeights[i] = g.weight;
+      points[i] = Vec3{} + a[first + i] * frame.u + b * frame.v;
+    }
+    mapPointsByExponentials(exponents, points, n, rule, images, finite);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const Vec3 image = finite[i] ? frame.origin + images[i] : Vec3{};
+      // A weight beyond the largest double (curvatures near it) is a generator that overflowed:
+      // the sample is dropped like one at infinity rather than carried with an infinite weight.
+      mapped[first + i] = finite[i] && isFinite(image) && std::isfinite(chunkWeights[i]);
+      if (mapped[first + i])
+      {
+        out[first + i] = image;
+        weights[first + i] = chunkWeights[i];
+      }
+    }
   }
-  out = frame.origin + image;
-  // A weight beyond the largest double (curvatures near it) is a generator that overflowed: the
-  // sample is dropped like one at infinity rather than carried with an infinite weight.
-  if (!isFinite(out) || !std::isfinite(g.weight))
-  {
-    return false;
-  }
-  weight = g.weight;
-  return true;
 }
 } // namespace cga

@@ -8,6 +8,7 @@
 #include "cga/PointPairs.h"
 #include "cga/PointSandwich.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -68,11 +69,17 @@ std::string HopfFibration::validate() const
   return {};
 }
 
+void HopfFibration::worldFrame(Vec3& a, Vec3& b, Vec3& n) const
+{
+  n = normalized(normal);
+  a = orthogonalUnit(n);
+  b = cross(n, a);
+}
+
 Vec3 HopfFibration::toWorld(Vec3 p) const
 {
-  const Vec3 n = normalized(normal);
-  const Vec3 a = orthogonalUnit(n);
-  const Vec3 b = cross(n, a);
+  Vec3 a, b, n;
+  this->worldFrame(a, b, n);
   return center + radius * (p.x * a + p.y * b + p.z * n);
 }
 
@@ -180,29 +187,55 @@ bool HopfFibration::versor(double theta, double phi, Even& out) const
 bool HopfFibration::fiberPoints(double theta, double phi, int count, std::vector<Vec3>& out) const
 {
   out.clear();
+  if (count < 1)
+  {
+    return false;
+  }
+  out.resize(count);
+  if (!this->fiberPoints(theta, phi, circleSamples(count), out.data()))
+  {
+    out.clear();
+    return false;
+  }
+  return true;
+}
+
+std::vector<Vec3> HopfFibration::circleSamples(int count)
+{
+  std::vector<Vec3> circle(std::max(count, 0));
+  for (int j = 0; j < count; ++j)
+  {
+    const double t = 2.0 * kPi * j / count;
+    circle[j] = { std::cos(t), std::sin(t), 0.0 };
+  }
+  return circle;
+}
+
+bool HopfFibration::fiberPoints(
+  double theta, double phi, const std::vector<Vec3>& circle, Vec3* out) const
+{
   Even kh;
-  if (count < 1 || !this->versor(theta, phi, kh))
+  if (circle.empty() || !this->versor(theta, phi, kh))
   {
     return false;
   }
   const PointMap map(kh);
+  Vec3 a, b, n; // toWorld's frame, once per fiber
+  this->worldFrame(a, b, n);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  out.reserve(count);
-  for (int j = 0; j < count; ++j)
+  for (std::size_t j = 0; j < circle.size(); ++j)
   {
-    const double t = 2.0 * kPi * j / count;
     // A point sent to infinity has weight -ni.P = 0; round-off leaves about 1e-16 |P|, which
     // would normalize to a meaningless finite point, so such weights count as zero.
-    const ConformalVector image =
-      map.apply(ConformalVector::point({ std::cos(t), std::sin(t), 0.0 }));
+    const ConformalVector image = map.apply(ConformalVector::point(circle[j]));
     Vec3 p;
     if (std::fabs(image.weight()) > kInfinityWeight * image.maxAbs() && normalizePoint(image, p))
     {
-      out.push_back(this->toWorld(p));
+      out[j] = center + radius * (p.x * a + p.y * b + p.z * n);
     }
     else
     {
-      out.push_back({ nan, nan, nan });
+      out[j] = { nan, nan, nan };
     }
   }
   return true;

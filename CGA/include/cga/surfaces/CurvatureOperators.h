@@ -14,6 +14,7 @@
 #include "cga/Vec3.h"
 
 #include <string>
+#include <vector>
 
 namespace cga
 {
@@ -86,6 +87,28 @@ CurvatureGenerator controlPoints(const CurvatureControlPoint* points,
                                  double falloff,
                                  double epsilon,
                                  Vec3 shift = Vec3{});
+
+/// Eq 21-22 at many points: controlPoints() with the pieces that do not depend on p (each
+/// control point moved by -shift, its null point pair and the normals of its two osculating
+/// circles' planes) made once. at(p) is controlPoints(points, count, p, falloff, epsilon, shift),
+/// bit for bit.
+class ControlPointSum
+{
+public:
+  ControlPointSum(const CurvatureControlPoint* points, std::size_t count, double falloff,
+    double epsilon, Vec3 shift = Vec3{});
+  CurvatureGenerator at(Vec3 p) const;
+
+private:
+  struct Prepared
+  {
+    CurvatureControlPoint point; // moved by -shift
+    Bivector pair;               // tau(location, normal)
+    Vec3 planeNormalU, planeNormalV; // along x normal, for along = u and v = normal x u
+  };
+  std::vector<Prepared> Points;
+  double Falloff, Epsilon;
+};
 
 /// A corner generator of eq 24-26: weight * tau(location, direction).
 struct CornerGenerator

@@ -66,6 +66,13 @@ struct CurvaturePatch
   /// so that far from the space origin it rounds like eps |origin|, not eps |origin|^2.
   bool map(double a, double b, Vec3& out, double& weight) const;
 
+  /// map() of the samples (a[i], b) of one row, i < count, at once: the generators one by one,
+  /// their exponentials and sandwiches eight at a time in the block kernel
+  /// (mapPointsByExponentials). mapped[i] is map()'s return value; out[i] and weights[i] are left
+  /// unchanged where it is false. map() is this for one sample: the two agree bit for bit.
+  void mapRow(double b, const double* a, std::size_t count, Vec3* out, double* weights,
+    bool* mapped) const;
+
 private:
   /// E(a, b) of the patch moved by -shift.
   CurvatureGenerator generatorAbout(double a, double b, Vec3 shift) const;

@@ -64,8 +64,22 @@ struct HopfFibration
   /// that is farther than about 1e7 from the origin). Returns false when versor() fails.
   bool fiberPoints(double theta, double phi, int count, std::vector<Vec3>& out) const;
 
+  /// The canonical circle points (cos t, sin t, 0), t = 2 pi j / count, j = 0 .. count-1: the
+  /// same for every fiber, so a source computes them once for all its fibers.
+  static std::vector<Vec3> circleSamples(int count);
+
+  /// fiberPoints of the given canonical circle points (circleSamples(count)) into
+  /// out[0 .. circle.size()): the same points, without the per-fiber sines and cosines.
+  bool fiberPoints(double theta, double phi, const std::vector<Vec3>& circle, Vec3* out) const;
+
   /// Canonical frame to world: center + radius * (p.x a + p.y b + p.z n).
   Vec3 toWorld(Vec3 canonical) const;
+
+private:
+  /// The world directions (a, b, n) of the canonical axes.
+  void worldFrame(Vec3& a, Vec3& b, Vec3& n) const;
+
+public:
 
   // ---- the construction's pieces, with the full multivector product (reference) ----
 

@@ -1,0 +1,28 @@
+// The batch point map of constructions with their own exponent per point (the curvature patch):
+// p_i -> fn(<K_i up(p_i) ~K_i>_1) with K_i = exp(B_i), eight points at a time through the block
+// kernel of PointPairField::mapPoints after its B(p) (src/PointMapCore.h, mapPointBy), on the
+// instruction set mapPoints uses.
+#pragma once
+
+#include "cga/Compact.h"
+#include "cga/PointPairField.h"
+#include "cga/Vec3.h"
+
+#include <cstddef>
+
+namespace cga
+{
+/// out[i] = fn(<K up(p[i]) ~K>_1) with K = exp(b[i]) by `rule`, for i < count; mapped[i] says
+/// whether that image is finite (p[i] and b[i] finite, the image's weight non-zero); out[i] is
+/// left unchanged where it is not. Returns how many points were not mapped.
+///
+/// The same numbers as the pointwise sandwichPoint(exponential(b[i], rule), p[i]): to the bit for
+/// the Exact rule (one template source), to round-off for the Paper rule (its closed-form sandwich
+/// of c + B). The same bits on every instruction set and however the points are split into calls.
+std::size_t mapPointsByExponentials(const Bivector* b,
+                                    const Vec3* p,
+                                    std::size_t count,
+                                    ExponentialRule rule,
+                                    Vec3* out,
+                                    bool* mapped);
+} // namespace cga
