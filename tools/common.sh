@@ -19,6 +19,7 @@ DEBIAN_PACKAGES=(
   libexpat1-dev liblzma-dev liblz4-dev libdouble-conversion-dev zlib1g-dev libpng-dev
   libjpeg-dev libtiff-dev libfreetype-dev libx11-dev libxt-dev libglew-dev libgl-dev
   libopengl-dev libglx-dev
+  python3-mpmath libsleef-dev
 )
 
 log() { printf '\033[1m==> %s\033[0m\n' "$*"; }

@@ -18,6 +18,7 @@
 #pragma once
 
 #include "ExponentialScalars.h"
+#include "LaneMath.h"
 #include "PointPairKernel.h"
 #include "ProductTerms.h"
 
@@ -47,37 +48,6 @@ constexpr int kVector = ConformalVector::Count;
 constexpr int kQuadvector = Quadvector::Count;
 constexpr int kEven = Even::kCount; // scalar, bivector, quadvector (detail::pack order)
 constexpr int kOdd = 16;
-
-// The number type double: one lane.
-template <typename T>
-constexpr int kLanesOf = T::kLanes;
-template <>
-constexpr int kLanesOf<double> = 1;
-
-inline void toLanes(double x, double* lanes)
-{
-  lanes[0] = x;
-}
-inline void fromLanes(const double* lanes, double& x)
-{
-  x = lanes[0];
-}
-
-// The lanes of one T as an array, for the per-lane parts.
-template <typename T>
-struct LaneArray
-{
-  alignas(64) double v[kLanesOf<T>];
-
-  LaneArray() = default;
-  explicit LaneArray(const T& x) { toLanes(x, v); }
-  T value() const
-  {
-    T x;
-    fromLanes(v, x);
-    return x;
-  }
-};
 
 /// <B B>_0: e_ij^2 = -1; (e_i no)(e_i ni) and (e_i ni)(e_i no) have scalar part 1; (no^ni)^2 = 1.
 template <typename T>
@@ -193,28 +163,13 @@ void paperExponential(T* b, T& c, bool divideByCosh)
   constexpr int L = kLanesOf<T>;
   Scale<T> scale;
   unitScaled(b, scale, b);
-  const LaneArray<T>& m = scale.m;
-  const LaneArray<T> lh(scalarSquare(b));
-  LaneArray<T> r, x, cosine, sHat;
+  LaneArray<T> m = scale.m;
   for (int l = 0; l < L; ++l)
   {
-    r.v[l] = __builtin_sqrt(__builtin_fabs(lh.v[l]));
-    x.v[l] = m.v[l] * r.v[l];
+    m.v[l] = scale.usable(l) ? m.v[l] : 1.0;
   }
-  for (int l = 0; l < L; ++l)
-  {
-    // The power series of planeFunctions for every lane, in a loop of its own so that it
-    // vectorizes (sqrt's errno branch above would keep it scalar), then the transcendental form
-    // where it applies.
-    detail::planeSeries(m.v[l], lh.v[l], x.v[l], cosine.v[l], sHat.v[l]);
-  }
-  for (int l = 0; l < L; ++l)
-  {
-    if (!(x.v[l] < detail::kPlaneSeriesLimit) && scale.usable(l))
-    {
-      detail::planeTranscendental(lh.v[l], r.v[l], x.v[l], divideByCosh, cosine.v[l], sHat.v[l]);
-    }
-  }
+  const detail::PlaneFunctions<T> f = detail::planeFunctions(m.value(), scalarSquare(b), divideByCosh);
+  LaneArray<T> cosine(f.c), sHat(f.sHat);
   for (int l = 0; l < L; ++l)
   {
     cosine.v[l] = scale.guard(l, 1.0, cosine.v[l]);
@@ -228,24 +183,69 @@ void paperExponential(T* b, T& c, bool divideByCosh)
   }
 }
 
-/// exp(B) = a0 + a4 W + b0 B + b4 <W B>_2 from the power series in B^2 = s + W
-/// (detail::seriesCoefficients), into k (detail::pack order).
+/// Relative size, against the sum of the magnitudes of its terms, below which an invariant of the
+/// unit-scaled u = B/m is rounding: B's components carry a few units in the last place of their
+/// sums, the quadratic forms add their own (docs/conventions.md section 2 item 12).
+constexpr double kInvariantNoise = 32.0 * 0x1p-52;
+
+/// q where |q| exceeds kInvariantNoise times `terms` (the sum of its terms' magnitudes), else 0.
 template <typename T>
-void seriesExponential(const detail::BoostTables& tables, const T* b, T* k)
+BOOSTED_CORE_INLINE T dropRounding(const T& q, const T& terms)
 {
-  T w[kQuadvector], w2, wb[kBivector];
-  detail::applyTerms(tables.wedge, kQuadvector, b, b, w);
+  LaneArray<T> value(q);
+  const LaneArray<T> bound(terms);
+  for (int l = 0; l < kLanesOf<T>; ++l)
+  {
+    value.v[l] = __builtin_fabs(value.v[l]) <= kInvariantNoise * bound.v[l] ? 0.0 : value.v[l];
+  }
+  return value.value();
+}
+
+/// The invariants of u = B/m: W = u ^ u, w2 = W W, s = <u u>_0, each 0 where it is below the
+/// rounding of its terms. For a nilpotent B (a lone point pair) they are all rounding: dropping
+/// them keeps exp(B) = 1 + B, instead of a closed form in the square roots of noise times m^2.
+template <typename T>
+BOOSTED_CORE_INLINE void unitInvariants(const detail::BoostTables& tables, const T* u, T* w, T& w2, T& s)
+{
+  T absU[kBivector], wTerms[kQuadvector], absW[kQuadvector], w2Terms;
+  for (int c = 0; c < kBivector; ++c)
+  {
+    absU[c] = magnitude(u[c]);
+  }
+  detail::applyTerms(tables.wedge, kQuadvector, u, u, w);
+  detail::applyTermMagnitudes(tables.wedge, kQuadvector, absU, absU, wTerms);
+  for (int c = 0; c < kQuadvector; ++c)
+  {
+    w[c] = dropRounding(w[c], wTerms[c]);
+    absW[c] = magnitude(w[c]);
+  }
   detail::applyTerms(tables.quadvectorSquare, 1, w, w, &w2);
-  detail::applyTerms(tables.rightContraction, kBivector, w, b, wb);
-  const detail::SeriesCoefficients<T> c = detail::seriesCoefficients(scalarSquare(b), w2);
+  detail::applyTermMagnitudes(tables.quadvectorSquare, 1, absW, absW, &w2Terms);
+  w2 = dropRounding(w2, w2Terms);
+  const T sTerms = absU[E12] * absU[E12] + absU[E13] * absU[E13] + absU[E23] * absU[E23] +
+    2.0 * (absU[E1NO] * absU[E1NI] + absU[E2NO] * absU[E2NI] + absU[E3NO] * absU[E3NI]) +
+    absU[NONI] * absU[NONI];
+  s = dropRounding(scalarSquare(u), sTerms);
+}
+
+/// exp(B) = a0 + a4 W + b0 B + b4 <W B>_2 from the power series in B^2 = s + W
+/// (detail::seriesCoefficients), into k (detail::pack order), from the invariants of u = B/m
+/// (B^2 = m^2 (s_u + W_u)) and wu = <W_u u>_2. Only where m^2 |l| <= 1, so that the products by
+/// powers of m stay bounded.
+template <typename T>
+void seriesExponential(const T* b, const T& m, const T& su, const T* wUnit, const T& w2Unit,
+                       const T* wu, T* k)
+{
+  const T m2 = m * m;
+  const detail::SeriesCoefficients<T> c = detail::seriesCoefficients(su * m2, (w2Unit * m2) * m2);
   k[0] = c.a0;
   for (int i = 0; i < kBivector; ++i)
   {
-    k[1 + i] = c.b0 * b[i] + c.b4 * wb[i];
+    k[1 + i] = c.b0 * b[i] + c.b4 * ((wu[i] * m2) * m);
   }
   for (int i = 0; i < kQuadvector; ++i)
   {
-    k[1 + kBivector + i] = c.a4 * w[i];
+    k[1 + kBivector + i] = c.a4 * (wUnit[i] * m2);
   }
 }
 
@@ -259,58 +259,49 @@ void exactExponential(const detail::BoostTables& tables, const T* b, bool divide
   T u[kBivector];
   unitScaled(b, scale, u);
   const LaneArray<T>& m = scale.m;
-  T w[kQuadvector], w2;
-  detail::applyTerms(tables.wedge, kQuadvector, u, u, w);
-  detail::applyTerms(tables.quadvectorSquare, 1, w, w, &w2);
-  const LaneArray<T> s(scalarSquare(u)), w2Lanes(w2);
-  LaneArray<T> l1, l2;
+  T w[kQuadvector], w2, su;
+  unitInvariants(tables, u, w, w2, su);
+  T wu[kBivector];
+  detail::applyTerms(tables.rightContraction, kBivector, w, u, wu);
+  T l1Value, l2Value;
+  detail::planeSquares(su, w2, l1Value, l2Value);
+  const LaneArray<T> l1(l1Value), l2(l2Value);
+  LaneArray<T> mUsable;
   bool useSeries[L], closed[L];
   bool anySeries = false, anyClosed = false, allSeries = true, allClosed = true;
   for (int l = 0; l < L; ++l)
   {
-    detail::planeSquares(s.v[l], w2Lanes.v[l], l1.v[l], l2.v[l]);
     useSeries[l] = scale.usable(l) && detail::exactUsesSeries(m.v[l], l1.v[l], l2.v[l]);
     closed[l] = scale.usable(l) && !useSeries[l];
+    mUsable.v[l] = scale.usable(l) ? m.v[l] : 1.0;
     anySeries = anySeries || useSeries[l];
     anyClosed = anyClosed || closed[l];
     allSeries = allSeries && useSeries[l];
     allClosed = allClosed && closed[l];
   }
-  if (allSeries)
-  {
-    seriesExponential(tables, b, k);
-    return;
-  }
+  const T mValue = mUsable.value();
   T fromSeries[kEven] = {};
   if (anySeries)
   {
-    seriesExponential(tables, b, fromSeries);
+    seriesExponential(b, mValue, su, w, w2, wu, allSeries ? k : fromSeries);
+    if (allSeries)
+    {
+      return;
+    }
   }
   T fromClosed[kEven] = {};
   if (anyClosed)
   {
-    LaneArray<T> scalar, quadvector, bivector, bivectorW;
-    for (int l = 0; l < L; ++l)
-    {
-      const detail::ExactCoefficients c = closed[l]
-        ? detail::exactCoefficients(m.v[l], l1.v[l], l2.v[l], divideByCosh)
-        : detail::ExactCoefficients{ 0.0, 0.0, 0.0, 0.0 };
-      scalar.v[l] = c.scalar;
-      quadvector.v[l] = c.quadvector;
-      bivector.v[l] = c.bivector;
-      bivectorW.v[l] = c.bivectorW;
-    }
-    T wu[kBivector];
-    detail::applyTerms(tables.rightContraction, kBivector, w, u, wu);
-    fromClosed[0] = scalar.value();
-    const T cb = bivector.value(), cw = bivectorW.value(), cq = quadvector.value();
+    const detail::ExactCoefficients<T> c =
+      detail::exactCoefficients(mValue, l1.value(), l2.value(), divideByCosh);
+    fromClosed[0] = c.scalar;
     for (int i = 0; i < kBivector; ++i)
     {
-      fromClosed[1 + i] = cb * u[i] + cw * wu[i];
+      fromClosed[1 + i] = c.bivector * u[i] + c.bivectorW * wu[i];
     }
     for (int i = 0; i < kQuadvector; ++i)
     {
-      fromClosed[1 + kBivector + i] = cq * w[i];
+      fromClosed[1 + kBivector + i] = c.quadvector * w[i];
     }
   }
   if (allClosed)
@@ -422,6 +413,79 @@ BOOSTED_CORE_INLINE void normalize(const T* p, const T* r, T* image, bool* mappe
   }
 }
 
+/// T(t) B ~T(t) for the translator T(t) = 1 - t ni/2: with B = E + A_i e_i^no + C_i e_i^ni + d no^ni
+/// the vectors move as no -> up(t), e_i -> e_i + t_i ni, ni -> ni, so
+/// E'_ij = E_ij + A_i t_j - A_j t_i, A' = A, C'_k = C_k + E_kj t_j + (|t|^2/2) A_k - (A.t) t_k + d t_k,
+/// d' = d - A.t.
+template <typename T>
+BOOSTED_CORE_INLINE void translateBivector(const T* b, const T* t, T* out)
+{
+  const T a1 = b[E1NO], a2 = b[E2NO], a3 = b[E3NO], d = b[NONI];
+  const T e12 = b[E12], e13 = b[E13], e23 = b[E23];
+  const T at = a1 * t[0] + a2 * t[1] + a3 * t[2];
+  const T h = 0.5 * (t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+  out[E12] = e12 + (a1 * t[1] - a2 * t[0]);
+  out[E13] = e13 + (a1 * t[2] - a3 * t[0]);
+  out[E23] = e23 + (a2 * t[2] - a3 * t[1]);
+  out[E1NO] = a1;
+  out[E2NO] = a2;
+  out[E3NO] = a3;
+  out[E1NI] = b[E1NI] + (e12 * t[1] + e13 * t[2]) + (h * a1 - at * t[0]) + d * t[0];
+  out[E2NI] = b[E2NI] + (e23 * t[2] - e12 * t[0]) + (h * a2 - at * t[1]) + d * t[1];
+  out[E3NI] = b[E3NI] - (e13 * t[0] + e23 * t[1]) + (h * a3 - at * t[2]) + d * t[2];
+  out[NONI] = d - at;
+}
+
+/// 2^k for an integer |k| <= 1022, exactly.
+inline double powerOfTwo(int k)
+{
+  const unsigned long long bits = static_cast<unsigned long long>(k + 1023) << 52;
+  double x;
+  __builtin_memcpy(&x, &bits, sizeof x);
+  return x;
+}
+
+/// The binary exponent of a finite x > 0 (that of its leading bit; subnormals count as -1023).
+inline int binaryExponent(double x)
+{
+  unsigned long long bits;
+  __builtin_memcpy(&bits, &x, sizeof bits);
+  return static_cast<int>((bits >> 52) & 0x7ff) - 1023;
+}
+
+/// Balances B about the origin by the dilation x -> 2^k x, which scales the e_i^no components by
+/// 2^-k and the e_i^ni ones by 2^k (exactly: powers of two), with k making both about the same
+/// size. Returns 2^-k per lane: exp of the balanced B maps 2^k x to 2^k x', so x' = 2^-k times
+/// its image. Where one of the two parts is zero or B is not finite, k = 0.
+template <typename T>
+BOOSTED_CORE_INLINE LaneArray<T> balanceByDilation(T* b)
+{
+  constexpr int L = kLanesOf<T>;
+  const LaneArray<T> a1(b[E1NO]), a2(b[E2NO]), a3(b[E3NO]), c1(b[E1NI]), c2(b[E2NI]), c3(b[E3NI]);
+  LaneArray<T> up, down;
+  for (int l = 0; l < L; ++l)
+  {
+    const double a = __builtin_fmax(__builtin_fabs(a1.v[l]),
+                                    __builtin_fmax(__builtin_fabs(a2.v[l]), __builtin_fabs(a3.v[l])));
+    const double c = __builtin_fmax(__builtin_fabs(c1.v[l]),
+                                    __builtin_fmax(__builtin_fabs(c2.v[l]), __builtin_fabs(c3.v[l])));
+    const bool usable = a > 0.0 && c > 0.0 && a < __builtin_inf() && c < __builtin_inf();
+    const int k = usable ? (binaryExponent(a) - binaryExponent(c)) / 2 : 0;
+    up.v[l] = powerOfTwo(k);
+    down.v[l] = powerOfTwo(-k);
+  }
+  const T upValue = up.value(), downValue = down.value();
+  for (const int i : { E1NO, E2NO, E3NO })
+  {
+    b[i] = downValue * b[i];
+  }
+  for (const int i : { E1NI, E2NI, E3NI })
+  {
+    b[i] = upValue * b[i];
+  }
+  return down;
+}
+
 /// The map p -> fn(<K up(p) ~K>_1), K = exp(-strength B(p)) by the rule of args, on every lane.
 template <typename T>
 void mapPoint(const kernel::FieldArgs& args, const T* p, T* image, bool* mapped)
@@ -437,9 +501,33 @@ void mapPoint(const kernel::FieldArgs& args, const T* p, T* image, bool* mapped)
   }
   else
   {
+    // Relative to p (up(p) becomes no) and balanced by a dilation about p: near a generator with
+    // a small epsilon, B is a huge nilpotent part plus a small rest, and the closed form of its
+    // exponential would cancel terms of size |B|^2 / sqrt|l| (docs/conventions.md section 2 item 12).
+    const T t[3] = { -p[0], -p[1], -p[2] };
+    T moved[kBivector];
+    translateBivector(b, t, moved);
+    const LaneArray<T> down = balanceByDilation(moved);
     T k[kEven];
-    exactExponential(*args.tables, b, true, k);
-    sandwichEven(*args.tables, k, x, r);
+    exactExponential(*args.tables, moved, true, k);
+    T origin[kVector] = {}; // up(0) = no
+    origin[NO] = T{} + 1.0;
+    sandwichEven(*args.tables, k, origin, r);
+    const T zero[3] = {};
+    T offset[3];
+    normalize(zero, r, offset, mapped);
+    const T scale = down.value();
+    for (int i = 0; i < 3; ++i)
+    {
+      image[i] = p[i] + scale * offset[i];
+    }
+    const LaneArray<T> px(p[0]), py(p[1]), pz(p[2]);
+    for (int l = 0; l < kLanesOf<T>; ++l)
+    {
+      mapped[l] = mapped[l] && __builtin_isfinite(px.v[l]) && __builtin_isfinite(py.v[l]) &&
+        __builtin_isfinite(pz.v[l]);
+    }
+    return;
   }
   normalize(p, r, image, mapped);
 }

@@ -10,7 +10,7 @@
 #error "define BOOSTED_KERNEL_ISA before including PointPairKernelLanes.h"
 #endif
 
-#include "PointMapCore.h"
+#include "LaneMath.h"
 #include "PointPairKernel.h"
 
 namespace cga
@@ -91,8 +91,102 @@ inline void fromLanes(const double* lanes, LaneVector& v)
 {
   __builtin_memcpy(&v, lanes, sizeof v);
 }
+
+// The elementary functions of LaneMath.h on every lane, found by argument-dependent lookup: with
+// SLEEF on x86-64 its deterministic vector functions of this instruction set
+// (BOOSTED_KERNEL_SLEEF(name), set by the including file), which give the bits of the scalar
+// Sleef_cinz_*d1_u10purec that map() calls; otherwise the scalar function per lane.
+#if defined(BOOSTED_HAVE_SLEEF) && defined(BOOSTED_KERNEL_SLEEF)
+#define BOOSTED_LANE_FUNCTION(name, sleefName)                                                   \
+  inline LaneVector name(LaneVector x)                                                           \
+  {                                                                                              \
+    for (int i = 0; i < kParts; ++i)                                                             \
+    {                                                                                            \
+      x.part[i] = BOOSTED_KERNEL_SLEEF(sleefName)(x.part[i]);                                    \
+    }                                                                                            \
+    return x;                                                                                    \
+  }
+BOOSTED_LANE_FUNCTION(laneCosh, cosh)
+BOOSTED_LANE_FUNCTION(laneSinh, sinh)
+BOOSTED_LANE_FUNCTION(laneTanh, tanh)
+#undef BOOSTED_LANE_FUNCTION
+
+inline void laneSinCos(const LaneVector& x, LaneVector& sine, LaneVector& cosine)
+{
+  for (int i = 0; i < kParts; ++i)
+  {
+    const auto r = BOOSTED_KERNEL_SLEEF(sincos)(x.part[i]);
+    sine.part[i] = r.x;
+    cosine.part[i] = r.y;
+  }
+}
+#else
+#define BOOSTED_LANE_FUNCTION(name)                                                              \
+  inline LaneVector name(const LaneVector& x)                                                    \
+  {                                                                                              \
+    alignas(64) double lanes[L];                                                                 \
+    toLanes(x, lanes);                                                                           \
+    for (int l = 0; l < L; ++l)                                                                  \
+    {                                                                                            \
+      lanes[l] = core::name(lanes[l]);                                                           \
+    }                                                                                            \
+    LaneVector r;                                                                                \
+    fromLanes(lanes, r);                                                                         \
+    return r;                                                                                    \
+  }
+BOOSTED_LANE_FUNCTION(laneCosh)
+BOOSTED_LANE_FUNCTION(laneSinh)
+BOOSTED_LANE_FUNCTION(laneTanh)
+#undef BOOSTED_LANE_FUNCTION
+
+inline void laneSinCos(const LaneVector& x, LaneVector& sine, LaneVector& cosine)
+{
+  alignas(64) double lanes[L], s[L], c[L];
+  toLanes(x, lanes);
+  for (int l = 0; l < L; ++l)
+  {
+    core::laneSinCos(lanes[l], s[l], c[l]);
+  }
+  fromLanes(s, sine);
+  fromLanes(c, cosine);
+}
+#endif
+
+// Correctly rounded, as the scalar sqrt: the instruction set's own (BOOSTED_KERNEL_SQRT) where the
+// including file names it.
+inline LaneVector laneSqrt(LaneVector x)
+{
+#ifdef BOOSTED_KERNEL_SQRT
+  for (int i = 0; i < kParts; ++i)
+  {
+    x.part[i] = BOOSTED_KERNEL_SQRT(x.part[i]);
+  }
+  return x;
+#else
+  alignas(64) double lanes[L];
+  toLanes(x, lanes);
+  for (int l = 0; l < L; ++l)
+  {
+    lanes[l] = __builtin_sqrt(lanes[l]);
+  }
+  fromLanes(lanes, x);
+  return x;
+#endif
+}
 } // namespace
 
+} // namespace BOOSTED_KERNEL_ISA
+} // namespace kernel
+} // namespace cga
+
+#include "PointMapCore.h"
+
+namespace cga
+{
+namespace kernel
+{
+namespace BOOSTED_KERNEL_ISA
+{
 void mapBlock(const FieldArgs& args, const double* xyz, double* image, std::uint8_t* mapped)
 {
   LaneVector p[3], out[3];

@@ -54,6 +54,25 @@ void applyTerms(const ProductTerms& table, int results, const T* a, const T* b, 
     r[i] = sum;
   }
 }
+
+/// The same with every term's coefficient by its magnitude (a and b hold magnitudes): the sum of
+/// the terms' magnitudes, which bounds the rounding of applyTerms.
+template <typename T>
+void applyTermMagnitudes(const ProductTerms& table, int results, const T* a, const T* b, T* r)
+{
+  int t = 0;
+  for (int i = 0; i < results; ++i)
+  {
+    T sum{};
+    for (; t < table.size && table.terms[t].r == i; ++t)
+    {
+      const ProductTerm term = table.terms[t];
+      const double coefficient = term.coefficient < 0.0 ? -term.coefficient : term.coefficient;
+      sum = sum + coefficient * a[term.a] * b[term.b];
+    }
+    r[i] = sum;
+  }
+}
 } // namespace
 } // namespace detail
 } // namespace cga
