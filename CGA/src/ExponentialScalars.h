@@ -19,12 +19,19 @@ namespace detail
 {
 namespace
 {
-using core::LaneArray;
 using core::Mask;
-using core::lanesWhere;
-using core::magnitude;
-using core::select;
+using core::splat;
 // Unqualified calls: the lane vector's overloads come by argument-dependent lookup.
+using core::allLanes;
+using core::anyLane;
+using core::equalTo;
+using core::lessEqual;
+using core::lessThan;
+using core::magnitude;
+using core::maskAnd;
+using core::maskNot;
+using core::maskOr;
+using core::select;
 using core::laneCosh;
 using core::laneSinCos;
 using core::laneSinh;
@@ -43,13 +50,14 @@ constexpr double kScalingThreshold = 20.0;
 template <typename T>
 inline void planeSquares(const T& s, const T& w2, T& l1, T& l2)
 {
+  const T zero{};
   const T disc = s * s - w2;
-  const Mask<T> doubleRoot = lanesWhere(disc, [](double d) { return !(d > 0.0); });
-  const Mask<T> sPositive = lanesWhere(s, [](double x) { return x >= 0.0; });
-  const T r = laneSqrt(select(doubleRoot, T{}, disc));
+  const Mask<T> doubleRoot = maskNot(lessThan(zero, disc));
+  const Mask<T> sPositive = lessEqual(zero, s);
+  const T r = laneSqrt(select(doubleRoot, zero, disc));
   const T big = 0.5 * (s + select(sPositive, r, -r));
-  const Mask<T> bigZero = lanesWhere(big, [](double x) { return x == 0.0; });
-  const T small = select(bigZero, T{}, 0.25 * w2 / select(bigZero, T{} + 1.0, big));
+  const Mask<T> bigZero = equalTo(big, zero);
+  const T small = select(bigZero, zero, 0.25 * w2 / select(bigZero, splat<T>(1.0), big));
   const T half = 0.5 * s;
   l1 = select(doubleRoot, half, select(sPositive, big, small));
   l2 = select(doubleRoot, half, select(sPositive, small, big));
@@ -73,7 +81,7 @@ struct PlaneFunctions
 template <typename T>
 inline void planeSeries(const T& m, const T& lh, const T& x, T& c, T& sHat)
 {
-  const T l = select(lanesWhere(lh, [](double v) { return v >= 0.0; }), x * x, -x * x);
+  const T l = select(lessEqual(T{}, lh), x * x, -x * x);
   c = 1.0 + l / 2.0 * (1.0 + l / 12.0 * (1.0 + l / 30.0 * (1.0 + l / 56.0)));
   sHat = m * (1.0 + l / 6.0 * (1.0 + l / 20.0 * (1.0 + l / 42.0 * (1.0 + l / 72.0))));
 }
@@ -85,30 +93,32 @@ inline PlaneFunctions<T> planeFunctions(const T& m, const T& lh, bool divideByCo
   const T x = m * r;
   PlaneFunctions<T> f;
   planeSeries(m, lh, x, f.c, f.sHat);
-  const Mask<T> series = lanesWhere(x, [](double v) { return v < kPlaneSeriesLimit; });
+  const Mask<T> series = lessThan(x, splat<T>(kPlaneSeriesLimit));
   // NaN lanes (B not finite) take no branch: the caller replaces them.
-  const Mask<T> positive = lanesWhere(lh, [](double v) { return v > 0.0; });
-  const Mask<T> negative = lanesWhere(lh, [](double v) { return v <= 0.0; });
-  const Mask<T> large = lanesWhere(x, [divideByCosh](double v) { return divideByCosh && v > kScalingThreshold; });
-  const Mask<T> hyperbolic = !series && positive && !large;
-  const Mask<T> scaled = !series && positive && large;
-  const Mask<T> trigonometric = !series && negative;
-  if (!(hyperbolic.any() || scaled.any() || trigonometric.any()))
+  const Mask<T> positive = lessThan(T{}, lh);
+  const Mask<T> negative = lessEqual(lh, T{});
+  const Mask<T> large = divideByCosh ? lessThan(splat<T>(kScalingThreshold), x) : lessThan(x, x);
+  const Mask<T> hyperbolic = maskAnd(maskAnd(maskNot(series), positive), maskNot(large));
+  const Mask<T> scaled = maskAnd(maskAnd(maskNot(series), positive), large);
+  const Mask<T> trigonometric = maskAnd(maskNot(series), negative);
+  const bool anyHyperbolic = anyLane(hyperbolic), anyScaled = anyLane(scaled);
+  const bool anyTrigonometric = anyLane(trigonometric);
+  if (!(anyHyperbolic || anyScaled || anyTrigonometric))
   {
     return f;
   }
   T c = f.c, numerator = T{};
-  if (hyperbolic.any())
+  if (anyHyperbolic)
   {
     c = select(hyperbolic, laneCosh(x), c);
     numerator = select(hyperbolic, laneSinh(x), numerator);
   }
-  if (scaled.any())
+  if (anyScaled)
   {
-    c = select(scaled, T{} + 1.0, c);
+    c = select(scaled, splat<T>(1.0), c);
     numerator = select(scaled, laneTanh(x), numerator);
   }
-  if (trigonometric.any())
+  if (anyTrigonometric)
   {
     T sine, cosine;
     laneSinCos(x, sine, cosine);
@@ -126,8 +136,7 @@ inline T sinc(const T& x)
 {
   T sine, cosine;
   laneSinCos(x, sine, cosine);
-  return select(lanesWhere(x, [](double v) { return __builtin_fabs(v) < 1e-4; }), 1.0 - x * x / 6.0,
-                sine / x);
+  return select(lessThan(magnitude(x), splat<T>(1e-4)), 1.0 - x * x / 6.0, sine / x);
 }
 
 // exp(B) = scalar + quadvector w + bivector u + bivectorW <w u>_2 for the unit-scaled u = B/m,
@@ -141,16 +150,10 @@ struct ExactCoefficients
 template <typename T>
 inline ExactCoefficients<T> exactCoefficients(const T& m, const T& l1, const T& l2, bool divideByCosh)
 {
-  const T largest = select(lanesWhere(magnitude(l1) - magnitude(l2), [](double v) { return v < 0.0; }),
-                           magnitude(l2), magnitude(l1));
-  const LaneArray<T> difference(l1 - l2), tolerance(0.05 * largest), l1Lanes(l1);
-  Mask<T> separated;
-  for (int l = 0; l < core::kLanesOf<T>; ++l)
-  {
-    separated.v[l] = difference.v[l] >= tolerance.v[l] || l1Lanes.v[l] > 0.0;
-  }
+  const T largest = select(lessThan(magnitude(l1), magnitude(l2)), magnitude(l2), magnitude(l1));
+  const Mask<T> separated = maskOr(lessEqual(0.05 * largest, l1 - l2), lessThan(T{}, l1));
   ExactCoefficients<T> k{ T{}, T{}, T{}, T{} };
-  if (separated.any())
+  if (anyLane(separated))
   {
     // Well separated squares: the divided differences are accurate as written.
     const PlaneFunctions<T> f1 = planeFunctions(m, l1, divideByCosh);
@@ -160,7 +163,7 @@ inline ExactCoefficients<T> exactCoefficients(const T& m, const T& l1, const T& 
     k.quadvector = 0.5 * f1.sHat * f2.sHat;
     k.bivector = (l1 * f1.sHat * f2.c - l2 * f2.sHat * f1.c) / d;
     k.bivectorW = 0.5 * (f1.c * f2.sHat - f2.c * f1.sHat) / d;
-    if (separated.all())
+    if (allLanes(separated))
     {
       return k;
     }

@@ -54,90 +54,70 @@ struct LaneArray
   }
 };
 
-/// One flag per lane.
+/// One flag per lane: bool for double, the lane vector's own mask type (T::Mask) otherwise. The
+/// comparisons, selection and mask logic below have overloads for the lane vector
+/// (PointPairKernelLanes.h) that compile to vector compares and blends.
 template <typename T>
-struct Mask
+struct MaskOf
 {
-  bool v[kLanesOf<T>];
-
-  bool any() const
-  {
-    bool r = false;
-    for (int l = 0; l < kLanesOf<T>; ++l)
-    {
-      r = r || v[l];
-    }
-    return r;
-  }
-  bool all() const
-  {
-    bool r = true;
-    for (int l = 0; l < kLanesOf<T>; ++l)
-    {
-      r = r && v[l];
-    }
-    return r;
-  }
+  using type = typename T::Mask;
 };
-
-/// The lanes where predicate(x) holds.
-template <typename T, typename Predicate>
-inline Mask<T> lanesWhere(const T& x, Predicate predicate)
+template <>
+struct MaskOf<double>
 {
-  const LaneArray<T> a(x);
-  Mask<T> m;
-  for (int l = 0; l < kLanesOf<T>; ++l)
-  {
-    m.v[l] = predicate(a.v[l]);
-  }
-  return m;
-}
-
+  using type = bool;
+};
 template <typename T>
-inline Mask<T> operator&&(const Mask<T>& a, const Mask<T>& b)
-{
-  Mask<T> m;
-  for (int l = 0; l < kLanesOf<T>; ++l)
-  {
-    m.v[l] = a.v[l] && b.v[l];
-  }
-  return m;
-}
+using Mask = typename MaskOf<T>::type;
 
-template <typename T>
-inline Mask<T> operator!(const Mask<T>& a)
+inline bool lessThan(double a, double b)
 {
-  Mask<T> m;
-  for (int l = 0; l < kLanesOf<T>; ++l)
-  {
-    m.v[l] = !a.v[l];
-  }
-  return m;
+  return a < b;
 }
-
+inline bool lessEqual(double a, double b)
+{
+  return a <= b;
+}
+inline bool equalTo(double a, double b)
+{
+  return a == b;
+}
+inline bool maskAnd(bool a, bool b)
+{
+  return a && b;
+}
+inline bool maskOr(bool a, bool b)
+{
+  return a || b;
+}
+inline bool maskNot(bool a)
+{
+  return !a;
+}
+inline bool anyLane(bool a)
+{
+  return a;
+}
+inline bool allLanes(bool a)
+{
+  return a;
+}
 /// a where the mask is set, b elsewhere.
-template <typename T>
-inline T select(const Mask<T>& mask, const T& a, const T& b)
+inline double select(bool mask, double a, double b)
 {
-  const LaneArray<T> x(a), y(b);
-  LaneArray<T> r;
-  for (int l = 0; l < kLanesOf<T>; ++l)
-  {
-    r.v[l] = mask.v[l] ? x.v[l] : y.v[l];
-  }
-  return r.value();
+  return mask ? a : b;
+}
+/// |x| (the sign bit cleared, as the lane vector's).
+inline double magnitude(double x)
+{
+  return __builtin_fabs(x);
 }
 
-/// |x| on every lane.
+/// A number type's value c on every lane.
 template <typename T>
-inline T magnitude(const T& x)
+inline T splat(double c)
 {
-  LaneArray<T> a(x);
-  for (int l = 0; l < kLanesOf<T>; ++l)
-  {
-    a.v[l] = __builtin_fabs(a.v[l]);
-  }
-  return a.value();
+  return T{} + c;
 }
 
 // The elementary functions for one lane: the same as every lane of the block kernel computes.

@@ -155,20 +155,19 @@ BOOSTED_CORE_INLINE void unitScaled(const T* b, Scale<T>& scale, T* u)
   }
 }
 
-/// The Paper rule (expPaper): K = c + B' with on return b holding B' = sHat B/m; NaN where B is not
-/// finite, c = 1 and B' = 0 where B = 0.
+/// K = c + B' for the unit-scaled u = B/m (scale from unitScaled) with <u u>_0 = s: exp(B) where B
+/// is a 2-blade (B^2 = m^2 s), the Paper rule otherwise; on return u holds B' = sHat u. NaN where
+/// B is not finite, c = 1 and B' = 0 where B = 0.
 template <typename T>
-void paperExponential(T* b, T& c, bool divideByCosh)
+BOOSTED_CORE_INLINE void bladeExponential(const Scale<T>& scale, const T& s, bool divideByCosh, T* u, T& c)
 {
   constexpr int L = kLanesOf<T>;
-  Scale<T> scale;
-  unitScaled(b, scale, b);
   LaneArray<T> m = scale.m;
   for (int l = 0; l < L; ++l)
   {
     m.v[l] = scale.usable(l) ? m.v[l] : 1.0;
   }
-  const detail::PlaneFunctions<T> f = detail::planeFunctions(m.value(), scalarSquare(b), divideByCosh);
+  const detail::PlaneFunctions<T> f = detail::planeFunctions(m.value(), s, divideByCosh);
   LaneArray<T> cosine(f.c), sHat(f.sHat);
   for (int l = 0; l < L; ++l)
   {
@@ -179,8 +178,18 @@ void paperExponential(T* b, T& c, bool divideByCosh)
   const T factor = sHat.value();
   for (int i = 0; i < kBivector; ++i)
   {
-    b[i] = factor * b[i];
+    u[i] = factor * u[i];
   }
+}
+
+/// The Paper rule (expPaper): K = c + B' with on return b holding B' = sHat B/m; NaN where B is not
+/// finite, c = 1 and B' = 0 where B = 0.
+template <typename T>
+void paperExponential(T* b, T& c, bool divideByCosh)
+{
+  Scale<T> scale;
+  unitScaled(b, scale, b);
+  bladeExponential(scale, scalarSquare(b), divideByCosh, b, c);
 }
 
 /// Relative size, against the sum of the magnitudes of its terms, below which an invariant of the
@@ -192,13 +201,7 @@ constexpr double kInvariantNoise = 32.0 * 0x1p-52;
 template <typename T>
 BOOSTED_CORE_INLINE T dropRounding(const T& q, const T& terms)
 {
-  LaneArray<T> value(q);
-  const LaneArray<T> bound(terms);
-  for (int l = 0; l < kLanesOf<T>; ++l)
-  {
-    value.v[l] = __builtin_fabs(value.v[l]) <= kInvariantNoise * bound.v[l] ? 0.0 : value.v[l];
-  }
-  return value.value();
+  return select(lessEqual(magnitude(q), kInvariantNoise * terms), T{}, q);
 }
 
 /// The invariants of u = B/m: W = u ^ u, w2 = W W, s = <u u>_0, each 0 where it is below the
@@ -228,6 +231,21 @@ BOOSTED_CORE_INLINE void unitInvariants(const detail::BoostTables& tables, const
   s = dropRounding(scalarSquare(u), sTerms);
 }
 
+/// B scaled to u = B/m and the invariants of u (unitInvariants).
+template <typename T>
+struct UnitBivector
+{
+  Scale<T> scale;
+  T u[kBivector], w[kQuadvector], w2, s;
+};
+
+template <typename T>
+BOOSTED_CORE_INLINE void unitBivector(const detail::BoostTables& tables, const T* b, UnitBivector<T>& v)
+{
+  unitScaled(b, v.scale, v.u);
+  unitInvariants(tables, v.u, v.w, v.w2, v.s);
+}
+
 /// exp(B) = a0 + a4 W + b0 B + b4 <W B>_2 from the power series in B^2 = s + W
 /// (detail::seriesCoefficients), into k (detail::pack order), from the invariants of u = B/m
 /// (B^2 = m^2 (s_u + W_u)) and wu = <W_u u>_2. Only where m^2 |l| <= 1, so that the products by
@@ -236,31 +254,39 @@ template <typename T>
 void seriesExponential(const T* b, const T& m, const T& su, const T* wUnit, const T& w2Unit,
                        const T* wu, T* k)
 {
-  const T m2 = m * m;
-  const detail::SeriesCoefficients<T> c = detail::seriesCoefficients(su * m2, (w2Unit * m2) * m2);
+  // Products by powers of m one factor at a time: m^2 alone may overflow where the products
+  // do not (a zero invariant times a huge m).
+  const T s = (su * m) * m, w2 = (((w2Unit * m) * m) * m) * m;
+  // A nilpotent B (a lone point pair: s = W W = 0 on every lane) has the constant coefficients
+  // the loop would sum: 1, 1/2, 1, 1/6.
+  const detail::SeriesCoefficients<T> c =
+    allLanes(maskAnd(equalTo(s, T{}), equalTo(w2, T{})))
+    ? detail::SeriesCoefficients<T>{ splat<T>(1.0), splat<T>(0.5), splat<T>(1.0), splat<T>(0.5 / 3.0) }
+    : detail::seriesCoefficients(s, w2);
   k[0] = c.a0;
   for (int i = 0; i < kBivector; ++i)
   {
-    k[1 + i] = c.b0 * b[i] + c.b4 * ((wu[i] * m2) * m);
+    k[1 + i] = c.b0 * b[i] + c.b4 * (((wu[i] * m) * m) * m);
   }
   for (int i = 0; i < kQuadvector; ++i)
   {
-    k[1 + kBivector + i] = c.a4 * (wUnit[i] * m2);
+    k[1 + kBivector + i] = c.a4 * ((wUnit[i] * m) * m);
   }
 }
 
 /// The Exact rule (expExact) into k (detail::pack order): the power series where both squares of B
 /// are at most 1 in size, else the closed form in u = B/m; NaN where B is not finite.
 template <typename T>
-void exactExponential(const detail::BoostTables& tables, const T* b, bool divideByCosh, T* k)
+void exactExponential(
+  const detail::BoostTables& tables, const T* b, const UnitBivector<T>& unit, bool divideByCosh, T* k)
 {
   constexpr int L = kLanesOf<T>;
-  Scale<T> scale;
-  T u[kBivector];
-  unitScaled(b, scale, u);
+  const Scale<T>& scale = unit.scale;
+  const T* u = unit.u;
+  const T* w = unit.w;
+  const T& w2 = unit.w2;
+  const T& su = unit.s;
   const LaneArray<T>& m = scale.m;
-  T w[kQuadvector], w2, su;
-  unitInvariants(tables, u, w, w2, su);
   T wu[kBivector];
   detail::applyTerms(tables.rightContraction, kBivector, w, u, wu);
   T l1Value, l2Value;
@@ -336,6 +362,14 @@ void exactExponential(const detail::BoostTables& tables, const T* b, bool divide
   }
 }
 
+template <typename T>
+void exactExponential(const detail::BoostTables& tables, const T* b, bool divideByCosh, T* k)
+{
+  UnitBivector<T> unit;
+  unitBivector(tables, b, unit);
+  exactExponential(tables, b, unit, divideByCosh, k);
+}
+
 /// up(p) = no + p + |p|^2/2 ni (ConformalVector::point).
 template <typename T>
 BOOSTED_CORE_INLINE void upPoint(const T* p, T* x)
@@ -393,6 +427,21 @@ void sandwichEven(const detail::BoostTables& tables, const T* k, const T* x, T* 
   detail::applyTerms(tables.oddTimesEvenToVector, kVector, odd, reversed, r);
 }
 
+/// <K no ~K>_1 for a full even K: sandwichEven of the origin, with only the terms of K X that
+/// no contributes (BoostTables::evenTimesOrigin).
+template <typename T>
+void sandwichOrigin(const detail::BoostTables& tables, const T* k, T* r)
+{
+  T reversed[kEven], odd[kOdd];
+  for (int s = 0; s < kEven; ++s)
+  {
+    reversed[s] = (s >= 1 && s <= kBivector) ? -1.0 * k[s] : k[s];
+  }
+  const T one[1] = { splat<T>(1.0) };
+  detail::applyTerms(tables.evenTimesOrigin, kOdd, k, one, odd);
+  detail::applyTerms(tables.oddTimesEvenToVector, kVector, odd, reversed, r);
+}
+
 /// fn(r): the Euclidean point r_e / r_no, and whether it is mapped (normalizePoint: the weight is
 /// non-zero, the point and p are finite).
 template <typename T>
@@ -423,16 +472,24 @@ BOOSTED_CORE_INLINE void translateBivector(const T* b, const T* t, T* out)
   const T a1 = b[E1NO], a2 = b[E2NO], a3 = b[E3NO], d = b[NONI];
   const T e12 = b[E12], e13 = b[E13], e23 = b[E23];
   const T at = a1 * t[0] + a2 * t[1] + a3 * t[2];
-  const T h = 0.5 * (t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
   out[E12] = e12 + (a1 * t[1] - a2 * t[0]);
   out[E13] = e13 + (a1 * t[2] - a3 * t[0]);
   out[E23] = e23 + (a2 * t[2] - a3 * t[1]);
   out[E1NO] = a1;
   out[E2NO] = a2;
   out[E3NO] = a3;
-  out[E1NI] = b[E1NI] + (e12 * t[1] + e13 * t[2]) + (h * a1 - at * t[0]) + d * t[0];
-  out[E2NI] = b[E2NI] + (e23 * t[2] - e12 * t[0]) + (h * a2 - at * t[1]) + d * t[1];
-  out[E3NI] = b[E3NI] - (e13 * t[0] + e23 * t[1]) + (h * a3 - at * t[2]) + d * t[2];
+  // |t|^2/2 A_k - (A.t) t_k = sum_j t_j (t_j A_k / 2 - A_j t_k), the products of A and t first:
+  // for a tiny t (a patch of size 1e-160 under curvatures 1e160) |t|^2 would be subnormal.
+  const T a[3] = { a1, a2, a3 };
+  T quadratic[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    quadratic[k] = t[0] * (0.5 * (t[0] * a[k]) - a[0] * t[k]) + t[1] * (0.5 * (t[1] * a[k]) - a[1] * t[k]) +
+      t[2] * (0.5 * (t[2] * a[k]) - a[2] * t[k]);
+  }
+  out[E1NI] = b[E1NI] + (e12 * t[1] + e13 * t[2]) + quadratic[0] + d * t[0];
+  out[E2NI] = b[E2NI] + (e23 * t[2] - e12 * t[0]) + quadratic[1] + d * t[1];
+  out[E3NI] = b[E3NI] - (e13 * t[0] + e23 * t[1]) + quadratic[2] + d * t[2];
   out[NONI] = d - at;
 }
 
@@ -453,6 +510,11 @@ inline int binaryExponent(double x)
   return static_cast<int>((bits >> 52) & 0x7ff) - 1023;
 }
 
+inline double larger(double a, double b)
+{
+  return a < b ? b : a;
+}
+
 /// Balances B about the origin by the dilation x -> 2^k x, which scales the e_i^no components by
 /// 2^-k and the e_i^ni ones by 2^k (exactly: powers of two), with k making both about the same
 /// size. Returns 2^-k per lane: exp of the balanced B maps 2^k x to 2^k x', so x' = 2^-k times
@@ -465,12 +527,12 @@ BOOSTED_CORE_INLINE LaneArray<T> balanceByDilation(T* b)
   LaneArray<T> up, down;
   for (int l = 0; l < L; ++l)
   {
-    const double a = __builtin_fmax(__builtin_fabs(a1.v[l]),
-                                    __builtin_fmax(__builtin_fabs(a2.v[l]), __builtin_fabs(a3.v[l])));
-    const double c = __builtin_fmax(__builtin_fabs(c1.v[l]),
-                                    __builtin_fmax(__builtin_fabs(c2.v[l]), __builtin_fabs(c3.v[l])));
+    // (a NaN part gives NaN or a smaller value: either way the lane is NaN and k does not matter)
+    const double a = larger(__builtin_fabs(a1.v[l]), larger(__builtin_fabs(a2.v[l]), __builtin_fabs(a3.v[l])));
+    const double c = larger(__builtin_fabs(c1.v[l]), larger(__builtin_fabs(c2.v[l]), __builtin_fabs(c3.v[l])));
     const bool usable = a > 0.0 && c > 0.0 && a < __builtin_inf() && c < __builtin_inf();
-    const int k = usable ? (binaryExponent(a) - binaryExponent(c)) / 2 : 0;
+    const int half = usable ? (binaryExponent(a) - binaryExponent(c)) / 2 : 0;
+    const int k = half < -1022 ? -1022 : (half > 1022 ? 1022 : half);
     up.v[l] = powerOfTwo(k);
     down.v[l] = powerOfTwo(-k);
   }
@@ -486,6 +548,71 @@ BOOSTED_CORE_INLINE LaneArray<T> balanceByDilation(T* b)
   return down;
 }
 
+/// max |l| of the plane squares of u = B/m below which B counts as nearly nilpotent: a huge
+/// nilpotent part (a generator next to p with a small epsilon) plus a small rest.
+constexpr double kNearlyNilpotent = 1e-4;
+
+/// The Exact image of p computed relative to p (up(p) becomes no) and balanced by a dilation about
+/// p, for a nearly nilpotent B: there the closed form of exp(B) in the field's frame would cancel
+/// terms of size |B|^2 / sqrt|l| (docs/conventions.md section 2 item 12).
+template <typename T>
+void exactImageAroundPoint(const kernel::FieldArgs& args, const T* p, const T* b, T* image, bool* mapped)
+{
+  const detail::BoostTables& tables = *args.tables;
+  const T t[3] = { -p[0], -p[1], -p[2] };
+  T moved[kBivector];
+  translateBivector(b, t, moved);
+  const LaneArray<T> down = balanceByDilation(moved);
+  UnitBivector<T> unit;
+  unitBivector(tables, moved, unit);
+  // Where B is a 2-blade (W = 0: a lone point pair, generators at one place) exp(B) = c + sHat B
+  // and its sandwich has a closed form; elsewhere the full even K. A block computes the one its
+  // lanes need, both only where they differ, and each lane takes its own (the bits of map()).
+  Mask<T> blade = equalTo(unit.w[0], T{});
+  for (int i = 1; i < kQuadvector; ++i)
+  {
+    blade = maskAnd(blade, equalTo(unit.w[i], T{}));
+  }
+  const bool anyBlade = anyLane(blade), allBlade = allLanes(blade);
+  T origin[kVector] = {}; // up(0) = no
+  origin[NO] = splat<T>(1.0);
+  T r[kVector], fromBlade[kVector];
+  if (anyBlade)
+  {
+    T c, bp[kBivector];
+    for (int i = 0; i < kBivector; ++i)
+    {
+      bp[i] = unit.u[i];
+    }
+    bladeExponential(unit.scale, unit.s, true, bp, c);
+    sandwichScalarBivector(c, bp, origin, fromBlade);
+  }
+  if (!allBlade)
+  {
+    T k[kEven];
+    exactExponential(tables, moved, unit, true, k);
+    sandwichOrigin(tables, k, r);
+  }
+  for (int i = 0; i < kVector; ++i)
+  {
+    r[i] = allBlade ? fromBlade[i] : (anyBlade ? select(blade, fromBlade[i], r[i]) : r[i]);
+  }
+  const T zero[3] = {};
+  T offset[3];
+  normalize(zero, r, offset, mapped);
+  const T scale = down.value();
+  for (int i = 0; i < 3; ++i)
+  {
+    image[i] = p[i] + scale * offset[i];
+  }
+  const LaneArray<T> px(p[0]), py(p[1]), pz(p[2]);
+  for (int l = 0; l < kLanesOf<T>; ++l)
+  {
+    mapped[l] = mapped[l] && __builtin_isfinite(px.v[l]) && __builtin_isfinite(py.v[l]) &&
+      __builtin_isfinite(pz.v[l]);
+  }
+}
+
 /// The map p -> fn(<K up(p) ~K>_1), K = exp(-strength B(p)) by the rule of args, on every lane.
 template <typename T>
 void mapPoint(const kernel::FieldArgs& args, const T* p, T* image, bool* mapped)
@@ -498,38 +625,54 @@ void mapPoint(const kernel::FieldArgs& args, const T* p, T* image, bool* mapped)
     T c;
     paperExponential(b, c, true);
     sandwichScalarBivector(c, b, x, r);
+    normalize(p, r, image, mapped);
+    return;
   }
-  else
+  // Exact: in the field's frame, or around p where B is nearly nilpotent (each lane its own; a
+  // block computes both only where its lanes differ). A NaN lane takes the field's frame.
+  // The plane squares of B itself against kNearlyNilpotent m^2 (no division by m: a rough test).
+  T w[kQuadvector], w2, l1, l2;
+  detail::applyTerms(args.tables->wedge, kQuadvector, b, b, w);
+  detail::applyTerms(args.tables->quadvectorSquare, 1, w, w, &w2);
+  detail::planeSquares(scalarSquare(b), w2, l1, l2);
+  const T largest = select(lessThan(magnitude(l1), magnitude(l2)), magnitude(l2), magnitude(l1));
+  const T m = maxAbs(b).value();
+  const Mask<T> aroundPoint = lessThan(largest, (kNearlyNilpotent * m) * m);
+  const bool anyAround = anyLane(aroundPoint), allAround = allLanes(aroundPoint);
+  T around[3];
+  bool aroundMapped[kLanesOf<T>];
+  if (anyAround)
   {
-    // Relative to p (up(p) becomes no) and balanced by a dilation about p: near a generator with
-    // a small epsilon, B is a huge nilpotent part plus a small rest, and the closed form of its
-    // exponential would cancel terms of size |B|^2 / sqrt|l| (docs/conventions.md section 2 item 12).
-    const T t[3] = { -p[0], -p[1], -p[2] };
-    T moved[kBivector];
-    translateBivector(b, t, moved);
-    const LaneArray<T> down = balanceByDilation(moved);
-    T k[kEven];
-    exactExponential(*args.tables, moved, true, k);
-    T origin[kVector] = {}; // up(0) = no
-    origin[NO] = T{} + 1.0;
-    sandwichEven(*args.tables, k, origin, r);
-    const T zero[3] = {};
-    T offset[3];
-    normalize(zero, r, offset, mapped);
-    const T scale = down.value();
+    exactImageAroundPoint(args, p, b, around, aroundMapped);
+  }
+  if (allAround)
+  {
     for (int i = 0; i < 3; ++i)
     {
-      image[i] = p[i] + scale * offset[i];
+      image[i] = around[i];
     }
-    const LaneArray<T> px(p[0]), py(p[1]), pz(p[2]);
     for (int l = 0; l < kLanesOf<T>; ++l)
     {
-      mapped[l] = mapped[l] && __builtin_isfinite(px.v[l]) && __builtin_isfinite(py.v[l]) &&
-        __builtin_isfinite(pz.v[l]);
+      mapped[l] = aroundMapped[l];
     }
     return;
   }
+  T k[kEven];
+  exactExponential(*args.tables, b, true, k);
+  sandwichEven(*args.tables, k, x, r);
   normalize(p, r, image, mapped);
+  if (anyAround)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      image[i] = select(aroundPoint, around[i], image[i]);
+    }
+    const LaneArray<T> laneOf(select(aroundPoint, splat<T>(1.0), T{}));
+    for (int l = 0; l < kLanesOf<T>; ++l)
+    {
+      mapped[l] = laneOf.v[l] != 0.0 ? aroundMapped[l] : mapped[l];
+    }
+  }
 }
 } // namespace
 } // namespace core

@@ -35,9 +35,18 @@ constexpr int kParts = L * static_cast<int>(sizeof(double)) / BOOSTED_KERNEL_VEC
 static_assert(kParts >= 1 && kParts * BOOSTED_KERNEL_VECTOR_BYTES == L * sizeof(double),
               "lanes must fill whole registers");
 
+typedef long long NativeMask __attribute__((vector_size(BOOSTED_KERNEL_VECTOR_BYTES)));
+
+// Per-lane flags as the vector compares give them: all bits set or clear.
+struct LaneMask
+{
+  NativeMask part[kParts];
+};
+
 struct LaneVector
 {
   static constexpr int kLanes = L;
+  using Mask = LaneMask;
   NativeVector part[kParts];
 };
 
@@ -79,6 +88,89 @@ inline LaneVector operator-(LaneVector a)
     a.part[i] = -a.part[i];
   }
   return a;
+}
+
+// The comparisons, mask logic and selection of LaneMath.h, lane by lane in vector instructions.
+#define BOOSTED_LANE_COMPARISON(name, op)                                                        \
+  inline LaneMask name(const LaneVector& a, const LaneVector& b)                                 \
+  {                                                                                              \
+    LaneMask m;                                                                                  \
+    for (int i = 0; i < kParts; ++i)                                                             \
+    {                                                                                            \
+      m.part[i] = a.part[i] op b.part[i];                                                        \
+    }                                                                                            \
+    return m;                                                                                    \
+  }
+BOOSTED_LANE_COMPARISON(lessThan, <)
+BOOSTED_LANE_COMPARISON(lessEqual, <=)
+BOOSTED_LANE_COMPARISON(equalTo, ==)
+#undef BOOSTED_LANE_COMPARISON
+
+inline LaneMask maskAnd(LaneMask a, const LaneMask& b)
+{
+  for (int i = 0; i < kParts; ++i)
+  {
+    a.part[i] &= b.part[i];
+  }
+  return a;
+}
+
+inline LaneMask maskOr(LaneMask a, const LaneMask& b)
+{
+  for (int i = 0; i < kParts; ++i)
+  {
+    a.part[i] |= b.part[i];
+  }
+  return a;
+}
+
+inline LaneMask maskNot(LaneMask a)
+{
+  for (int i = 0; i < kParts; ++i)
+  {
+    a.part[i] = ~a.part[i];
+  }
+  return a;
+}
+
+inline bool anyLane(const LaneMask& m)
+{
+  NativeMask acc = m.part[0];
+  for (int i = 1; i < kParts; ++i)
+  {
+    acc |= m.part[i];
+  }
+  long long lanes = 0;
+  for (int l = 0; l < static_cast<int>(sizeof(NativeMask) / sizeof(long long)); ++l)
+  {
+    lanes |= acc[l];
+  }
+  return lanes != 0;
+}
+
+inline bool allLanes(const LaneMask& m)
+{
+  return !anyLane(maskNot(m));
+}
+
+inline LaneVector select(const LaneMask& m, const LaneVector& a, const LaneVector& b)
+{
+  LaneVector r;
+  for (int i = 0; i < kParts; ++i)
+  {
+    r.part[i] = m.part[i] ? a.part[i] : b.part[i];
+  }
+  return r;
+}
+
+inline LaneVector magnitude(LaneVector x)
+{
+  const NativeMask noSign = NativeMask{} + 0x7fffffffffffffffLL;
+  for (int i = 0; i < kParts; ++i)
+  {
+    x.part[i] = (NativeVector)((NativeMask)x.part[i] & noSign);
+  }
+  return x;
 }
 
 // The lane access PointMapCore.h finds by argument-dependent lookup.

@@ -27,11 +27,13 @@ struct ProductTerms
 };
 
 /// The products of the exponentials and of the sandwich (Exponential.cpp, PointSandwich.cpp):
-/// B ^ B, Q Q, Q _| B; K X (even times vector into odd) and <(K X) ~K>_1. Built once (CompactAlgebra.cpp).
+/// B ^ B, Q Q, Q _| B; K X (even times vector into odd) and <(K X) ~K>_1; K no (the terms of
+/// K X for X = no, whose one operand slot holds its coefficient). Built once (CompactAlgebra.cpp).
 struct BoostTables
 {
   ProductTerms wedge, quadvectorSquare, rightContraction;
   ProductTerms evenTimesVector, oddTimesEvenToVector;
+  ProductTerms evenTimesOrigin;
 };
 const BoostTables& boostTables();
 
