@@ -631,13 +631,21 @@ void mapPoint(const kernel::FieldArgs& args, const T* p, T* image, bool* mapped)
   // Exact: in the field's frame, or around p where B is nearly nilpotent (each lane its own; a
   // block computes both only where its lanes differ). A NaN lane takes the field's frame.
   // The plane squares of B itself against kNearlyNilpotent m^2 (no division by m: a rough test).
-  T w[kQuadvector], w2, l1, l2;
-  detail::applyTerms(args.tables->wedge, kQuadvector, b, b, w);
-  detail::applyTerms(args.tables->quadvectorSquare, 1, w, w, &w2);
-  detail::planeSquares(scalarSquare(b), w2, l1, l2);
-  const T largest = select(lessThan(magnitude(l1), magnitude(l2)), magnitude(l2), magnitude(l1));
+  // The larger one in size is at least |s|/2 (s = l1 + l2; planeSquares keeps that after
+  // rounding), so where every lane has |s|/2 above the threshold W need not be formed.
   const T m = maxAbs(b).value();
-  const Mask<T> aroundPoint = lessThan(largest, (kNearlyNilpotent * m) * m);
+  const T threshold = (kNearlyNilpotent * m) * m;
+  const T s = scalarSquare(b);
+  Mask<T> aroundPoint = lessThan(0.5 * magnitude(s), threshold);
+  if (anyLane(aroundPoint))
+  {
+    T w[kQuadvector], w2, l1, l2;
+    detail::applyTerms(args.tables->wedge, kQuadvector, b, b, w);
+    detail::applyTerms(args.tables->quadvectorSquare, 1, w, w, &w2);
+    detail::planeSquares(s, w2, l1, l2);
+    const T largest = select(lessThan(magnitude(l1), magnitude(l2)), magnitude(l2), magnitude(l1));
+    aroundPoint = lessThan(largest, threshold);
+  }
   const bool anyAround = anyLane(aroundPoint), allAround = allLanes(aroundPoint);
   T around[3];
   bool aroundMapped[kLanesOf<T>];
