@@ -208,8 +208,16 @@ BOOSTED_CORE_INLINE T dropRounding(const T& q, const T& terms)
 /// rounding of its terms. For a nilpotent B (a lone point pair) they are all rounding: dropping
 /// them keeps exp(B) = 1 + B, instead of a closed form in the square roots of noise times m^2.
 template <typename T>
-BOOSTED_CORE_INLINE void unitInvariants(const detail::BoostTables& tables, const T* u, T* w, T& w2, T& s)
+BOOSTED_CORE_INLINE void unitInvariants(
+  const detail::BoostTables& tables, const T* u, T* w, T& w2, T& s, bool dropNoise)
 {
+  if (!dropNoise)
+  {
+    detail::applyTerms(tables.wedge, kQuadvector, u, u, w);
+    detail::applyTerms(tables.quadvectorSquare, 1, w, w, &w2);
+    s = scalarSquare(u);
+    return;
+  }
   T absU[kBivector], wTerms[kQuadvector], absW[kQuadvector], w2Terms;
   for (int c = 0; c < kBivector; ++c)
   {
@@ -239,11 +247,14 @@ struct UnitBivector
   T u[kBivector], w[kQuadvector], w2, s;
 };
 
+/// dropNoise: unitInvariants drops the invariants that are rounding (needed where B may be
+/// nilpotent; the map's field frame, taken only where B is far from nilpotent, skips it).
 template <typename T>
-BOOSTED_CORE_INLINE void unitBivector(const detail::BoostTables& tables, const T* b, UnitBivector<T>& v)
+BOOSTED_CORE_INLINE void unitBivector(
+  const detail::BoostTables& tables, const T* b, UnitBivector<T>& v, bool dropNoise = true)
 {
   unitScaled(b, v.scale, v.u);
-  unitInvariants(tables, v.u, v.w, v.w2, v.s);
+  unitInvariants(tables, v.u, v.w, v.w2, v.s, dropNoise);
 }
 
 /// exp(B) = a0 + a4 W + b0 B + b4 <W B>_2 from the power series in B^2 = s + W
@@ -363,10 +374,11 @@ void exactExponential(
 }
 
 template <typename T>
-void exactExponential(const detail::BoostTables& tables, const T* b, bool divideByCosh, T* k)
+void exactExponential(
+  const detail::BoostTables& tables, const T* b, bool divideByCosh, T* k, bool dropNoise = true)
 {
   UnitBivector<T> unit;
-  unitBivector(tables, b, unit);
+  unitBivector(tables, b, unit, dropNoise);
   exactExponential(tables, b, unit, divideByCosh, k);
 }
 
@@ -666,7 +678,7 @@ void mapPoint(const kernel::FieldArgs& args, const T* p, T* image, bool* mapped)
     return;
   }
   T k[kEven];
-  exactExponential(*args.tables, b, true, k);
+  exactExponential(*args.tables, b, true, k, false);
   sandwichEven(*args.tables, k, x, r);
   normalize(p, r, image, mapped);
   if (anyAround)
