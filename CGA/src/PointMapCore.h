@@ -6,12 +6,14 @@
 // (the whole library is compiled with -ffp-contract=off: no fused multiply-add may round one
 // instantiation differently from the other).
 //
-// T needs +, -, * and / (also with a double on either side), unary -, T{} == 0, kLanesOf<T> lanes
-// and, found by argument-dependent lookup, toLanes(const T&, double*) and fromLanes(const double*,
-// T&). Arithmetic over components is written on T; what branches per lane (the choice of formula,
-// the scalar functions of ExponentialScalars.h) is written on the lanes copied to small arrays.
+// T needs +, -, * and / (also with a double on either side), unary -, T{} == 0, and what
+// LaneMath.h lists (lanes, masks, selection, the elementary functions), found by
+// argument-dependent lookup for the lane vector. Arithmetic over components is written on T; what
+// differs per lane (the choice of formula, of frame, of branch) is a per-lane selection, and a
+// branch runs only when some lane of the block takes it.
 //
-// Everything here has internal linkage (an unnamed namespace) and calls only builtins and libm:
+// Everything here has internal linkage (an unnamed namespace) and calls only builtins, libm and
+// SLEEF's functions for the translation unit's instruction set:
 // the kernel instantiates these templates in translation units compiled for AVX2 and AVX-512, and
 // a template instance or inline function with vague linkage emitted there could be the copy the
 // linker keeps for the baseline code too, which would then fault on an older CPU.
