@@ -20,6 +20,7 @@ DEBIAN_PACKAGES=(
   libjpeg-dev libtiff-dev libfreetype-dev libx11-dev libxt-dev libglew-dev libgl-dev
   libopengl-dev libglx-dev
   qtbase5-dev qttools5-dev qtxmlpatterns5-dev-tools
+  python3-mpmath libsleef-dev
 )
 
 log() { printf '\033[1m==> %s\033[0m\n' "$*"; }

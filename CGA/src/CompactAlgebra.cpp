@@ -20,8 +20,12 @@ struct BoostProducts
   SparseProduct evenTimesVector{ detail::kEvenBlades, ConformalVector::kBlades, detail::kOddBlades };
   SparseProduct oddTimesEvenToVector{ detail::kOddBlades, detail::kEvenBlades,
                                       ConformalVector::kBlades };
-  detail::BoostTables tables{ wedge.terms(), quadvectorSquare.terms(), rightContraction.terms(),
-                              evenTimesVector.terms(), oddTimesEvenToVector.terms() };
+  SparseProduct evenTimesOrigin{ detail::kEvenBlades,
+                                 std::array<unsigned, 1>{ ConformalVector::kBlades[ConformalVector::NO] },
+                                 detail::kOddBlades };
+  detail::BoostTables tables{ wedge.terms(),           quadvectorSquare.terms(),
+                              rightContraction.terms(), evenTimesVector.terms(),
+                              oddTimesEvenToVector.terms(), evenTimesOrigin.terms() };
 };
 
 const BoostProducts& boostProducts()

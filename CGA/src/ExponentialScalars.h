@@ -1,14 +1,17 @@
 // Internal: the scalar arithmetic of the closed-form exponentials: the squares of the two
 // commuting planes of a bivector, each plane's cosh/sinh (cos/sin) factors, the coefficients of
-// expExact and of its power series, sinc. The templates of PointMapCore.h call these per lane;
-// Logarithm.cpp uses planeSquares and sinc.
+// expExact and of its power series, sinc. Templates over the number type T of PointMapCore.h
+// (double, or the block kernel's vector of lanes): what differs from lane to lane is a selection
+// (LaneMath.h), and each elementary function runs only when some lane needs it, so that a block
+// whose lanes agree pays for one branch. Logarithm.cpp and Exponential.cpp use planeSquares and
+// sinc for double.
 //
-// Everything has internal linkage (an unnamed namespace) and uses only builtins and libm: the
-// kernel includes this file in translation units compiled for AVX2 and AVX-512, whose copies of a
-// shared inline function the linker could otherwise hand to code running on any CPU.
+// Everything has internal linkage (an unnamed namespace): the kernel includes this file in
+// translation units compiled for AVX2 and AVX-512, whose copies of a shared inline function the
+// linker could otherwise hand to code running on any CPU.
 #pragma once
 
-#include <math.h>
+#include "LaneMath.h"
 
 namespace cga
 {
@@ -16,6 +19,25 @@ namespace detail
 {
 namespace
 {
+using core::Mask;
+using core::splat;
+// Unqualified calls: the lane vector's overloads come by argument-dependent lookup.
+using core::allLanes;
+using core::anyLane;
+using core::equalTo;
+using core::lessEqual;
+using core::lessThan;
+using core::magnitude;
+using core::maskAnd;
+using core::maskNot;
+using core::maskOr;
+using core::select;
+using core::laneCosh;
+using core::laneSinCos;
+using core::laneSinh;
+using core::laneSqrt;
+using core::laneTanh;
+
 /// sqrt(l) of a hyperbolic factor above which the AvoidOverflow scaling divides by cosh
 /// (kExpScalingThreshold of Exponential.h; there tanh(x) rounds to 1).
 constexpr double kScalingThreshold = 20.0;
@@ -23,130 +45,143 @@ constexpr double kScalingThreshold = 20.0;
 // The squares l1 >= l2 of the two commuting planes of a bivector with <B B>_0 = s and
 // (B ^ B)^2 = w2: the roots of l^2 - s l + w2/4 = 0, since B^2 = l1 + l2 + 2 B1 B2 and
 // (2 B1 B2)^2 = 4 l1 l2. In R^{4,1} the roots are real; a negative discriminant is the rounding
-// of a double root.
-inline void planeSquares(double s, double w2, double& l1, double& l2)
+// of a double root. The larger root in size comes from the sum without cancellation, the other
+// from the product of the roots.
+template <typename T>
+inline void planeSquares(const T& s, const T& w2, T& l1, T& l2)
 {
-  const double disc = s * s - w2;
-  if (!(disc > 0.0))
-  {
-    // A double root, possibly split into a complex pair by rounding.
-    l1 = l2 = 0.5 * s;
-    return;
-  }
-  const double r = __builtin_sqrt(disc);
-  if (s >= 0.0)
-  {
-    l1 = 0.5 * (s + r);
-    l2 = l1 != 0.0 ? 0.25 * w2 / l1 : 0.0;
-  }
-  else
-  {
-    l2 = 0.5 * (s - r);
-    l1 = 0.25 * w2 / l2;
-  }
+  const T zero{};
+  const T disc = s * s - w2;
+  const Mask<T> doubleRoot = maskNot(lessThan(zero, disc));
+  const Mask<T> sPositive = lessEqual(zero, s);
+  const T r = laneSqrt(select(doubleRoot, zero, disc));
+  const T big = 0.5 * (s + select(sPositive, r, -r));
+  const Mask<T> bigZero = equalTo(big, zero);
+  const T small = select(bigZero, zero, 0.25 * w2 / select(bigZero, splat<T>(1.0), big));
+  const T half = 0.5 * s;
+  l1 = select(doubleRoot, half, select(sPositive, big, small));
+  l2 = select(doubleRoot, half, select(sPositive, small, big));
 }
+
+/// x = m sqrt|lh| below which planeFunctions uses the power series.
+constexpr double kPlaneSeriesLimit = 1e-2;
 
 // For one plane of square l = m^2 lh: c = cosh sqrt(l) (cos sqrt(-l) when l < 0) and
 // sHat = m sinh(sqrt l)/sqrt(l) (m sin(sqrt -l)/sqrt(-l)), i.e. the sinh factor of the plane
 // measured against the unit-scaled bivector B/m, so that a huge m does not overflow.
 // With divideByCosh and a hyperbolic sqrt(l) above the threshold both are divided by cosh.
+template <typename T>
 struct PlaneFunctions
 {
-  double c = 1.0;
-  double sHat = 0.0;
+  T c, sHat;
 };
-
-/// x = m sqrt|lh| below which planeFunctions uses the power series.
-constexpr double kPlaneSeriesLimit = 1e-2;
 
 // Power series in l = +-x^2 of both functions (x < kPlaneSeriesLimit): the result does not jump
 // at l = 0. Next term: l^5/10!.
-inline void planeSeries(double m, double lh, double x, double& c, double& sHat)
+template <typename T>
+inline void planeSeries(const T& m, const T& lh, const T& x, T& c, T& sHat)
 {
-  const double l = lh >= 0.0 ? x * x : -x * x;
+  const T l = select(lessEqual(T{}, lh), x * x, -x * x);
   c = 1.0 + l / 2.0 * (1.0 + l / 12.0 * (1.0 + l / 30.0 * (1.0 + l / 56.0)));
   sHat = m * (1.0 + l / 6.0 * (1.0 + l / 20.0 * (1.0 + l / 42.0 * (1.0 + l / 72.0))));
 }
 
-// The same outside the series range (x >= kPlaneSeriesLimit), with r = sqrt|lh|.
-inline void planeTranscendental(double lh, double r, double x, bool divideByCosh, double& c,
-                                double& sHat)
+template <typename T>
+inline PlaneFunctions<T> planeFunctions(const T& m, const T& lh, bool divideByCosh)
 {
-  if (lh > 0.0)
+  const T r = laneSqrt(magnitude(lh));
+  const T x = m * r;
+  PlaneFunctions<T> f;
+  planeSeries(m, lh, x, f.c, f.sHat);
+  const Mask<T> series = lessThan(x, splat<T>(kPlaneSeriesLimit));
+  // NaN lanes (B not finite) take no branch: the caller replaces them.
+  const Mask<T> positive = lessThan(T{}, lh);
+  const Mask<T> negative = lessEqual(lh, T{});
+  const Mask<T> large = divideByCosh ? lessThan(splat<T>(kScalingThreshold), x) : lessThan(x, x);
+  const Mask<T> hyperbolic = maskAnd(maskAnd(maskNot(series), positive), maskNot(large));
+  const Mask<T> scaled = maskAnd(maskAnd(maskNot(series), positive), large);
+  const Mask<T> trigonometric = maskAnd(maskNot(series), negative);
+  const bool anyHyperbolic = anyLane(hyperbolic), anyScaled = anyLane(scaled);
+  const bool anyTrigonometric = anyLane(trigonometric);
+  if (!(anyHyperbolic || anyScaled || anyTrigonometric))
   {
-    if (divideByCosh && x > kScalingThreshold)
-    {
-      c = 1.0;
-      sHat = tanh(x) / r;
-    }
-    else
-    {
-      c = cosh(x);
-      sHat = sinh(x) / r;
-    }
+    return f;
   }
-  else
+  T c = f.c, numerator = T{};
+  if (anyHyperbolic)
   {
-    c = cos(x);
-    sHat = sin(x) / r;
+    c = select(hyperbolic, laneCosh(x), c);
+    numerator = select(hyperbolic, laneSinh(x), numerator);
   }
-}
-
-inline PlaneFunctions planeFunctions(double m, double lh, bool divideByCosh)
-{
-  const double r = __builtin_sqrt(__builtin_fabs(lh));
-  const double x = m * r;
-  PlaneFunctions f;
-  if (x < kPlaneSeriesLimit)
+  if (anyScaled)
   {
-    planeSeries(m, lh, x, f.c, f.sHat);
+    c = select(scaled, splat<T>(1.0), c);
+    numerator = select(scaled, laneTanh(x), numerator);
   }
-  else
+  if (anyTrigonometric)
   {
-    planeTranscendental(lh, r, x, divideByCosh, f.c, f.sHat);
+    T sine, cosine;
+    laneSinCos(x, sine, cosine);
+    c = select(trigonometric, cosine, c);
+    numerator = select(trigonometric, sine, numerator);
   }
+  f.c = c;
+  f.sHat = select(series, f.sHat, numerator / r);
   return f;
 }
 
-inline double sinc(double x)
+/// sin(x)/x.
+template <typename T>
+inline T sinc(const T& x)
 {
-  return __builtin_fabs(x) < 1e-4 ? 1.0 - x * x / 6.0 : sin(x) / x;
+  T sine, cosine;
+  laneSinCos(x, sine, cosine);
+  return select(lessThan(magnitude(x), splat<T>(1e-4)), 1.0 - x * x / 6.0, sine / x);
 }
 
 // exp(B) = scalar + quadvector w + bivector u + bivectorW <w u>_2 for the unit-scaled u = B/m,
 // w = u ^ u, outside the series range: the closed form of expExact (Exponential.h).
+template <typename T>
 struct ExactCoefficients
 {
-  double scalar = 1.0, quadvector = 0.0, bivector = 0.0, bivectorW = 0.0;
+  T scalar, quadvector, bivector, bivectorW;
 };
 
-inline ExactCoefficients exactCoefficients(double m, double l1, double l2, bool divideByCosh)
+template <typename T>
+inline ExactCoefficients<T> exactCoefficients(const T& m, const T& l1, const T& l2, bool divideByCosh)
 {
-  const double largest = __builtin_fabs(l1) < __builtin_fabs(l2) ? __builtin_fabs(l2)
-                                                                  : __builtin_fabs(l1);
-  ExactCoefficients k;
-  if (l1 - l2 >= 0.05 * largest || l1 > 0.0)
+  const T largest = select(lessThan(magnitude(l1), magnitude(l2)), magnitude(l2), magnitude(l1));
+  const Mask<T> separated = maskOr(lessEqual(0.05 * largest, l1 - l2), lessThan(T{}, l1));
+  ExactCoefficients<T> k{ T{}, T{}, T{}, T{} };
+  if (anyLane(separated))
   {
     // Well separated squares: the divided differences are accurate as written.
-    const PlaneFunctions f1 = planeFunctions(m, l1, divideByCosh);
-    const PlaneFunctions f2 = planeFunctions(m, l2, divideByCosh);
-    const double d = l1 - l2;
+    const PlaneFunctions<T> f1 = planeFunctions(m, l1, divideByCosh);
+    const PlaneFunctions<T> f2 = planeFunctions(m, l2, divideByCosh);
+    const T d = l1 - l2;
     k.scalar = f1.c * f2.c;
     k.quadvector = 0.5 * f1.sHat * f2.sHat;
     k.bivector = (l1 * f1.sHat * f2.c - l2 * f2.sHat * f1.c) / d;
     k.bivectorW = 0.5 * (f1.c * f2.sHat - f2.c * f1.sHat) / d;
-    return k;
+    if (allLanes(separated))
+    {
+      return k;
+    }
   }
   // Two rotations with nearly equal angles t1, t2 (both squares negative, at least one below -1):
   // b0 = (sinc(t1 + t2) + sinc(t1 - t2))/2, b4 = (sinc(t1 - t2) - sinc(t1 + t2))/(4 t1 t2).
-  const double r1 = __builtin_sqrt(-l1), r2 = __builtin_sqrt(-l2);
-  const double t1 = m * r1, t2 = m * r2;
-  const double mSincSum = sin(t1 + t2) / (r1 + r2); // m sinc(t1 + t2)
-  const double mSincDiff = m * sinc(t1 - t2);
-  k.scalar = cos(t1) * cos(t2);
-  k.quadvector = 0.5 * (sin(t1) / r1) * (sin(t2) / r2);
-  k.bivector = 0.5 * (mSincSum + mSincDiff);
-  k.bivectorW = 0.25 * (mSincDiff - mSincSum) / (r1 * r2);
+  const T r1 = laneSqrt(-l1), r2 = laneSqrt(-l2);
+  const T t1 = m * r1, t2 = m * r2;
+  T sin1, cos1, sin2, cos2, sinSum, cosSum;
+  laneSinCos(t1, sin1, cos1);
+  laneSinCos(t2, sin2, cos2);
+  laneSinCos(t1 + t2, sinSum, cosSum);
+  const T mSincSum = sinSum / (r1 + r2); // m sinc(t1 + t2)
+  const T mSincDiff = m * sinc(t1 - t2);
+  k.scalar = select(separated, k.scalar, cos1 * cos2);
+  k.quadvector = select(separated, k.quadvector, 0.5 * (sin1 / r1) * (sin2 / r2));
+  k.bivector = select(separated, k.bivector, 0.5 * (mSincSum + mSincDiff));
+  k.bivectorW = select(separated, k.bivectorW, 0.25 * (mSincDiff - mSincSum) / (r1 * r2));
   return k;
 }
 
@@ -161,7 +196,6 @@ inline bool exactUsesSeries(double m, double l1, double l2)
 // The power series of expExact: exp(B) = a0 + a4 W + b0 B + b4 <W B>_2 with B^2k = ak + bk W,
 // (ak+1, bk+1) = (s ak + (W W) bk, ak + s bk), s = <B B>_0. For |l1|, |l2| <= 1 the terms fall
 // below 4^k/(2k)!, so 16 of them reach double precision.
-// T is double, or the block kernel's vector of lanes (anything with +, * and / by a double).
 template <typename T>
 struct SeriesCoefficients
 {

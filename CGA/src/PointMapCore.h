@@ -6,18 +6,21 @@
 // (the whole library is compiled with -ffp-contract=off: no fused multiply-add may round one
 // instantiation differently from the other).
 //
-// T needs +, -, * and / (also with a double on either side), unary -, T{} == 0, kLanesOf<T> lanes
-// and, found by argument-dependent lookup, toLanes(const T&, double*) and fromLanes(const double*,
-// T&). Arithmetic over components is written on T; what branches per lane (the choice of formula,
-// the scalar functions of ExponentialScalars.h) is written on the lanes copied to small arrays.
+// T needs +, -, * and / (also with a double on either side), unary -, T{} == 0, and what
+// LaneMath.h lists (lanes, masks, selection, the elementary functions), found by
+// argument-dependent lookup for the lane vector. Arithmetic over components is written on T; what
+// differs per lane (the choice of formula, of frame, of branch) is a per-lane selection, and a
+// branch runs only when some lane of the block takes it.
 //
-// Everything here has internal linkage (an unnamed namespace) and calls only builtins and libm:
+// Everything here has internal linkage (an unnamed namespace) and calls only builtins, libm and
+// SLEEF's functions for the translation unit's instruction set:
 // the kernel instantiates these templates in translation units compiled for AVX2 and AVX-512, and
 // a template instance or inline function with vague linkage emitted there could be the copy the
 // linker keeps for the baseline code too, which would then fault on an older CPU.
 #pragma once
 
 #include "ExponentialScalars.h"
+#include "LaneMath.h"
 #include "PointPairKernel.h"
 #include "ProductTerms.h"
 
@@ -47,37 +50,6 @@ constexpr int kVector = ConformalVector::Count;
 constexpr int kQuadvector = Quadvector::Count;
 constexpr int kEven = Even::kCount; // scalar, bivector, quadvector (detail::pack order)
 constexpr int kOdd = 16;
-
-// The number type double: one lane.
-template <typename T>
-constexpr int kLanesOf = T::kLanes;
-template <>
-constexpr int kLanesOf<double> = 1;
-
-inline void toLanes(double x, double* lanes)
-{
-  lanes[0] = x;
-}
-inline void fromLanes(const double* lanes, double& x)
-{
-  x = lanes[0];
-}
-
-// The lanes of one T as an array, for the per-lane parts.
-template <typename T>
-struct LaneArray
-{
-  alignas(64) double v[kLanesOf<T>];
-
-  LaneArray() = default;
-  explicit LaneArray(const T& x) { toLanes(x, v); }
-  T value() const
-  {
-    T x;
-    fromLanes(v, x);
-    return x;
-  }
-};
 
 /// <B B>_0: e_ij^2 = -1; (e_i no)(e_i ni) and (e_i ni)(e_i no) have scalar part 1; (no^ni)^2 = 1.
 template <typename T>
@@ -185,36 +157,20 @@ BOOSTED_CORE_INLINE void unitScaled(const T* b, Scale<T>& scale, T* u)
   }
 }
 
-/// The Paper rule (expPaper): K = c + B' with on return b holding B' = sHat B/m; NaN where B is not
-/// finite, c = 1 and B' = 0 where B = 0.
+/// K = c + B' for the unit-scaled u = B/m (scale from unitScaled) with <u u>_0 = s: exp(B) where B
+/// is a 2-blade (B^2 = m^2 s), the Paper rule otherwise; on return u holds B' = sHat u. NaN where
+/// B is not finite, c = 1 and B' = 0 where B = 0.
 template <typename T>
-void paperExponential(T* b, T& c, bool divideByCosh)
+BOOSTED_CORE_INLINE void bladeExponential(const Scale<T>& scale, const T& s, bool divideByCosh, T* u, T& c)
 {
   constexpr int L = kLanesOf<T>;
-  Scale<T> scale;
-  unitScaled(b, scale, b);
-  const LaneArray<T>& m = scale.m;
-  const LaneArray<T> lh(scalarSquare(b));
-  LaneArray<T> r, x, cosine, sHat;
+  LaneArray<T> m = scale.m;
   for (int l = 0; l < L; ++l)
   {
-    r.v[l] = __builtin_sqrt(__builtin_fabs(lh.v[l]));
-    x.v[l] = m.v[l] * r.v[l];
+    m.v[l] = scale.usable(l) ? m.v[l] : 1.0;
   }
-  for (int l = 0; l < L; ++l)
-  {
-    // The power series of planeFunctions for every lane, in a loop of its own so that it
-    // vectorizes (sqrt's errno branch above would keep it scalar), then the transcendental form
-    // where it applies.
-    detail::planeSeries(m.v[l], lh.v[l], x.v[l], cosine.v[l], sHat.v[l]);
-  }
-  for (int l = 0; l < L; ++l)
-  {
-    if (!(x.v[l] < detail::kPlaneSeriesLimit) && scale.usable(l))
-    {
-      detail::planeTranscendental(lh.v[l], r.v[l], x.v[l], divideByCosh, cosine.v[l], sHat.v[l]);
-    }
-  }
+  const detail::PlaneFunctions<T> f = detail::planeFunctions(m.value(), s, divideByCosh);
+  LaneArray<T> cosine(f.c), sHat(f.sHat);
   for (int l = 0; l < L; ++l)
   {
     cosine.v[l] = scale.guard(l, 1.0, cosine.v[l]);
@@ -224,93 +180,167 @@ void paperExponential(T* b, T& c, bool divideByCosh)
   const T factor = sHat.value();
   for (int i = 0; i < kBivector; ++i)
   {
-    b[i] = factor * b[i];
+    u[i] = factor * u[i];
   }
 }
 
-/// exp(B) = a0 + a4 W + b0 B + b4 <W B>_2 from the power series in B^2 = s + W
-/// (detail::seriesCoefficients), into k (detail::pack order).
+/// The Paper rule (expPaper): K = c + B' with on return b holding B' = sHat B/m; NaN where B is not
+/// finite, c = 1 and B' = 0 where B = 0.
 template <typename T>
-void seriesExponential(const detail::BoostTables& tables, const T* b, T* k)
+void paperExponential(T* b, T& c, bool divideByCosh)
 {
-  T w[kQuadvector], w2, wb[kBivector];
-  detail::applyTerms(tables.wedge, kQuadvector, b, b, w);
+  Scale<T> scale;
+  unitScaled(b, scale, b);
+  bladeExponential(scale, scalarSquare(b), divideByCosh, b, c);
+}
+
+/// Relative size, against the sum of the magnitudes of its terms, below which an invariant of the
+/// unit-scaled u = B/m is rounding: B's components carry a few units in the last place of their
+/// sums, the quadratic forms add their own (docs/conventions.md section 2 item 12).
+constexpr double kInvariantNoise = 32.0 * 0x1p-52;
+
+/// q where |q| exceeds kInvariantNoise times `terms` (the sum of its terms' magnitudes), else 0.
+template <typename T>
+BOOSTED_CORE_INLINE T dropRounding(const T& q, const T& terms)
+{
+  return select(lessEqual(magnitude(q), kInvariantNoise * terms), T{}, q);
+}
+
+/// The invariants of u = B/m: W = u ^ u, w2 = W W, s = <u u>_0, each 0 where it is below the
+/// rounding of its terms. For a nilpotent B (a lone point pair) they are all rounding: dropping
+/// them keeps exp(B) = 1 + B, instead of a closed form in the square roots of noise times m^2.
+template <typename T>
+BOOSTED_CORE_INLINE void unitInvariants(
+  const detail::BoostTables& tables, const T* u, T* w, T& w2, T& s, bool dropNoise)
+{
+  if (!dropNoise)
+  {
+    detail::applyTerms(tables.wedge, kQuadvector, u, u, w);
+    detail::applyTerms(tables.quadvectorSquare, 1, w, w, &w2);
+    s = scalarSquare(u);
+    return;
+  }
+  T absU[kBivector], wTerms[kQuadvector], absW[kQuadvector], w2Terms;
+  for (int c = 0; c < kBivector; ++c)
+  {
+    absU[c] = magnitude(u[c]);
+  }
+  detail::applyTerms(tables.wedge, kQuadvector, u, u, w);
+  detail::applyTermMagnitudes(tables.wedge, kQuadvector, absU, absU, wTerms);
+  for (int c = 0; c < kQuadvector; ++c)
+  {
+    w[c] = dropRounding(w[c], wTerms[c]);
+    absW[c] = magnitude(w[c]);
+  }
   detail::applyTerms(tables.quadvectorSquare, 1, w, w, &w2);
-  detail::applyTerms(tables.rightContraction, kBivector, w, b, wb);
-  const detail::SeriesCoefficients<T> c = detail::seriesCoefficients(scalarSquare(b), w2);
+  detail::applyTermMagnitudes(tables.quadvectorSquare, 1, absW, absW, &w2Terms);
+  w2 = dropRounding(w2, w2Terms);
+  const T sTerms = absU[E12] * absU[E12] + absU[E13] * absU[E13] + absU[E23] * absU[E23] +
+    2.0 * (absU[E1NO] * absU[E1NI] + absU[E2NO] * absU[E2NI] + absU[E3NO] * absU[E3NI]) +
+    absU[NONI] * absU[NONI];
+  s = dropRounding(scalarSquare(u), sTerms);
+}
+
+/// B scaled to u = B/m and the invariants of u (unitInvariants).
+template <typename T>
+struct UnitBivector
+{
+  Scale<T> scale;
+  T u[kBivector], w[kQuadvector], w2, s;
+};
+
+/// dropNoise: unitInvariants drops the invariants that are rounding (needed where B may be
+/// nilpotent; the map's field frame, taken only where B is far from nilpotent, skips it).
+template <typename T>
+BOOSTED_CORE_INLINE void unitBivector(
+  const detail::BoostTables& tables, const T* b, UnitBivector<T>& v, bool dropNoise = true)
+{
+  unitScaled(b, v.scale, v.u);
+  unitInvariants(tables, v.u, v.w, v.w2, v.s, dropNoise);
+}
+
+/// exp(B) = a0 + a4 W + b0 B + b4 <W B>_2 from the power series in B^2 = s + W
+/// (detail::seriesCoefficients), into k (detail::pack order), from the invariants of u = B/m
+/// (B^2 = m^2 (s_u + W_u)) and wu = <W_u u>_2. Only where m^2 |l| <= 1, so that the products by
+/// powers of m stay bounded.
+template <typename T>
+void seriesExponential(const T* b, const T& m, const T& su, const T* wUnit, const T& w2Unit,
+                       const T* wu, T* k)
+{
+  // Products by powers of m one factor at a time: m^2 alone may overflow where the products
+  // do not (a zero invariant times a huge m).
+  const T s = (su * m) * m, w2 = (((w2Unit * m) * m) * m) * m;
+  // A nilpotent B (a lone point pair: s = W W = 0 on every lane) has the constant coefficients
+  // the loop would sum: 1, 1/2, 1, 1/6.
+  const detail::SeriesCoefficients<T> c =
+    allLanes(maskAnd(equalTo(s, T{}), equalTo(w2, T{})))
+    ? detail::SeriesCoefficients<T>{ splat<T>(1.0), splat<T>(0.5), splat<T>(1.0), splat<T>(0.5 / 3.0) }
+    : detail::seriesCoefficients(s, w2);
   k[0] = c.a0;
   for (int i = 0; i < kBivector; ++i)
   {
-    k[1 + i] = c.b0 * b[i] + c.b4 * wb[i];
+    k[1 + i] = c.b0 * b[i] + c.b4 * (((wu[i] * m) * m) * m);
   }
   for (int i = 0; i < kQuadvector; ++i)
   {
-    k[1 + kBivector + i] = c.a4 * w[i];
+    k[1 + kBivector + i] = c.a4 * ((wUnit[i] * m) * m);
   }
 }
 
 /// The Exact rule (expExact) into k (detail::pack order): the power series where both squares of B
 /// are at most 1 in size, else the closed form in u = B/m; NaN where B is not finite.
 template <typename T>
-void exactExponential(const detail::BoostTables& tables, const T* b, bool divideByCosh, T* k)
+void exactExponential(
+  const detail::BoostTables& tables, const T* b, const UnitBivector<T>& unit, bool divideByCosh, T* k)
 {
   constexpr int L = kLanesOf<T>;
-  Scale<T> scale;
-  T u[kBivector];
-  unitScaled(b, scale, u);
+  const Scale<T>& scale = unit.scale;
+  const T* u = unit.u;
+  const T* w = unit.w;
+  const T& w2 = unit.w2;
+  const T& su = unit.s;
   const LaneArray<T>& m = scale.m;
-  T w[kQuadvector], w2;
-  detail::applyTerms(tables.wedge, kQuadvector, u, u, w);
-  detail::applyTerms(tables.quadvectorSquare, 1, w, w, &w2);
-  const LaneArray<T> s(scalarSquare(u)), w2Lanes(w2);
-  LaneArray<T> l1, l2;
+  T wu[kBivector];
+  detail::applyTerms(tables.rightContraction, kBivector, w, u, wu);
+  T l1Value, l2Value;
+  detail::planeSquares(su, w2, l1Value, l2Value);
+  const LaneArray<T> l1(l1Value), l2(l2Value);
+  LaneArray<T> mUsable;
   bool useSeries[L], closed[L];
   bool anySeries = false, anyClosed = false, allSeries = true, allClosed = true;
   for (int l = 0; l < L; ++l)
   {
-    detail::planeSquares(s.v[l], w2Lanes.v[l], l1.v[l], l2.v[l]);
     useSeries[l] = scale.usable(l) && detail::exactUsesSeries(m.v[l], l1.v[l], l2.v[l]);
     closed[l] = scale.usable(l) && !useSeries[l];
+    mUsable.v[l] = scale.usable(l) ? m.v[l] : 1.0;
     anySeries = anySeries || useSeries[l];
     anyClosed = anyClosed || closed[l];
     allSeries = allSeries && useSeries[l];
     allClosed = allClosed && closed[l];
   }
-  if (allSeries)
-  {
-    seriesExponential(tables, b, k);
-    return;
-  }
+  const T mValue = mUsable.value();
   T fromSeries[kEven] = {};
   if (anySeries)
   {
-    seriesExponential(tables, b, fromSeries);
+    seriesExponential(b, mValue, su, w, w2, wu, allSeries ? k : fromSeries);
+    if (allSeries)
+    {
+      return;
+    }
   }
   T fromClosed[kEven] = {};
   if (anyClosed)
   {
-    LaneArray<T> scalar, quadvector, bivector, bivectorW;
-    for (int l = 0; l < L; ++l)
-    {
-      const detail::ExactCoefficients c = closed[l]
-        ? detail::exactCoefficients(m.v[l], l1.v[l], l2.v[l], divideByCosh)
-        : detail::ExactCoefficients{ 0.0, 0.0, 0.0, 0.0 };
-      scalar.v[l] = c.scalar;
-      quadvector.v[l] = c.quadvector;
-      bivector.v[l] = c.bivector;
-      bivectorW.v[l] = c.bivectorW;
-    }
-    T wu[kBivector];
-    detail::applyTerms(tables.rightContraction, kBivector, w, u, wu);
-    fromClosed[0] = scalar.value();
-    const T cb = bivector.value(), cw = bivectorW.value(), cq = quadvector.value();
+    const detail::ExactCoefficients<T> c =
+      detail::exactCoefficients(mValue, l1.value(), l2.value(), divideByCosh);
+    fromClosed[0] = c.scalar;
     for (int i = 0; i < kBivector; ++i)
     {
-      fromClosed[1 + i] = cb * u[i] + cw * wu[i];
+      fromClosed[1 + i] = c.bivector * u[i] + c.bivectorW * wu[i];
     }
     for (int i = 0; i < kQuadvector; ++i)
     {
-      fromClosed[1 + kBivector + i] = cq * w[i];
+      fromClosed[1 + kBivector + i] = c.quadvector * w[i];
     }
   }
   if (allClosed)
@@ -343,6 +373,15 @@ void exactExponential(const detail::BoostTables& tables, const T* b, bool divide
   {
     fromLanes(out[i], k[i]);
   }
+}
+
+template <typename T>
+void exactExponential(
+  const detail::BoostTables& tables, const T* b, bool divideByCosh, T* k, bool dropNoise = true)
+{
+  UnitBivector<T> unit;
+  unitBivector(tables, b, unit, dropNoise);
+  exactExponential(tables, b, unit, divideByCosh, k);
 }
 
 /// up(p) = no + p + |p|^2/2 ni (ConformalVector::point).
@@ -402,6 +441,21 @@ void sandwichEven(const detail::BoostTables& tables, const T* k, const T* x, T* 
   detail::applyTerms(tables.oddTimesEvenToVector, kVector, odd, reversed, r);
 }
 
+/// <K no ~K>_1 for a full even K: sandwichEven of the origin, with only the terms of K X that
+/// no contributes (BoostTables::evenTimesOrigin).
+template <typename T>
+void sandwichOrigin(const detail::BoostTables& tables, const T* k, T* r)
+{
+  T reversed[kEven], odd[kOdd];
+  for (int s = 0; s < kEven; ++s)
+  {
+    reversed[s] = (s >= 1 && s <= kBivector) ? -1.0 * k[s] : k[s];
+  }
+  const T one[1] = { splat<T>(1.0) };
+  detail::applyTerms(tables.evenTimesOrigin, kOdd, k, one, odd);
+  detail::applyTerms(tables.oddTimesEvenToVector, kVector, odd, reversed, r);
+}
+
 /// fn(r): the Euclidean point r_e / r_no, and whether it is mapped (normalizePoint: the weight is
 /// non-zero, the point and p are finite).
 template <typename T>
@@ -422,6 +476,157 @@ BOOSTED_CORE_INLINE void normalize(const T* p, const T* r, T* image, bool* mappe
   }
 }
 
+/// T(t) B ~T(t) for the translator T(t) = 1 - t ni/2: with B = E + A_i e_i^no + C_i e_i^ni + d no^ni
+/// the vectors move as no -> up(t), e_i -> e_i + t_i ni, ni -> ni, so
+/// E'_ij = E_ij + A_i t_j - A_j t_i, A' = A, C'_k = C_k + E_kj t_j + (|t|^2/2) A_k - (A.t) t_k + d t_k,
+/// d' = d - A.t.
+template <typename T>
+BOOSTED_CORE_INLINE void translateBivector(const T* b, const T* t, T* out)
+{
+  const T a1 = b[E1NO], a2 = b[E2NO], a3 = b[E3NO], d = b[NONI];
+  const T e12 = b[E12], e13 = b[E13], e23 = b[E23];
+  const T at = a1 * t[0] + a2 * t[1] + a3 * t[2];
+  out[E12] = e12 + (a1 * t[1] - a2 * t[0]);
+  out[E13] = e13 + (a1 * t[2] - a3 * t[0]);
+  out[E23] = e23 + (a2 * t[2] - a3 * t[1]);
+  out[E1NO] = a1;
+  out[E2NO] = a2;
+  out[E3NO] = a3;
+  // |t|^2/2 A_k - (A.t) t_k = sum_j t_j (t_j A_k / 2 - A_j t_k), the products of A and t first:
+  // for a tiny t (a patch of size 1e-160 under curvatures 1e160) |t|^2 would be subnormal.
+  const T a[3] = { a1, a2, a3 };
+  T quadratic[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    quadratic[k] = t[0] * (0.5 * (t[0] * a[k]) - a[0] * t[k]) + t[1] * (0.5 * (t[1] * a[k]) - a[1] * t[k]) +
+      t[2] * (0.5 * (t[2] * a[k]) - a[2] * t[k]);
+  }
+  out[E1NI] = b[E1NI] + (e12 * t[1] + e13 * t[2]) + quadratic[0] + d * t[0];
+  out[E2NI] = b[E2NI] + (e23 * t[2] - e12 * t[0]) + quadratic[1] + d * t[1];
+  out[E3NI] = b[E3NI] - (e13 * t[0] + e23 * t[1]) + quadratic[2] + d * t[2];
+  out[NONI] = d - at;
+}
+
+/// 2^k for an integer |k| <= 1022, exactly.
+inline double powerOfTwo(int k)
+{
+  const unsigned long long bits = static_cast<unsigned long long>(k + 1023) << 52;
+  double x;
+  __builtin_memcpy(&x, &bits, sizeof x);
+  return x;
+}
+
+/// The binary exponent of a finite x > 0 (that of its leading bit; subnormals count as -1023).
+inline int binaryExponent(double x)
+{
+  unsigned long long bits;
+  __builtin_memcpy(&bits, &x, sizeof bits);
+  return static_cast<int>((bits >> 52) & 0x7ff) - 1023;
+}
+
+inline double larger(double a, double b)
+{
+  return a < b ? b : a;
+}
+
+/// Balances B about the origin by the dilation x -> 2^k x, which scales the e_i^no components by
+/// 2^-k and the e_i^ni ones by 2^k (exactly: powers of two), with k making both about the same
+/// size. Returns 2^-k per lane: exp of the balanced B maps 2^k x to 2^k x', so x' = 2^-k times
+/// its image. Where one of the two parts is zero or B is not finite, k = 0.
+template <typename T>
+BOOSTED_CORE_INLINE LaneArray<T> balanceByDilation(T* b)
+{
+  constexpr int L = kLanesOf<T>;
+  const LaneArray<T> a1(b[E1NO]), a2(b[E2NO]), a3(b[E3NO]), c1(b[E1NI]), c2(b[E2NI]), c3(b[E3NI]);
+  LaneArray<T> up, down;
+  for (int l = 0; l < L; ++l)
+  {
+    // (a NaN part gives NaN or a smaller value: either way the lane is NaN and k does not matter)
+    const double a = larger(__builtin_fabs(a1.v[l]), larger(__builtin_fabs(a2.v[l]), __builtin_fabs(a3.v[l])));
+    const double c = larger(__builtin_fabs(c1.v[l]), larger(__builtin_fabs(c2.v[l]), __builtin_fabs(c3.v[l])));
+    const bool usable = a > 0.0 && c > 0.0 && a < __builtin_inf() && c < __builtin_inf();
+    const int half = usable ? (binaryExponent(a) - binaryExponent(c)) / 2 : 0;
+    const int k = half < -1022 ? -1022 : (half > 1022 ? 1022 : half);
+    up.v[l] = powerOfTwo(k);
+    down.v[l] = powerOfTwo(-k);
+  }
+  const T upValue = up.value(), downValue = down.value();
+  for (const int i : { E1NO, E2NO, E3NO })
+  {
+    b[i] = downValue * b[i];
+  }
+  for (const int i : { E1NI, E2NI, E3NI })
+  {
+    b[i] = upValue * b[i];
+  }
+  return down;
+}
+
+/// max |l| of the plane squares of u = B/m below which B counts as nearly nilpotent: a huge
+/// nilpotent part (a generator next to p with a small epsilon) plus a small rest.
+constexpr double kNearlyNilpotent = 1e-4;
+
+/// The Exact image of p computed relative to p (up(p) becomes no) and balanced by a dilation about
+/// p, for a nearly nilpotent B: there the closed form of exp(B) in the field's frame would cancel
+/// terms of size |B|^2 / sqrt|l| (docs/conventions.md section 2 item 12).
+template <typename T>
+void exactImageAroundPoint(const kernel::FieldArgs& args, const T* p, const T* b, T* image, bool* mapped)
+{
+  const detail::BoostTables& tables = *args.tables;
+  const T t[3] = { -p[0], -p[1], -p[2] };
+  T moved[kBivector];
+  translateBivector(b, t, moved);
+  const LaneArray<T> down = balanceByDilation(moved);
+  UnitBivector<T> unit;
+  unitBivector(tables, moved, unit);
+  // Where B is a 2-blade (W = 0: a lone point pair, generators at one place) exp(B) = c + sHat B
+  // and its sandwich has a closed form; elsewhere the full even K. A block computes the one its
+  // lanes need, both only where they differ, and each lane takes its own (the bits of map()).
+  Mask<T> blade = equalTo(unit.w[0], T{});
+  for (int i = 1; i < kQuadvector; ++i)
+  {
+    blade = maskAnd(blade, equalTo(unit.w[i], T{}));
+  }
+  const bool anyBlade = anyLane(blade), allBlade = allLanes(blade);
+  T origin[kVector] = {}; // up(0) = no
+  origin[NO] = splat<T>(1.0);
+  T r[kVector], fromBlade[kVector];
+  if (anyBlade)
+  {
+    T c, bp[kBivector];
+    for (int i = 0; i < kBivector; ++i)
+    {
+      bp[i] = unit.u[i];
+    }
+    bladeExponential(unit.scale, unit.s, true, bp, c);
+    sandwichScalarBivector(c, bp, origin, fromBlade);
+  }
+  if (!allBlade)
+  {
+    T k[kEven];
+    exactExponential(tables, moved, unit, true, k);
+    sandwichOrigin(tables, k, r);
+  }
+  for (int i = 0; i < kVector; ++i)
+  {
+    r[i] = allBlade ? fromBlade[i] : (anyBlade ? select(blade, fromBlade[i], r[i]) : r[i]);
+  }
+  const T zero[3] = {};
+  T offset[3];
+  normalize(zero, r, offset, mapped);
+  const T scale = down.value();
+  for (int i = 0; i < 3; ++i)
+  {
+    image[i] = p[i] + scale * offset[i];
+  }
+  const LaneArray<T> px(p[0]), py(p[1]), pz(p[2]);
+  for (int l = 0; l < kLanesOf<T>; ++l)
+  {
+    mapped[l] = mapped[l] && __builtin_isfinite(px.v[l]) && __builtin_isfinite(py.v[l]) &&
+      __builtin_isfinite(pz.v[l]);
+  }
+}
+
 /// The map p -> fn(<K up(p) ~K>_1), K = exp(b) by the rule of args, on every lane, for a given
 /// bivector b (overwritten): mapPoint after its B(p), for callers with their own exponent per point
 /// (kernel::MapBlockBy; the curvature patch, the generator tree's B(p)).
@@ -435,14 +640,62 @@ void mapPointBy(const kernel::FieldArgs& args, T* b, const T* p, T* image, bool*
     T c;
     paperExponential(b, c, true);
     sandwichScalarBivector(c, b, x, r);
+    normalize(p, r, image, mapped);
+    return;
   }
-  else
+  // Exact: in the field's frame, or around p where B is nearly nilpotent (each lane its own; a
+  // block computes both only where its lanes differ). A NaN lane takes the field's frame.
+  // The plane squares of B itself against kNearlyNilpotent m^2 (no division by m: a rough test).
+  // The larger one in size is at least |s|/2 (s = l1 + l2; planeSquares keeps that after
+  // rounding), so where every lane has |s|/2 above the threshold W need not be formed.
+  const T m = maxAbs(b).value();
+  const T threshold = (kNearlyNilpotent * m) * m;
+  const T s = scalarSquare(b);
+  Mask<T> aroundPoint = lessThan(0.5 * magnitude(s), threshold);
+  if (anyLane(aroundPoint))
   {
-    T k[kEven];
-    exactExponential(*args.tables, b, true, k);
-    sandwichEven(*args.tables, k, x, r);
+    T w[kQuadvector], w2, l1, l2;
+    detail::applyTerms(args.tables->wedge, kQuadvector, b, b, w);
+    detail::applyTerms(args.tables->quadvectorSquare, 1, w, w, &w2);
+    detail::planeSquares(s, w2, l1, l2);
+    const T largest = select(lessThan(magnitude(l1), magnitude(l2)), magnitude(l2), magnitude(l1));
+    aroundPoint = lessThan(largest, threshold);
   }
+  const bool anyAround = anyLane(aroundPoint), allAround = allLanes(aroundPoint);
+  T around[3];
+  bool aroundMapped[kLanesOf<T>];
+  if (anyAround)
+  {
+    exactImageAroundPoint(args, p, b, around, aroundMapped);
+  }
+  if (allAround)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      image[i] = around[i];
+    }
+    for (int l = 0; l < kLanesOf<T>; ++l)
+    {
+      mapped[l] = aroundMapped[l];
+    }
+    return;
+  }
+  T k[kEven];
+  exactExponential(*args.tables, b, true, k, false);
+  sandwichEven(*args.tables, k, x, r);
   normalize(p, r, image, mapped);
+  if (anyAround)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      image[i] = select(aroundPoint, around[i], image[i]);
+    }
+    const LaneArray<T> laneOf(select(aroundPoint, splat<T>(1.0), T{}));
+    for (int l = 0; l < kLanesOf<T>; ++l)
+    {
+      mapped[l] = laneOf.v[l] != 0.0 ? aroundMapped[l] : mapped[l];
+    }
+  }
 }
 
 /// The map p -> fn(<K up(p) ~K>_1), K = exp(-strength B(p)) by the rule of args, on every lane.

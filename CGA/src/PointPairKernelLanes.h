@@ -10,7 +10,7 @@
 #error "define BOOSTED_KERNEL_ISA before including PointPairKernelLanes.h"
 #endif
 
-#include "PointMapCore.h"
+#include "LaneMath.h"
 #include "PointPairKernel.h"
 
 namespace cga
@@ -35,9 +35,18 @@ constexpr int kParts = L * static_cast<int>(sizeof(double)) / BOOSTED_KERNEL_VEC
 static_assert(kParts >= 1 && kParts * BOOSTED_KERNEL_VECTOR_BYTES == L * sizeof(double),
               "lanes must fill whole registers");
 
+typedef long long NativeMask __attribute__((vector_size(BOOSTED_KERNEL_VECTOR_BYTES)));
+
+// Per-lane flags as the vector compares give them: all bits set or clear.
+struct LaneMask
+{
+  NativeMask part[kParts];
+};
+
 struct LaneVector
 {
   static constexpr int kLanes = L;
+  using Mask = LaneMask;
   NativeVector part[kParts];
 };
 
@@ -81,6 +90,89 @@ inline LaneVector operator-(LaneVector a)
   return a;
 }
 
+// The comparisons, mask logic and selection of LaneMath.h, lane by lane in vector instructions.
+#define BOOSTED_LANE_COMPARISON(name, op)                                                        \
+  inline LaneMask name(const LaneVector& a, const LaneVector& b)                                 \
+  {                                                                                              \
+    LaneMask m;                                                                                  \
+    for (int i = 0; i < kParts; ++i)                                                             \
+    {                                                                                            \
+      m.part[i] = a.part[i] op b.part[i];                                                        \
+    }                                                                                            \
+    return m;                                                                                    \
+  }
+BOOSTED_LANE_COMPARISON(lessThan, <)
+BOOSTED_LANE_COMPARISON(lessEqual, <=)
+BOOSTED_LANE_COMPARISON(equalTo, ==)
+#undef BOOSTED_LANE_COMPARISON
+
+inline LaneMask maskAnd(LaneMask a, const LaneMask& b)
+{
+  for (int i = 0; i < kParts; ++i)
+  {
+    a.part[i] &= b.part[i];
+  }
+  return a;
+}
+
+inline LaneMask maskOr(LaneMask a, const LaneMask& b)
+{
+  for (int i = 0; i < kParts; ++i)
+  {
+    a.part[i] |= b.part[i];
+  }
+  return a;
+}
+
+inline LaneMask maskNot(LaneMask a)
+{
+  for (int i = 0; i < kParts; ++i)
+  {
+    a.part[i] = ~a.part[i];
+  }
+  return a;
+}
+
+inline bool anyLane(const LaneMask& m)
+{
+  NativeMask acc = m.part[0];
+  for (int i = 1; i < kParts; ++i)
+  {
+    acc |= m.part[i];
+  }
+  long long lanes = 0;
+  for (int l = 0; l < static_cast<int>(sizeof(NativeMask) / sizeof(long long)); ++l)
+  {
+    lanes |= acc[l];
+  }
+  return lanes != 0;
+}
+
+inline bool allLanes(const LaneMask& m)
+{
+  return !anyLane(maskNot(m));
+}
+
+inline LaneVector select(const LaneMask& m, const LaneVector& a, const LaneVector& b)
+{
+  LaneVector r;
+  for (int i = 0; i < kParts; ++i)
+  {
+    r.part[i] = m.part[i] ? a.part[i] : b.part[i];
+  }
+  return r;
+}
+
+inline LaneVector magnitude(LaneVector x)
+{
+  const NativeMask noSign = NativeMask{} + 0x7fffffffffffffffLL;
+  for (int i = 0; i < kParts; ++i)
+  {
+    x.part[i] = (NativeVector)((NativeMask)x.part[i] & noSign);
+  }
+  return x;
+}
+
 // The lane access PointMapCore.h finds by argument-dependent lookup.
 inline void toLanes(const LaneVector& v, double* lanes)
 {
@@ -91,8 +183,102 @@ inline void fromLanes(const double* lanes, LaneVector& v)
 {
   __builtin_memcpy(&v, lanes, sizeof v);
 }
+
+// The elementary functions of LaneMath.h on every lane, found by argument-dependent lookup: with
+// SLEEF on x86-64 its deterministic vector functions of this instruction set
+// (BOOSTED_KERNEL_SLEEF(name), set by the including file), which give the bits of the scalar
+// Sleef_cinz_*d1_u10purec that map() calls; otherwise the scalar function per lane.
+#if defined(BOOSTED_HAVE_SLEEF) && defined(BOOSTED_KERNEL_SLEEF)
+#define BOOSTED_LANE_FUNCTION(name, sleefName)                                                   \
+  inline LaneVector name(LaneVector x)                                                           \
+  {                                                                                              \
+    for (int i = 0; i < kParts; ++i)                                                             \
+    {                                                                                            \
+      x.part[i] = BOOSTED_KERNEL_SLEEF(sleefName)(x.part[i]);                                    \
+    }                                                                                            \
+    return x;                                                                                    \
+  }
+BOOSTED_LANE_FUNCTION(laneCosh, cosh)
+BOOSTED_LANE_FUNCTION(laneSinh, sinh)
+BOOSTED_LANE_FUNCTION(laneTanh, tanh)
+#undef BOOSTED_LANE_FUNCTION
+
+inline void laneSinCos(const LaneVector& x, LaneVector& sine, LaneVector& cosine)
+{
+  for (int i = 0; i < kParts; ++i)
+  {
+    const auto r = BOOSTED_KERNEL_SLEEF(sincos)(x.part[i]);
+    sine.part[i] = r.x;
+    cosine.part[i] = r.y;
+  }
+}
+#else
+#define BOOSTED_LANE_FUNCTION(name)                                                              \
+  inline LaneVector name(const LaneVector& x)                                                    \
+  {                                                                                              \
+    alignas(64) double lanes[L];                                                                 \
+    toLanes(x, lanes);                                                                           \
+    for (int l = 0; l < L; ++l)                                                                  \
+    {                                                                                            \
+      lanes[l] = core::name(lanes[l]);                                                           \
+    }                                                                                            \
+    LaneVector r;                                                                                \
+    fromLanes(lanes, r);                                                                         \
+    return r;                                                                                    \
+  }
+BOOSTED_LANE_FUNCTION(laneCosh)
+BOOSTED_LANE_FUNCTION(laneSinh)
+BOOSTED_LANE_FUNCTION(laneTanh)
+#undef BOOSTED_LANE_FUNCTION
+
+inline void laneSinCos(const LaneVector& x, LaneVector& sine, LaneVector& cosine)
+{
+  alignas(64) double lanes[L], s[L], c[L];
+  toLanes(x, lanes);
+  for (int l = 0; l < L; ++l)
+  {
+    core::laneSinCos(lanes[l], s[l], c[l]);
+  }
+  fromLanes(s, sine);
+  fromLanes(c, cosine);
+}
+#endif
+
+// Correctly rounded, as the scalar sqrt: the instruction set's own (BOOSTED_KERNEL_SQRT) where the
+// including file names it.
+inline LaneVector laneSqrt(LaneVector x)
+{
+#ifdef BOOSTED_KERNEL_SQRT
+  for (int i = 0; i < kParts; ++i)
+  {
+    x.part[i] = BOOSTED_KERNEL_SQRT(x.part[i]);
+  }
+  return x;
+#else
+  alignas(64) double lanes[L];
+  toLanes(x, lanes);
+  for (int l = 0; l < L; ++l)
+  {
+    lanes[l] = __builtin_sqrt(lanes[l]);
+  }
+  fromLanes(lanes, x);
+  return x;
+#endif
+}
 } // namespace
 
+} // namespace BOOSTED_KERNEL_ISA
+} // namespace kernel
+} // namespace cga
+
+#include "PointMapCore.h"
+
+namespace cga
+{
+namespace kernel
+{
+namespace BOOSTED_KERNEL_ISA
+{
 void mapBlock(const FieldArgs& args, const double* xyz, double* image, std::uint8_t* mapped)
 {
   LaneVector p[3], out[3];

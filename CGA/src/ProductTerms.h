@@ -27,11 +27,13 @@ struct ProductTerms
 };
 
 /// The products of the exponentials and of the sandwich (Exponential.cpp, PointSandwich.cpp):
-/// B ^ B, Q Q, Q _| B; K X (even times vector into odd) and <(K X) ~K>_1. Built once (CompactAlgebra.cpp).
+/// B ^ B, Q Q, Q _| B; K X (even times vector into odd) and <(K X) ~K>_1; K no (the terms of
+/// K X for X = no, whose one operand slot holds its coefficient). Built once (CompactAlgebra.cpp).
 struct BoostTables
 {
   ProductTerms wedge, quadvectorSquare, rightContraction;
   ProductTerms evenTimesVector, oddTimesEvenToVector;
+  ProductTerms evenTimesOrigin;
 };
 const BoostTables& boostTables();
 
@@ -50,6 +52,25 @@ void applyTerms(const ProductTerms& table, int results, const T* a, const T* b, 
     {
       const ProductTerm term = table.terms[t];
       sum = sum + term.coefficient * a[term.a] * b[term.b];
+    }
+    r[i] = sum;
+  }
+}
+
+/// The same with every term's coefficient by its magnitude (a and b hold magnitudes): the sum of
+/// the terms' magnitudes, which bounds the rounding of applyTerms.
+template <typename T>
+void applyTermMagnitudes(const ProductTerms& table, int results, const T* a, const T* b, T* r)
+{
+  int t = 0;
+  for (int i = 0; i < results; ++i)
+  {
+    T sum{};
+    for (; t < table.size && table.terms[t].r == i; ++t)
+    {
+      const ProductTerm term = table.terms[t];
+      const double coefficient = term.coefficient < 0.0 ? -term.coefficient : term.coefficient;
+      sum = sum + coefficient * a[term.a] * b[term.b];
     }
     r[i] = sum;
   }

@@ -1,0 +1,169 @@
+// Internal: what the templates of ExponentialScalars.h and PointMapCore.h need of their number type
+// T beyond + - * /: the lanes as an array (LaneArray), per-lane masks and selection, and the
+// elementary functions sqrt, cosh, sinh, tanh and sincos.
+//
+// T is double (one lane: PointPairField::map, expExact, ...) or the block kernel's vector of lanes,
+// whose overloads PointPairKernelLanes.h defines in its instruction set's namespace (found by
+// argument-dependent lookup). Both call the same functions: with SLEEF (BOOSTED_HAVE_SLEEF) its
+// deterministic 1-ulp functions (Sleef_cinz_*_u10: no fused multiply-add, the same bits on every
+// instruction set and in the scalar build, "purec"), else libm per lane.
+//
+// Internal linkage only (see PointMapCore.h).
+#pragma once
+
+#include <math.h>
+
+#ifdef BOOSTED_HAVE_SLEEF
+#include <sleef.h>
+#endif
+
+namespace cga
+{
+namespace core
+{
+namespace
+{
+// The number type double: one lane.
+template <typename T>
+constexpr int kLanesOf = T::kLanes;
+template <>
+constexpr int kLanesOf<double> = 1;
+
+inline void toLanes(double x, double* lanes)
+{
+  lanes[0] = x;
+}
+inline void fromLanes(const double* lanes, double& x)
+{
+  x = lanes[0];
+}
+
+// The lanes of one T as an array, for the per-lane parts.
+template <typename T>
+struct LaneArray
+{
+  alignas(64) double v[kLanesOf<T>];
+
+  LaneArray() = default;
+  explicit LaneArray(const T& x) { toLanes(x, v); }
+  T value() const
+  {
+    T x;
+    fromLanes(v, x);
+    return x;
+  }
+};
+
+/// One flag per lane: bool for double, the lane vector's own mask type (T::Mask) otherwise. The
+/// comparisons, selection and mask logic below have overloads for the lane vector
+/// (PointPairKernelLanes.h) that compile to vector compares and blends.
+template <typename T>
+struct MaskOf
+{
+  using type = typename T::Mask;
+};
+template <>
+struct MaskOf<double>
+{
+  using type = bool;
+};
+template <typename T>
+using Mask = typename MaskOf<T>::type;
+
+inline bool lessThan(double a, double b)
+{
+  return a < b;
+}
+inline bool lessEqual(double a, double b)
+{
+  return a <= b;
+}
+inline bool equalTo(double a, double b)
+{
+  return a == b;
+}
+inline bool maskAnd(bool a, bool b)
+{
+  return a && b;
+}
+inline bool maskOr(bool a, bool b)
+{
+  return a || b;
+}
+inline bool maskNot(bool a)
+{
+  return !a;
+}
+inline bool anyLane(bool a)
+{
+  return a;
+}
+inline bool allLanes(bool a)
+{
+  return a;
+}
+/// a where the mask is set, b elsewhere.
+inline double select(bool mask, double a, double b)
+{
+  return mask ? a : b;
+}
+/// |x| (the sign bit cleared, as the lane vector's).
+inline double magnitude(double x)
+{
+  return __builtin_fabs(x);
+}
+
+/// A number type's value c on every lane.
+template <typename T>
+inline T splat(double c)
+{
+  return T{} + c;
+}
+
+// The elementary functions for one lane: the same as every lane of the block kernel computes.
+inline double laneSqrt(double x)
+{
+  return __builtin_sqrt(x); // correctly rounded, as the vector instructions
+}
+
+#ifdef BOOSTED_HAVE_SLEEF
+inline double laneCosh(double x)
+{
+  return Sleef_cinz_coshd1_u10purec(x);
+}
+inline double laneSinh(double x)
+{
+  return Sleef_cinz_sinhd1_u10purec(x);
+}
+inline double laneTanh(double x)
+{
+  return Sleef_cinz_tanhd1_u10purec(x);
+}
+inline void laneSinCos(double x, double& s, double& c)
+{
+  const auto r = Sleef_cinz_sincosd1_u10purec(x);
+  s = r.x;
+  c = r.y;
+}
+#else
+inline double laneCosh(double x)
+{
+  return cosh(x);
+}
+inline double laneSinh(double x)
+{
+  return sinh(x);
+}
+inline double laneTanh(double x)
+{
+  return tanh(x);
+}
+inline void laneSinCos(double x, double& s, double& c)
+{
+  s = sin(x);
+  c = cos(x);
+}
+#endif
+} // namespace
+} // namespace core
+} // namespace cga

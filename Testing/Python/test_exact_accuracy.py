@@ -1,0 +1,134 @@
+"""The Exact rule against a high-precision reference (exact_reference.py: the 5x5 matrix exponential
+of the versor's action in mpmath, computed from the same double inputs), on adversarial fields:
+points on a generator and 1e-9 ... 1e-3 from one, epsilon down to 1e-10, clustered generators, huge
+weights and strengths (docs/conventions.md section 2 item 12 states the bound tested here).
+
+Each image, from the batch path (PointPairField::mapPoints) and the pointwise path (map), printed by
+the ExactAccuracyProbe program, must lie within
+
+    1e-12 * scale + 8 * sensitivity
+
+of the reference, where scale is the configuration's largest coordinate or reference displacement,
+and sensitivity the reference image's movement when B(p) changes by one unit in the last place
+(exact_reference.one_ulp_sensitivity, computed only for points that miss the first term; it is
+what no double computation of B(p) can avoid, large only where the problem is ill-conditioned).
+A point on a lone generator must stay on it exactly, and the batch image must equal the pointwise
+one to the bit (their blocks mix points near and far from generators, which take different
+frames).
+
+    python3 test_exact_accuracy.py <ExactAccuracyProbe> [-v]
+"""
+import math
+import subprocess
+import sys
+
+import exact_reference as reference
+
+RELATIVE = 1e-12
+CONDITION_FACTOR = 8.0
+
+
+def offsets(location, distances, directions):
+    points = [tuple(location)]
+    for d in distances:
+        for u in directions:
+            norm = math.sqrt(sum(c * c for c in u))
+            points.append(tuple(location[i] + d * u[i] / norm for i in range(3)))
+    return points
+
+
+DIRECTIONS = [(0.6, -0.3, 0.7), (-0.2, 0.9, 0.1)]
+NEAR = [1e-9, 1e-7, 1e-5, 1e-3]
+FAR = [(0.9, 0.4, -0.5), (-1.5, 2.0, 0.3)]
+X1, V1 = (0.3, -0.2, 0.1), (0.4, 0.7, -0.5)
+X2, V2 = (0.7, -0.1, -0.1), (-0.3, 0.2, 0.9)
+X3, V3 = (0.3004, -0.2003, 0.1002), (0.9, 0.1, 0.2)
+
+
+def configurations():
+    """(name, falloff, epsilon, strength, generators, points, lone): lone marks one generator."""
+    around1 = offsets(X1, NEAR, DIRECTIONS)
+    around2 = offsets(X2, NEAR[::2], DIRECTIONS[:2])
+    for eps in (1e-10, 1e-6):
+        yield (f"lone pair, eps {eps:g}", 1.0, eps, 1.0, [(X1, V1, 0.5)], around1 + FAR, True)
+    for eps in (1e-10, 1e-8, 1e-4):
+        yield (f"two pairs, eps {eps:g}", 1.0, eps, 1.0, [(X1, V1, 0.5), (X2, V2, 0.3)],
+               around1 + around2 + FAR, False)
+    yield ("three pairs within 1e-3, eps 1e-10", 1.0, 1e-10, 1.0,
+           [(X1, V1, 0.5), (X2, V2, 0.3), (X3, V3, 0.2)],
+           around1 + offsets(X3, NEAR[:2], DIRECTIONS[:1]) + FAR, False)
+    yield ("lone pair, weight 1e8, eps 1e-10", 1.0, 1e-10, 1.0, [(X1, V1, 1e8)], around1 + FAR, True)
+    yield ("two pairs, weights 1e6, eps 1e-10", 1.0, 1e-10, 1.0, [(X1, V1, 1e6), (X2, V2, 1e6)],
+           around1 + around2 + FAR, False)
+    yield ("two pairs, weights 1e12, eps 1e-2", 1.0, 1e-2, 1.0, [(X1, V1, 1e12), (X2, V2, 3e11)],
+           around1 + around2 + FAR, False)
+    yield ("two pairs, strength 1e5, falloff 4, eps 1e-6", 4.0, 1e-6, 1e5,
+           [(X1, V1, 0.5), (X2, V2, 0.3)], around1 + around2 + FAR, False)
+
+
+def run_probe(probe, cases):
+    lines = []
+    for _, falloff, eps, strength, generators, points, _ in cases:
+        lines.append(f"{falloff!r} {eps!r} {strength!r} {len(generators)} {len(points)}")
+        lines += [" ".join(repr(c) for c in (*x, *v, w)) for x, v, w in generators]
+        lines += [" ".join(repr(c) for c in p) for p in points]
+    out = subprocess.run([probe], input="\n".join(lines) + "\n", capture_output=True, text=True,
+                         check=True).stdout.split("\n")
+    return iter(out)
+
+
+def main():
+    probe = sys.argv[1]
+    verbose = "-v" in sys.argv
+    cases = list(configurations())
+    output = run_probe(probe, cases)
+    failures = 0
+    conditioned = 0
+    for name, falloff, eps, strength, generators, points, lone in cases:
+        images = []
+        for p in points:
+            fields = next(output).split()
+            if fields == ["unmapped"]:
+                images.append(None)
+            else:
+                values = [float(f) for f in fields]
+                images.append((values[:3], values[3:]))
+        refs = [reference.image(generators, p, falloff, eps, strength) for p in points]
+        size = max(abs(c) for p in points for c in p)
+        displacement = max(math.dist([float(c) for c in r], p) for r, p in zip(refs, points))
+        scale = max(size, displacement)
+        worst = 0.0
+        for p, ref, got in zip(points, refs, images):
+            if got is None:
+                print(f"FAIL {name}: {p} unmapped")
+                failures += 1
+                continue
+            for path, q in zip(("batch", "pointwise"), got):
+                error = float(reference.mpmath.sqrt(sum((q[i] - ref[i]) ** 2 for i in range(3))))
+                bound = RELATIVE * scale
+                if error > bound:
+                    sensitivity = reference.one_ulp_sensitivity(generators, p, falloff, eps, strength)
+                    bound += CONDITION_FACTOR * sensitivity
+                    conditioned += 1
+                    if verbose:
+                        print(f"  {name}: {p} {path} error {error:.3g} beyond 1e-12 scale; "
+                              f"one-ulp sensitivity {sensitivity:.3g}")
+                if error > bound:
+                    print(f"FAIL {name}: {p} {path} error {error:.3g} > bound {bound:.3g}")
+                    failures += 1
+                worst = max(worst, error / scale)
+            if got[0] != got[1]:
+                # one source for both paths, each lane its own branch: the same bits
+                print(f"FAIL {name}: {p} batch {got[0]} differs from pointwise {got[1]}")
+                failures += 1
+            if lone and p == generators[0][0] and tuple(got[0]) != p:
+                print(f"FAIL {name}: the point on the lone generator moved to {got[0]}")
+                failures += 1
+        if verbose:
+            print(f"{name}: scale {scale:.3g}, worst error / scale {worst:.3g}")
+    print(f"{failures} failures; {conditioned} images checked against the condition-scaled bound")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
