@@ -66,7 +66,7 @@ def compare_with_baseline(window, baseline, output_dir, threshold):
 
 
 def regression_test(renderer, camera_position, view_up, zoom, baseline, output_dir, threshold,
-                    size=(400, 300)):
+                    size=(400, 300), parallel=False):
     """Render `renderer` offscreen, the camera looking at the origin from camera_position and fitted
     to the scene, and compare with `baseline` (compare_with_baseline). Returns the exit code."""
     window = offscreen_window(renderer, size)
@@ -74,6 +74,7 @@ def regression_test(renderer, camera_position, view_up, zoom, baseline, output_d
     camera.SetFocalPoint(0, 0, 0)
     camera.SetPosition(*camera_position)
     camera.SetViewUp(*view_up)
+    camera.SetParallelProjection(parallel)
     renderer.ResetCamera()
     camera.Zoom(zoom)
     window.Render()
@@ -85,4 +86,5 @@ def example_regression_test(figure, args):
     the command line `args` of parse_image_arguments. Returns the exit code."""
     return regression_test(figure.build_scene(), figure.VIEW["view_direction"],
                            figure.VIEW["view_up"], figure.VIEW["zoom"], args.baseline,
-                           args.output_dir, args.threshold, size=figure.SIZE)
+                           args.output_dir, args.threshold, size=figure.SIZE,
+                           parallel=figure.VIEW.get("parallel", False))
