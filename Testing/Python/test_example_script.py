@@ -4,7 +4,8 @@
 
 A figure script gets --output <dir>/<name>.png --size 320 240; render_gallery.py gets
 --output-dir <dir>. Every path the script prints must be a PNG of that size that is not blank:
-it shows something besides the white background, in more than one colour.
+it shows something besides the white background, in more than one colour. After render_gallery.py,
+make_gallery_montage.py assembles those PNGs into a montage, which must not be blank either.
 """
 import os
 import shutil
@@ -71,6 +72,20 @@ def main():
         import render_gallery
         if len(paths) != len(render_gallery.FIGURES):
             print("FAIL: %d PNGs for %d figures" % (len(paths), len(render_gallery.FIGURES)))
+            return 1
+        montage = os.path.join(output_dir, "montage.png")
+        if os.path.exists(montage):
+            os.remove(montage)
+        run = subprocess.run([sys.executable, os.path.join(os.path.dirname(script),
+                                                           "make_gallery_montage.py"),
+                              "--gallery-dir", gallery_dir, "--output", montage, "--width", "900"],
+                             capture_output=True, text=True)
+        sys.stdout.write(run.stdout)
+        sys.stderr.write(run.stderr)
+        montage_problems = check_png(montage, None)
+        if run.returncode != 0 or montage_problems:
+            print("FAIL: make_gallery_montage.py exited with %d; %s"
+                  % (run.returncode, "; ".join(montage_problems)))
             return 1
     elif paths != [os.path.abspath(expected)]:
         print("FAIL: printed %s, expected %s" % (paths, os.path.abspath(expected)))
