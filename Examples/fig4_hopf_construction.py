@@ -12,7 +12,7 @@ xy plane) and its axis, the z axis:
   d) KH = M K applied to C for k = 1/2 + phi/pi: the fibers over one meridian (theta = 0) and the
      twistor mesh they sweep (vtkHopfFibrationSource, OutputType TWISTOR_MESH, one theta sample).
 
-    python3 fig4_hopf_construction.py --output fig4.png --size 1600 500
+    python3 fig4_hopf_construction.py --output fig4.png --size 1400 520
 """
 import math
 
@@ -21,7 +21,7 @@ from vtkmodules.vtkFiltersSources import vtkLineSource
 
 import gallery_common as gc
 
-SPACING = 3.2  # distance between the panels along x
+SPACING = 3.6  # distance between the panels along x
 CLIP = 2.2  # clip radius about the circle center (circle radius 1) of the huge fibers near phi = pi/2
 PHI_RANGE = (-math.pi / 2, math.pi / 2)
 
@@ -48,7 +48,7 @@ def base_fibers(x, phis, theta=0.0):
 def panel_a(renderer, lut, x):
     renderer.AddActor(gc.colored_actor(gc.tubes(base_fibers(x, [PHI_RANGE[0]]), 0.03), lut, "phi"))
     renderer.AddActor(gc.colored_actor(gc.tubes(axis(x), 0.03), color=lut.GetTableValue(255)[:3]))
-    renderer.AddActor2D(gc.label("a", (x, 0, -2.7)))
+    renderer.AddActor2D(gc.label("a) circle and axis", (x, 0, -2.7)))
 
 
 def panel_b(renderer, lut, x):
@@ -63,7 +63,7 @@ def panel_b(renderer, lut, x):
     boost.SetOutputTypeToCircles()
     renderer.AddActor(gc.colored_actor(gc.tubes(boost, 0.02), gc.lambda_lookup_table((0, 1))))
     renderer.AddActor(gc.colored_actor(gc.tubes(axis(x), 0.02), color="DimGray"))
-    renderer.AddActor2D(gc.label("b", (x, 0, -2.7)))
+    renderer.AddActor2D(gc.label("b) boost", (x, 0, -2.7)))
 
 
 def panel_c(renderer, x, steps=6):
@@ -76,7 +76,7 @@ def panel_c(renderer, x, steps=6):
         line.SetPoint1(*[c - CLIP * d for c, d in zip(center, direction)])
         line.SetPoint2(*[c + CLIP * d for c, d in zip(center, direction)])
         renderer.AddActor(gc.colored_actor(gc.tubes(line, 0.02), color=k_lut.GetTableValue(int(255 * k))[:3]))
-    renderer.AddActor2D(gc.label("c", (x, 0, -2.7)))
+    renderer.AddActor2D(gc.label("c) twist", (x, 0, -2.7)))
 
 
 def panel_d(renderer, lut, x):
@@ -93,7 +93,7 @@ def panel_d(renderer, lut, x):
     renderer.AddActor(surface)
     phis = [PHI_RANGE[0] + i * math.pi / 8 for i in range(9)]
     renderer.AddActor(gc.colored_actor(gc.tubes(base_fibers(x, phis), 0.02), lut, "phi"))
-    renderer.AddActor2D(gc.label("d", (x, 0, -2.7)))
+    renderer.AddActor2D(gc.label("d) boost and twist", (x, 0, -2.7)))
 
 
 def build_scene():
@@ -108,8 +108,8 @@ def build_scene():
 
 def main(argv=None):
     return gc.render_figure(__doc__.splitlines()[0], "fig4_hopf_construction.png", build_scene,
-                            argv, default_size=(1600, 500), view_direction=(0.35, -1.0, 0.45),
-                            view_up=(0, 0, 1), zoom=1.6, parallel=True)
+                            argv, default_size=(1400, 520), view_direction=(0.12, -1.0, 0.45),
+                            view_up=(0, 0, 1), zoom=2.4, parallel=True)
 
 
 if __name__ == "__main__":
