@@ -12,8 +12,6 @@ for the four patches that spans their heights.
 
     python3 fig7_translated_tangents.py --output fig7.png --size 1300 420
 """
-from vtkmodules.vtkFiltersCore import vtkElevationFilter
-
 import gallery_common as gc
 import curvature_common as cc
 
@@ -28,30 +26,11 @@ def preset_patch(preset, x):
 
 def build_scene():
     sources = [preset_patch(preset, i * SPACING) for i, (preset, _) in enumerate(PRESETS)]
-    heights = []
-    for source in sources:
-        source.Update()
-        heights += source.GetOutput().GetBounds()[4:6]
-    z_range = (min(heights), max(heights))
-    lut = gc.lambda_lookup_table(z_range)
     renderer = gc.new_renderer()
+    cc.add_height_colored(renderer, sources)
     for i, (source, (_, name)) in enumerate(zip(sources, PRESETS)):
-        height = vtkElevationFilter()  # colour by z: kappa > 0 bends toward -z
-        height.SetInputConnection(source.GetOutputPort())
-        height.source = source  # a port does not keep its filter alive in Python
-        height.SetLowPoint(0, 0, z_range[0])
-        height.SetHighPoint(0, 0, z_range[1])
-        height.SetScalarRange(*z_range)
-        actor = gc.colored_actor(height, lut, array="Elevation")
-        renderer.AddActor(actor)
         cc.add_arrows(renderer, source, length=0.8)
         renderer.AddActor2D(gc.label(name, (i * SPACING, -2.4, 0.0), font_size=22))
-    bar = gc.scalar_bar(lut, "height z")
-    bar.SetPosition(0.9, 0.12)
-    bar.SetWidth(0.07)
-    bar.SetHeight(0.76)
-    renderer.AddActor2D(bar)
-    renderer.GetActiveCamera().SetWindowCenter(0.1, 0.0)  # the patches left of the bar
     return renderer
 
 
