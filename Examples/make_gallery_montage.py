@@ -25,10 +25,12 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import gallery_common as gc  # noqa: E402
 import render_gallery  # noqa: E402
 
-# Rows of paper figure numbers: one picture per class of the project (surface source, Hopf
-# construction and fibration, curvature patch, deformation filter, patch assemblies, dipole field).
-ROWS = ((2, 7), (4, 12), (11, 5), (14, 10))
-WIDTH = 1800  # shown at about half that width in a README: the labels stay readable
+# Rows of paper figure numbers, each row's aspect ratios summing to about 3.5-5 (rows neither
+# thin strips nor too tall): one picture or more per class of the project (surface source: 2, 3;
+# Hopf construction and fibration: 4, 5; curvature patch: 7, 10; deformation filter: 11; dipole
+# field: 14).
+ROWS = ((2, 4), (7, 5), (11, 10), (14, 3))
+WIDTH = 1600  # shown at about half that width in a README: the labels stay readable
 GAP = 12  # pixels between cells (white)
 LABEL_SIZE = 40
 MARGIN = 16  # white pixels kept around a figure's content
