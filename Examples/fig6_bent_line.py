@@ -36,6 +36,7 @@ def build_scene():
     renderer.AddActor2D(gc.scalar_bar(lut, "kappa"))
     renderer.AddActor2D(gc.label("kappa > 0: center below", (0.0, 0.0, -4.6)))
     renderer.AddActor2D(gc.label("kappa < 0: center above", (0.0, 0.0, 4.6)))
+    renderer.GetActiveCamera().SetWindowCenter(0.15, 0.0)  # the line ends left of the bar
     return renderer
 
 
