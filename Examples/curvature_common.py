@@ -51,15 +51,8 @@ def add_height_colored(renderer, sources):
     renderer.GetActiveCamera().SetWindowCenter(0.1, 0.0)  # the patches left of the bar
 
 
-def surface_actor(source, color):
-    """The patch in one colour, lit from both sides."""
-    actor = gc.colored_actor(source, color=color)
-    actor.GetProperty().BackfaceCullingOff()
-    return actor
-
-
-def render_figure(description, default_output, build_scene, argv=None, default_size=(1200, 450),
-                  view_direction=(0.0, -1.0, 0.9), view_up=(0, 0, 1), zoom=2.0, parallel=False):
+def render_figure(description, default_output, build_scene, argv=None, default_size=(1300, 420),
+                  view_direction=(0.0, -1.0, 0.9), view_up=(0, 0, 1), zoom=2.5, parallel=False):
     """gc.render_figure with the curvature figures' defaults: a view of a row of patches in the xy
     plane from the front and above."""
     return gc.render_figure(description, default_output, build_scene, argv, default_size,

@@ -54,14 +54,19 @@ CASES = [("a) saddles", saddles), ("b) umbilics", umbilics), ("c) assortment", a
          ("d) tilted tangents", tilted)]
 
 
+def panel_center(k):
+    return ((k % 2) * OFFSET, -(k // 2) * OFFSET, 0.0)
+
+
 def build_scene():
+    sources = [cc.patch(lattice(panel_center(k), rule), Method=3, Origin=panel_center(k),
+                        Size=(8.0, 8.0), UResolution=96, VResolution=96, Falloff=1.0,
+                        Epsilon=EPSILON)
+               for k, (_, rule) in enumerate(CASES)]
     renderer = gc.new_renderer()
-    for k, (name, rule) in enumerate(CASES):
-        center = ((k % 2) * OFFSET, -(k // 2) * OFFSET, 0.0)
-        points = lattice(center, rule)
-        source = cc.patch(points, Method=3, Origin=center, Size=(8.0, 8.0), UResolution=96,
-                          VResolution=96, Falloff=1.0, Epsilon=EPSILON)
-        renderer.AddActor(cc.surface_actor(source, "LightSteelBlue"))
+    cc.add_height_colored(renderer, sources)
+    for k, (source, (name, _)) in enumerate(zip(sources, CASES)):
+        center = panel_center(k)
         cc.add_arrows(renderer, source, length=0.6)
         renderer.AddActor2D(gc.label(name, (center[0], center[1] - 4.8, 0.0), font_size=20))
     return renderer

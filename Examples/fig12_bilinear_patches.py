@@ -12,7 +12,7 @@ a) all along the normal, weights (0.5, -0.5, -0.5, 0.5): a saddle (the paper's e
 In c) and d) the interpolated generator is not a blade: the exact exponential (the default) and
 the paper's rule differ.
 
-    python3 fig12_bilinear_patches.py --output fig12.png --size 1200 450
+    python3 fig12_bilinear_patches.py --output fig12.png --size 1300 420
 """
 import gallery_common as gc
 import curvature_common as cc
@@ -20,10 +20,11 @@ import curvature_common as cc
 SIZE = 3.0
 SPACING = 5.0
 CASES = [
-    ("a)", [(0, 0, 1)] * 4, (0.5, -0.5, -0.5, 0.5)),
-    ("b)", [(0, 0, 1)] * 4, (0.4, 0.4, 0.4, 0.4)),
-    ("c)", [(1, 0, 1), (-1, 0, 1), (1, 0, -1), (-1, 0, -1)], (0.4, 0.4, 0.4, 0.4)),
-    ("d)", [(0, 0, 1), (1, 0, 0.5), (0, 1, -0.5), (-1, -1, 1)], (0.5, 0.4, 0.4, 0.5)),
+    ("a) saddle", [(0, 0, 1)] * 4, (0.5, -0.5, -0.5, 0.5)),
+    ("b) equal weights", [(0, 0, 1)] * 4, (0.4, 0.4, 0.4, 0.4)),
+    ("c) tilted along u", [(1, 0, 1), (-1, 0, 1), (1, 0, -1), (-1, 0, -1)], (0.4, 0.4, 0.4, 0.4)),
+    ("d) mixed directions", [(0, 0, 1), (1, 0, 0.5), (0, 1, -0.5), (-1, -1, 1)],
+     (0.5, 0.4, 0.4, 0.5)),
 ]
 
 
@@ -36,13 +37,13 @@ def bilinear_patch(x, directions, weights, resolution=48):
 
 
 def build_scene():
+    sources = [bilinear_patch(i * SPACING, directions, weights)
+               for i, (_, directions, weights) in enumerate(CASES)]
     renderer = gc.new_renderer()
-    for i, (name, directions, weights) in enumerate(CASES):
-        x = i * SPACING
-        source = bilinear_patch(x, directions, weights)
-        renderer.AddActor(cc.surface_actor(source, "LightSteelBlue"))
+    cc.add_height_colored(renderer, sources)
+    for i, (source, (name, _, _)) in enumerate(zip(sources, CASES)):
         cc.add_arrows(renderer, source, length=0.8, signed=True)  # every weight is non-zero
-        renderer.AddActor2D(gc.label(name, (x, -2.6, 0.0), font_size=22))
+        renderer.AddActor2D(gc.label(name, (i * SPACING, -2.6, 0.0), font_size=22))
     return renderer
 
 

@@ -36,7 +36,7 @@ def build_scene():
 
 def main(argv=None):
     return cc.render_figure(__doc__.splitlines()[0], "fig7_translated_tangents.png", build_scene,
-                            argv, default_size=(1300, 420), zoom=2.5)
+                            argv)
 
 
 if __name__ == "__main__":

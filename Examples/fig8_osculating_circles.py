@@ -35,7 +35,7 @@ def build_scene():
 
 def main(argv=None):
     return cc.render_figure(__doc__.splitlines()[0], "fig8_osculating_circles.png", build_scene,
-                            argv, default_size=(1300, 420), view_direction=(0.0, -1.0, 0.8), zoom=2.5)
+                            argv, view_direction=(0.0, -1.0, 0.8))
 
 
 if __name__ == "__main__":

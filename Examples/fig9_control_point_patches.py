@@ -9,7 +9,7 @@ normals):
 a) positive umbilic (all 0.5, 0.5), b) negative umbilic, c) hyperbolic (0.5, -0.5),
 d) hyperbolic with alternating signs.
 
-    python3 fig9_control_point_patches.py --output fig9.png --size 1200 450
+    python3 fig9_control_point_patches.py --output fig9.png --size 1300 420
 """
 import gallery_common as gc
 import curvature_common as cc
@@ -38,13 +38,13 @@ def four_corner_patch(x, curvatures, resolution=64):
 
 
 def build_scene():
+    sources = [four_corner_patch(i * SPACING, curvatures)
+               for i, (_, curvatures) in enumerate(CASES)]
     renderer = gc.new_renderer()
-    for i, (name, curvatures) in enumerate(CASES):
-        x = i * SPACING
-        source = four_corner_patch(x, curvatures)
-        renderer.AddActor(cc.surface_actor(source, "LightSteelBlue"))
+    cc.add_height_colored(renderer, sources)
+    for i, (source, (name, _)) in enumerate(zip(sources, CASES)):
         cc.add_arrows(renderer, source, length=0.8)
-        renderer.AddActor2D(gc.label(name, (x, -3.6, 0.0), font_size=22))
+        renderer.AddActor2D(gc.label(name, (i * SPACING, -3.6, 0.0), font_size=22))
     return renderer
 
 
