@@ -1,5 +1,6 @@
 // The batch kernel, PointPairField::mapPoints, on the 1,000,000 points of the shared mesh:
-// Kernel/<rule>/M:<generators>/threads:<n> (runOnThreads: chunks of 8192 points).
+// Kernel/<rule>/M:<generators>/threads:<n> (runOnThreads: chunks of 8192 points); and on the same
+// sheet at N = 10^4 ... 10^7 points, M = 16, one thread: KernelSize/Exact/M:16/N:<points>.
 #include "BenchSupport.h"
 
 #include <vector>
@@ -8,32 +9,45 @@ namespace
 {
 using namespace boostedbench;
 
-void Kernel(benchmark::State& state, cga::ExponentialRule rule)
+void timeKernel(benchmark::State& state, cga::ExponentialRule rule, int generators, int threads,
+  vtkStructuredGrid* mesh)
 {
-  const int generators = static_cast<int>(state.range(0));
-  const int threads = static_cast<int>(state.range(1));
+  const auto count = static_cast<std::size_t>(mesh->GetNumberOfPoints());
   const cga::PointPairField field(benchmarkGenerators(generators), kFalloff, kEpsilon);
-  const double* in = benchmarkPoints();
-  std::vector<double> out(3 * kMeshPoints);
-  if (field.mapPoints(in, out.data(), kMeshPoints, kStrength, rule) != 0)
+  const double* in = meshPoints(mesh);
+  std::vector<double> out(3 * count);
+  if (field.mapPoints(in, out.data(), count, kStrength, rule) != 0)
   {
     state.SkipWithError("some points were left unchanged: not the path to time");
     return;
   }
   for (auto _ : state)
   {
-    runOnThreads(threads, kMeshPoints, [&](std::size_t first, std::size_t last) {
+    runOnThreads(threads, count, [&](std::size_t first, std::size_t last) {
       field.mapPoints(in + 3 * first, out.data() + 3 * first, last - first, kStrength, rule);
     });
     benchmark::DoNotOptimize(out.data());
     benchmark::ClobberMemory();
   }
   state.SetLabel(cga::mapPointsInstructionSet());
-  reportPoints(state, kMeshPoints);
+  reportPoints(state, count);
+}
+
+void Kernel(benchmark::State& state, cga::ExponentialRule rule)
+{
+  timeKernel(state, rule, static_cast<int>(state.range(0)), static_cast<int>(state.range(1)),
+    benchmarkMesh());
+}
+
+void KernelSize(benchmark::State& state, cga::ExponentialRule rule)
+{
+  timeKernel(state, rule, static_cast<int>(state.range(0)), 1,
+    sheetMesh(static_cast<std::size_t>(state.range(1))));
 }
 
 BENCHMARK_CAPTURE(Kernel, Paper, cga::ExponentialRule::Paper)
   ->Apply(perGeneratorsAndThreads);
 BENCHMARK_CAPTURE(Kernel, Exact, cga::ExponentialRule::Exact)
   ->Apply(perGeneratorsAndThreads);
+BENCHMARK_CAPTURE(KernelSize, Exact, cga::ExponentialRule::Exact)->Apply(perPointCount);
 } // namespace

@@ -9,30 +9,41 @@
 #include <vtkSMPTools.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
 #include <random>
+#include <string>
 #include <thread>
+
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 namespace boostedbench
 {
 namespace
 {
-vtkSmartPointer<vtkStructuredGrid> makeMesh()
+// kMeshSide columns by `rows` rows over the square [-2, 2]^2.
+vtkSmartPointer<vtkStructuredGrid> makeMesh(int rows)
 {
+  const auto count = static_cast<vtkIdType>(kMeshSide) * rows;
   vtkNew<vtkDoubleArray> coordinates;
   coordinates->SetNumberOfComponents(3);
-  coordinates->SetNumberOfTuples(static_cast<vtkIdType>(kMeshPoints));
+  coordinates->SetNumberOfTuples(count);
   vtkNew<vtkDoubleArray> displacement;
   displacement->SetName("displacement");
   displacement->SetNumberOfComponents(3);
-  displacement->SetNumberOfTuples(static_cast<vtkIdType>(kMeshPoints));
-  for (int j = 0; j < kMeshSide; ++j)
+  displacement->SetNumberOfTuples(count);
+  for (int j = 0; j < rows; ++j)
   {
     for (int i = 0; i < kMeshSide; ++i)
     {
       const double x = -2.0 + 4.0 * i / (kMeshSide - 1);
-      const double y = -2.0 + 4.0 * j / (kMeshSide - 1);
+      const double y = -2.0 + 4.0 * j / (rows - 1);
       const double z = 0.3 * std::sin(2.0 * x) * std::cos(3.0 * y);
       const vtkIdType id = static_cast<vtkIdType>(j) * kMeshSide + i;
       coordinates->SetTypedTuple(id, std::array<double, 3>{ x, y, z }.data());
@@ -42,23 +53,83 @@ vtkSmartPointer<vtkStructuredGrid> makeMesh()
   vtkNew<vtkPoints> points;
   points->SetData(coordinates);
   auto grid = vtkSmartPointer<vtkStructuredGrid>::New();
-  grid->SetDimensions(kMeshSide, kMeshSide, 1);
+  grid->SetDimensions(kMeshSide, rows, 1);
   grid->SetPoints(points);
   grid->GetPointData()->SetVectors(displacement);
   return grid;
+}
+
+// A number in kB from /proc/self/status ("VmRSS:", "VmHWM:"), or -1.
+long long statusKilobytes(const char* field)
+{
+  std::ifstream status("/proc/self/status");
+  const std::size_t length = std::strlen(field);
+  for (std::string line; std::getline(status, line);)
+  {
+    if (line.compare(0, length, field) == 0)
+    {
+      return std::stoll(line.substr(length));
+    }
+  }
+  return -1;
 }
 } // namespace
 
 vtkStructuredGrid* benchmarkMesh()
 {
-  static const vtkSmartPointer<vtkStructuredGrid> mesh = makeMesh();
+  static const vtkSmartPointer<vtkStructuredGrid> mesh = makeMesh(kMeshSide);
   return mesh;
+}
+
+vtkStructuredGrid* sheetMesh(std::size_t points)
+{
+  if (points == kMeshPoints)
+  {
+    return benchmarkMesh();
+  }
+  // One other size at a time: the 10^7-point sheet alone holds 480 MB.
+  static vtkSmartPointer<vtkStructuredGrid> mesh;
+  if (!mesh || static_cast<std::size_t>(mesh->GetNumberOfPoints()) != points)
+  {
+    mesh = nullptr;
+    mesh = makeMesh(static_cast<int>(points / kMeshSide));
+  }
+  return mesh;
+}
+
+const double* meshPoints(vtkStructuredGrid* mesh)
+{
+  return vtkDoubleArray::SafeDownCast(mesh->GetPoints()->GetData())->GetPointer(0);
 }
 
 const double* benchmarkPoints()
 {
-  auto* coordinates = vtkDoubleArray::SafeDownCast(benchmarkMesh()->GetPoints()->GetData());
-  return coordinates->GetPointer(0);
+  return meshPoints(benchmarkMesh());
+}
+
+double peakMemoryGrowth(const std::function<void()>& work)
+{
+#ifdef __GLIBC__
+  // Under BOOSTEDBENCH_MEMORY=reuse freed arrays stay mapped in the heap; work() would reuse their
+  // pages without growing the resident set.
+  malloc_trim(0);
+#endif
+  {
+    std::ofstream clear("/proc/self/clear_refs");
+    clear << "5" << std::flush; // resets VmHWM to VmRSS (Linux 4.0)
+    if (!clear)
+    {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+  const long long before = statusKilobytes("VmRSS:");
+  work();
+  const long long peak = statusKilobytes("VmHWM:");
+  if (before < 0 || peak < 0)
+  {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  return 1024.0 * static_cast<double>(peak - before);
 }
 
 std::vector<cga::PointPairGenerator> benchmarkGenerators(int count)
@@ -90,6 +161,12 @@ void timedPerPoint(benchmark::internal::Benchmark* benchmark)
 void perGeneratorsAndThreads(benchmark::internal::Benchmark* benchmark)
 {
   benchmark->ArgsProduct({ generatorCounts(), { 1, 2 } })->ArgNames({ "M", "threads" });
+  timedPerPoint(benchmark);
+}
+
+void perPointCount(benchmark::internal::Benchmark* benchmark)
+{
+  benchmark->ArgsProduct({ { 16 }, pointCounts() })->ArgNames({ "M", "N" });
   timedPerPoint(benchmark);
 }
 

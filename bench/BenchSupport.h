@@ -1,5 +1,6 @@
-// Shared by the benchmarks of BoostedBench: the one 1,000,000-point mesh every benchmark deforms,
-// the generator fields, the points-per-second counter, and running work on N threads.
+// Shared by the benchmarks of BoostedBench: the one 1,000,000-point mesh every benchmark deforms
+// (and the same sheet at other point counts), the generator fields, the points-per-second counter,
+// the peak memory of one piece of work, and running work on N threads.
 //
 // A new benchmark (e.g. the VTK deformation filter) is one function in its own file that takes
 // benchmarkMesh(), loops over the state, and calls reportPoints(); see BenchWarpVector.cpp.
@@ -31,12 +32,25 @@ inline const std::vector<long>& generatorCounts()
   return counts;
 }
 
+/// Point counts N of the size rows (KernelSize, FilterSize): 10^4 to 10^7.
+inline const std::vector<long>& pointCounts()
+{
+  static const std::vector<long> counts = { 10000, 100000, 1000000, 10000000 };
+  return counts;
+}
+
 /// The 1,000,000-point mesh (double points), with a point vector array "displacement" for
 /// vtkWarpVector. Built once.
 vtkStructuredGrid* benchmarkMesh();
 
+/// The same sheet (the same square, kMeshSide columns) with `points` / kMeshSide rows, `points` a
+/// multiple of kMeshSide of at least 2 rows: benchmarkMesh() for kMeshPoints, otherwise built on
+/// the first call for that size and kept until a call for another size.
+vtkStructuredGrid* sheetMesh(std::size_t points);
+
 /// The mesh points as xyz doubles (the mesh's own array).
 const double* benchmarkPoints();
+const double* meshPoints(vtkStructuredGrid* mesh);
 
 /// M generators spread over the mesh's bounds, fixed seed.
 std::vector<cga::PointPairGenerator> benchmarkGenerators(int count);
@@ -49,12 +63,22 @@ constexpr double kStrength = 0.5;
 /// Reports points per second ("points/s") and items per second, over real (wall) time.
 void reportPoints(benchmark::State& state, std::size_t pointsPerIteration);
 
+/// The growth of the process's peak resident set while work() runs, in bytes: freed heap pages are
+/// returned to the system first (malloc_trim), the peak is reset to the current resident set
+/// (writing 5 to /proc/self/clear_refs), and the peak after work() (VmHWM) minus the resident set
+/// before it (VmRSS) is returned. So memory allocated and touched by work() counts, memory that
+/// existed before (its input) does not. NaN where /proc/self does not allow it (not Linux).
+double peakMemoryGrowth(const std::function<void()>& work);
+
 /// Registration settings shared by every benchmark (->Apply(...)): milliseconds, wall-clock time
 /// for the rates, the whole process's CPU time.
 void timedPerPoint(benchmark::internal::Benchmark* benchmark);
 
 /// timedPerPoint, over M = generatorCounts() and 1 or 2 threads (arguments "M" and "threads").
 void perGeneratorsAndThreads(benchmark::internal::Benchmark* benchmark);
+
+/// timedPerPoint, at M = 16 over N = pointCounts(), one thread (arguments "M" and "N").
+void perPointCount(benchmark::internal::Benchmark* benchmark);
 
 /// Updates a VTK algorithm once per benchmark iteration (Modified() first) with vtkSMPTools on the
 /// STDThread backend and `threads` threads: Debian's VTK defaults to Sequential, which ignores
