@@ -8,7 +8,9 @@ BUILD_DIR="${BUILD_DIR:-$REPO_DIR/build}"
 JOBS="${JOBS:-$(nproc)}"
 
 # Debian 12 packages: ParaView 5.11 with its own VTK 9.2, MPI, the test and benchmark
-# libraries, Xvfb for headless rendering, and the dev packages ParaView's CMake config looks for.
+# libraries, Xvfb for headless rendering, and the dev packages ParaView's CMake config looks for;
+# Qt's help tools for the plugin's help pages, SLEEF for the kernel, mpmath for the accuracy test,
+# and file, which CPack's Debian generator runs on every packaged file.
 DEBIAN_PACKAGES=(
   build-essential cmake git
   paraview paraview-dev python3-paraview python3-dev
@@ -20,7 +22,7 @@ DEBIAN_PACKAGES=(
   libjpeg-dev libtiff-dev libfreetype-dev libx11-dev libxt-dev libglew-dev libgl-dev
   libopengl-dev libglx-dev
   qtbase5-dev qttools5-dev qtxmlpatterns5-dev-tools
-  python3-mpmath libsleef-dev
+  python3-mpmath libsleef-dev file
 )
 
 log() { printf '\033[1m==> %s\033[0m\n' "$*"; }
