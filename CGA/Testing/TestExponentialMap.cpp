@@ -1,5 +1,6 @@
 // mapPointsByExponentials (ExponentialMap.h), the batch map of the curvature patch: against the
-// pointwise sandwichPoint(exponential(b, rule), p) (the Exact rule to the bit, Paper to round-off),
+// pointwise sandwichPoint(exponential(b, rule), p) (the Exact rule to the bit for the random,
+// far-from-nilpotent exponents used here, Paper to round-off),
 // the same bits on every instruction set and for every split into calls, and bad input.
 #include "cga/ExponentialMap.h"
 #include "cga/PointSandwich.h"

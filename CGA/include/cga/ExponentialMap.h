@@ -17,8 +17,11 @@ namespace cga
 /// left unchanged where it is not. Returns how many points were not mapped.
 ///
 /// The same numbers as the pointwise sandwichPoint(exponential(b[i], rule), p[i]): to the bit for
-/// the Exact rule (one template source), to round-off for the Paper rule (its closed-form sandwich
-/// of c + B). The same bits on every instruction set and however the points are split into calls.
+/// the Exact rule where b[i] is far from nilpotent (one template source), to round-off for the
+/// Paper rule (its closed-form sandwich of c + B). Where b[i] is nearly nilpotent (a point pair,
+/// a generator next to p) the Exact rule maps in a frame around p[i] instead, which is more
+/// exact than the pointwise sandwich (docs/conventions.md section 2 item 12). The same bits on
+/// every instruction set and however the points are split into calls.
 std::size_t mapPointsByExponentials(const Bivector* b,
                                     const Vec3* p,
                                     std::size_t count,
