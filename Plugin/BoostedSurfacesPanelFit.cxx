@@ -11,8 +11,10 @@
 #include "vtkPVXMLElement.h"
 #include "vtkSMSourceProxy.h"
 
+#include <QHeaderView>
 #include <QMetaObject>
 #include <QPointer>
+#include <QTableView>
 #include <QTimer>
 #include <QVariant>
 #include <QWidget>
@@ -24,6 +26,16 @@ bool HasHint(vtkSMProxy* proxy, const char* name)
 {
   vtkPVXMLElement* hints = proxy ? proxy->GetHints() : nullptr;
   return hints && hints->FindNestedElementByName(name);
+}
+
+// The columns share the table's width instead of each taking its contents' width (ParaView's
+// ResizeToContents: the dipole field's 9 columns need 539 pixels), down to the header's minimum
+// section size (28 pixels here); longer labels and values are cut.
+void FitColumns(QTableView* table)
+{
+  QHeaderView* header = table->horizontalHeader();
+  header->setStretchLastSection(false); // else the last column keeps its contents' width
+  header->setSectionResizeMode(QHeaderView::Stretch);
 }
 
 bool HasOutput(vtkSMProxy* proxy)
@@ -59,7 +71,7 @@ void BoostedSurfacesPanelFit::startup()
 void BoostedSurfacesPanelFit::watchSource(pqPipelineSource* source)
 {
   vtkSMProxy* proxy = source ? source->getProxy() : nullptr;
-  if (HasHint(proxy, "WidgetsSizedToOutput"))
+  if (HasHint(proxy, "WidgetsSizedToOutput") || HasHint(proxy, "TableColumnsFitPanel"))
   {
     QObject::connect(source,
       static_cast<void (pqPipelineSource::*)(pqPipelineSource*)>(&pqPipelineSource::dataUpdated),
@@ -82,7 +94,8 @@ void BoostedSurfacesPanelFit::fit(pqPipelineSource* source)
 {
   vtkSMProxy* proxy = source->getProxy();
   const bool sizeWidgets = HasHint(proxy, "WidgetsSizedToOutput");
-  if (!sizeWidgets)
+  const bool fitTables = HasHint(proxy, "TableColumnsFitPanel");
+  if (!sizeWidgets && !fitTables)
   {
     return;
   }
@@ -116,6 +129,13 @@ void BoostedSurfacesPanelFit::fit(pqPipelineSource* source)
           widget->setProperty("boostedSurfacesPlaced", true);
           QMetaObject::invokeMethod(widget, "placeWidget");
         }
+      }
+    }
+    if (fitTables)
+    {
+      for (QTableView* table : panel->findChildren<QTableView*>())
+      {
+        FitColumns(table);
       }
     }
   }
