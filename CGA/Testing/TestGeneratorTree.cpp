@@ -241,6 +241,20 @@ TEST(GeneratorTree, GeneratorsFarFromThePointsAndSmallSofteningMeetTheBound)
   EXPECT_LE(worstRelativeError(near, onThem, 1e-2, 0.0, 0.5).relativeError, kRounding);
 }
 
+TEST(GeneratorTree, PointsBeyondTheCellLatticeMeetTheBound)
+{
+  // Beyond 2^50 leaf cubes from the center a point is evaluated alone (GeneratorTree::evaluate);
+  // nearer ones in the lattice, at any distance.
+  Random random(31);
+  const auto generators = randomPointPairs(random, 2000, {}, 1.0);
+  const std::vector<Vec3> points = { { 1e100, 0.0, 0.0 }, { -3e40, 2.0, -1e30 }, { 1e12, -1e12, 5.0 },
+                                     { 0.0, 0.0, -4e6 }, { 0.1, 0.2, 0.3 } };
+  for (const double tolerance : { 1e-2, 1e-6 })
+  {
+    EXPECT_LE(worstRelativeError(generators, points, tolerance).relativeError, tolerance + kRounding);
+  }
+}
+
 TEST(GeneratorTree, ToleranceDomainAndSmallFields)
 {
   Random random(17);
