@@ -18,7 +18,7 @@ from boostedsurfaces import vtkPointPairDeformationFilter
 import python_test_common as common
 
 # cga::PointPairField::treeMinimumGenerators(): fewer generators always sum directly.
-TREE_FROM = 50000
+TREE_FROM = 10000
 
 
 def generator_cloud(count, seed=20261202):
