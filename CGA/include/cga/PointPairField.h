@@ -212,7 +212,7 @@ public:
   // differentiation of the same computation as map() (every branch and frame the value takes),
   // exact to rounding, with the direct sum (a tolerance's tree is not used). Each returns false,
   // writing nothing, where map() does or a derivative is not finite; the image is map()'s, to the
-  // bit.
+  // bit, without a tolerance (with one: the direct sum's image, within the tolerance of map()'s).
 
   /// map() and its derivative J = d out / d p, row-major: jacobian[3 i + j] = d out_i / d p_j.
   /// J is a general 3x3 matrix for both rules: K(p) varies with p, so even the Exact rule's map,
