@@ -367,7 +367,10 @@ vtkSmartPointer<vtkPointSet> asPointSet(vtkDataSet* input)
 // once: the peak resident memory of a 2000 x 2000 image in double grows by 72.3 bytes a point,
 // for the 72 counted here. The arrays from J add their own (vtkPointPairJacobianArrays::
 // BytesPerPoint: 3 doubles per transformed array, an upper bound, and the scalars in the output
-// precision); the Jacobians themselves live in a buffer per thread of 256 points.
+// precision); the Jacobians themselves live in a buffer per thread of 256 points. Measured on the
+// bench's 10^6-point mesh (double points, float normals and vectors): peak 60.1 bytes a point
+// with its normals transformed (72 estimated), 88.0 with the normals, a vector array and both
+// scalars (112 estimated).
 double estimatedBytes(
   vtkDataSet* input, int precision, const vtkPointPairJacobianArrays::Request& derivatives)
 {
