@@ -32,7 +32,7 @@
  *
  * Output: the input's topology, cells and arrays with moved points, plus the point vector
  * "Displacement" = p' - p. Vectors go through the map's derivative J = d p' / d p
- * (cga::PointPairField::mapPointsWithJacobians; docs/conventions.md section 3 item 15): the
+ * (cga::PointPairField::mapPointsWithJacobians; docs/conventions.md section 3 items 15-16): the
  * active point normals (TransformNormals, on by default) and the point arrays named in
  * NormalArrays become n' = |n| cof(J) n / |cof(J) n| (the direction of J^-T n, the input's
  * length), those named in VectorArrays J v; ConformalScale and ConformalityDefect add the point

@@ -15,7 +15,7 @@
  * * vectors (the point arrays named in VectorArrays): v' = J v;
  * * ConformalScale s = |det J|^(1/3) and ConformalityDefect 1 - sigma_min / sigma_max (the
  *   singular values of J, Eigen's JacobiSVD): s for a conformal map J = s R,
- *   and 0 exactly then; 1 where J is singular (docs/conventions.md section 3 item 15).
+ *   and 0 exactly then; 1 where J is singular (docs/conventions.md section 3 item 16).
  *
  * A normal or vector that is not finite passes unchanged and is counted (NonFinite), as is a
  * vector whose image overflows its type (Overflowed). Input arrays
