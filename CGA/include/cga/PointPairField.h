@@ -222,8 +222,11 @@ public:
 
   /// The batch form of mapWithJacobian through the block kernel: `count` points xyz interleaved,
   /// their images to `out` as mapPoints() writes them (the same bits), and 9 doubles per point to
-  /// `jacobians` (row-major), the identity where the point is not mapped or its derivative is not
-  /// finite. Returns how many points are such. No heap allocation; threads are the caller's.
+  /// `jacobians` (row-major). A point that is not mapped, or whose derivative is not finite (an
+  /// image whose derivative overflows: huge weights), is copied unchanged with the identity as its
+  /// Jacobian, unlike mapPoints, which maps the latter: callers that need every image call
+  /// mapPoints where the returned count is not 0. Returns how many points are such. No heap
+  /// allocation; threads are the caller's.
   std::size_t mapPointsWithJacobians(const double* in, double* out, double* jacobians,
     std::size_t count, double strength, ExponentialRule rule) const;
 
