@@ -239,10 +239,10 @@ class BoostedSurfaceCurvaturesTest(unittest.TestCase):
     def test_vtk_curvatures_on_the_mesh_converges_to_the_arrays(self):
         # vtkCurvatures on the surface split into triangles along one diagonal of every quad
         # (every vertex of valence 6): the median error of K and H over |lambda| <= 0.5 falls by
-        # 4 per halving of the step (measured: K 2.5e-2, 6.4e-3, 1.6e-3, 4.0e-4 at 16 ... 128,
-        # H 1.3e-2, 3.1e-3, 7.7e-4, 1.8e-4). vtkTriangleFilter's own diagonals vary from quad to
-        # quad, and there vtkCurvatures does not converge (median error 0.28 in K at every
-        # resolution): the arrays are the reference a mesh estimate is checked against.
+        # 4 per halving of the step (measured: K 4.8e-2, 1.2e-2, 3.0e-3, 7.6e-4 at 16 ... 128,
+        # H 1.7e-2, 4.5e-3, 1.2e-3, 3.2e-4). vtkTriangleFilter's own diagonals vary from quad to
+        # quad, and there vtkCurvatures does not converge (median error in K 6.6e-2, 5.3e-2,
+        # 4.6e-2, 4.5e-2): the arrays are the reference a mesh estimate is checked against.
         errors = {}
         for resolution in (16, 32, 64, 128):
             source = fig2_source(resolution)
