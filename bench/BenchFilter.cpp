@@ -1,6 +1,7 @@
 // vtkPointPairDeformationFilter with the kernel benchmark's field, vtkSMPTools on the STDThread
 // backend: on the shared 1,000,000-point mesh, Filter/<rule>/M:<generators>/threads:<n>, and on
-// the same sheet at N = 10^4 ... 10^7 points, M = 16, one thread, FilterSize/Exact/M:16/N:<points>.
+// the same sheet at N = 10^4 ... 10^7 points, M = 16, one and two threads,
+// FilterSize/Exact/M:16/N:<points>/threads:<n>.
 // The target: within 1.3 times the bare kernel's time (Kernel/...). Every row also reports
 // the peak memory of one update of a fresh filter per point (bench/README.md).
 #include "BenchSupport.h"
@@ -91,7 +92,7 @@ void Filter(benchmark::State& state, int rule)
 
 void FilterSize(benchmark::State& state, int rule)
 {
-  timeFilter(state, rule, static_cast<int>(state.range(0)), 1,
+  timeFilter(state, rule, static_cast<int>(state.range(0)), static_cast<int>(state.range(2)),
     sheetMesh(static_cast<std::size_t>(state.range(1))));
 }
 
