@@ -181,6 +181,23 @@ void vtkBoostedGridBuilder::SetRowFallbackNormal(int row, const double normal[3]
   }
 }
 
+void vtkBoostedGridBuilder::EnableSampleNormals()
+{
+  const size_t count = 3 * static_cast<size_t>(this->Rows) * this->Columns;
+  this->SampleNormals.reset(new double[count]);
+  double* normals = this->SampleNormals.get();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  vtkSMPTools::For(vtkIdType(0), static_cast<vtkIdType>(count),
+    [normals, nan](vtkIdType first, vtkIdType last) { std::fill(normals + first, normals + last, nan); });
+}
+
+int vtkBoostedGridBuilder::AddSampleArray(const std::string& name, int components)
+{
+  this->SampleArrays.push_back({ name, components,
+    std::vector<double>(static_cast<size_t>(components) * this->Rows * this->Columns, 0.0) });
+  return static_cast<int>(this->SampleArrays.size()) - 1;
+}
+
 void vtkBoostedGridBuilder::AddRowParameter(
   const std::string& name, const std::vector<double>& valuePerRow)
 {
@@ -201,6 +218,15 @@ void vtkBoostedGridBuilder::AddPointParameter(
 
 void vtkBoostedGridBuilder::ComputeNormal(int row, int column, double normal[3]) const
 {
+  if (this->SampleNormals)
+  {
+    const double* given = &this->SampleNormals[3 * static_cast<size_t>(this->Index(row, column))];
+    if (std::isfinite(given[0]) && std::isfinite(given[1]) && std::isfinite(given[2]))
+    {
+      std::copy_n(given, 3, normal);
+      return;
+    }
+  }
   // Central differences where both neighbours are usable, one-sided otherwise. Periodic columns
   // skip the repeated seam column so that both copies of a seam point get the same normal.
   // Each difference as a unit vector (cga::normalized, scaled where its square would underflow
@@ -359,6 +385,15 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
     array->SetNumberOfTuples(total);
     parameters.push_back(array);
   }
+  std::vector<vtkSmartPointer<vtkDoubleArray>> sampleArrays;
+  for (const SampleArray& values : this->SampleArrays)
+  {
+    auto array = vtkSmartPointer<vtkDoubleArray>::New();
+    array->SetName(values.Name.c_str());
+    array->SetNumberOfComponents(values.Components);
+    array->SetNumberOfTuples(total);
+    sampleArrays.push_back(array);
+  }
   auto* doublePoints = vtkDoubleArray::FastDownCast(points->GetData());
   auto* floatPoints = vtkFloatArray::FastDownCast(points->GetData());
 
@@ -412,6 +447,12 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
         {
           integerParameters[k]->SetValue(id, this->IntegerParameters[k].second[r]);
         }
+        for (size_t k = 0; k < sampleArrays.size(); ++k)
+        {
+          const SampleArray& values = this->SampleArrays[k];
+          std::copy_n(&values.Values[static_cast<size_t>(values.Components) * this->Index(r, c)],
+            values.Components, sampleArrays[k]->GetPointer(values.Components * id));
+        }
         return static_cast<long long>(id);
       },
       [&](int c, long long id) { ids[this->Index(r, c)] = id; });
@@ -443,6 +484,10 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
     output->GetPointData()->AddArray(array);
   }
   for (auto& array : integerParameters)
+  {
+    output->GetPointData()->AddArray(array);
+  }
+  for (auto& array : sampleArrays)
   {
     output->GetPointData()->AddArray(array);
   }

@@ -59,6 +59,28 @@ public:
   }
   /// Used where the grid gives no normal (a degenerate neighbourhood): e.g. the plane of the row's curve.
   void SetRowFallbackNormal(int row, const double normal[3]);
+
+  /// Exact normals: a source that knows its surface's derivatives calls EnableSampleNormals once
+  /// (before sampling), then SetSampleNormal for every sample where its normal is defined; those
+  /// are written as they are, the other samples get the grid's central differences as without.
+  void EnableSampleNormals();
+  void SetSampleNormal(int row, int column, const double normal[3])
+  {
+    double* n = &this->SampleNormals[3 * static_cast<size_t>(this->Index(row, column))];
+    n[0] = normal[0];
+    n[1] = normal[1];
+    n[2] = normal[2];
+  }
+
+  /// A named double point array of `components` values per grid sample, filled by the sampling
+  /// through SampleValues (zeros where not written) and written with the points of a surface or
+  /// of curves; returns its index. Call before sampling.
+  int AddSampleArray(const std::string& name, int components);
+  double* SampleValues(int array, int row, int column)
+  {
+    SampleArray& values = this->SampleArrays[static_cast<size_t>(array)];
+    return &values.Values[static_cast<size_t>(values.Components) * this->Index(row, column)];
+  }
   /// A named per-point parameter, given per row and per column (value = row value or column value).
   void AddRowParameter(const std::string& name, const std::vector<double>& valuePerRow);
   void AddColumnParameter(const std::string& name, const std::vector<double>& valuePerColumn);
@@ -100,6 +122,13 @@ private:
     bool PerPoint = false; // Values holds rows x columns values
   };
 
+  struct SampleArray
+  {
+    std::string Name;
+    int Components;
+    std::vector<double> Values; // Components x rows x columns
+  };
+
   int Index(int row, int column) const { return row * this->Columns + column; }
   // Inline (not through the shared library's PLT): called several times for every sample.
   bool Usable(int row, int column) const
@@ -124,6 +153,8 @@ private:
   double Origin[3] = { 0.0, 0.0, 0.0 };
   std::unique_ptr<double[]> Points; // 3 x rows x columns, relative to Origin; NaN: not set
   std::vector<double> FallbackNormals;
+  std::unique_ptr<double[]> SampleNormals; // 3 x rows x columns when enabled; NaN: not given
+  std::vector<SampleArray> SampleArrays;
   std::vector<Parameter> Parameters;
   int RowsPerBlock = 0; // 0: one block of all rows
   std::vector<std::pair<std::string, std::vector<int>>> IntegerParameters;

@@ -1,5 +1,6 @@
 #include "vtkBoostedSphereClip.h"
 
+#include "vtkBoostedCurvatureArrays.h"
 #include "vtkBoostedPolylineRuns.h"
 
 #include "vtkCellArray.h"
@@ -100,6 +101,7 @@ void vtkBoostedSphereClip::Clip(
             normals->SetTuple(id, n);
           }
         }
+        vtkBoostedCurvatureArrays::RenormalizeDirections(outPD, id);
       }
     }
     crossings.emplace(std::make_pair(in, out), id);

@@ -1,5 +1,6 @@
 #include "vtkBoostedSurfaceSource.h"
 
+#include "vtkBoostedCurvatureArrays.h"
 #include "vtkBoostedGridDriver.h"
 #include "vtkBoostedTimeSweep.h"
 #include "vtkInformation.h"
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 vtkStandardNewMacro(vtkBoostedSurfaceSource);
@@ -68,9 +70,12 @@ int vtkBoostedSurfaceSource::RequestData(
   vtkBoostedGridDriver driver(
     this, outInfo, this->CircleCenter, this->ClipRadius, this->OutputPointsPrecision);
   // The update's memory per grid sample, for the memory budget (vtkBoostedMemoryBudget): peak
-  // resident memory of a 2000 x 2000 grid, double precision, measured once (132 and 80 bytes;
-  // 12 GB at the 1e8-sample cap for the surface in issue 15).
-  driver.SetBytesPerSample(this->OutputType == SURFACE ? 132 : 80);
+  // resident memory of a 2000 x 2000 grid, double precision, measured once (156 and 80 bytes;
+  // the surface's 156 with its exact normals, plus the curvature arrays' 160 with them).
+  const bool surface = this->OutputType == SURFACE;
+  const bool curvatures = surface && this->ComputeCurvatures;
+  driver.SetBytesPerSample(
+    surface ? 156 + (curvatures ? vtkBoostedCurvatureArrays::BytesPerSample : 0.0) : 80);
   driver.SetMergeSeam(this->MergeSeam);
   if (!driver.Prepare(problem, rows, columns, true, this->OutputType == SURFACE))
   {
@@ -83,26 +88,40 @@ int vtkBoostedSurfaceSource::RequestData(
     const double t = rows > 1 ? static_cast<double>(r) / (rows - 1) : 0.0;
     lambdas[r] = (1.0 - t) * lambdaRange[0] + t * lambdaRange[1];
   }
-  std::vector<cga::Vec3> circlePoints(columns);
+  std::vector<cga::BoostedCircle::CircleSample> circleSamples(columns);
   for (int c = 0; c < columns; ++c)
   {
     thetas[c] = 2.0 * vtkMath::Pi() * c / this->ThetaResolution;
-    circlePoints[c] = centered.circlePoint(thetas[c]);
+    circleSamples[c] = centered.circleSample(thetas[c]);
   }
-  circlePoints[columns - 1] = circlePoints[0]; // exactly the same point at the seam
+  circleSamples[columns - 1] = circleSamples[0]; // exactly the same point (and normal) at the seam
 
   vtkBoostedGridBuilder& grid = driver.Grid();
   grid.SetOrigin(this->CircleCenter);
+  // Surfaces: exact normals, and the curvature arrays when asked for.
+  std::unique_ptr<vtkBoostedCurvatureArrays> exact;
+  if (surface)
+  {
+    exact.reset(new vtkBoostedCurvatureArrays(grid, curvatures));
+  }
   driver.SampleRows([&](int r) {
     // One 5x5 matrix per lambda row: the sandwich K up(p) ~K is linear in up(p).
-    const cga::PointMap boost(centered.boostCompact(lambdas[r]));
+    const cga::BoostedCircleRow row(centered, lambdas[r]);
     for (int c = 0; c < columns; ++c)
     {
-      cga::Vec3 p;
-      if (boost.apply(circlePoints[c], p)) // false: the point went to infinity; left NaN and dropped
+      // False: the point went to infinity; left NaN and dropped.
+      cga::SurfaceDerivatives x;
+      const bool mapped = !exact ? row.point(circleSamples[c].point, x.point)
+        : curvatures             ? row.derivatives(circleSamples[c], x)
+                                 : row.firstDerivatives(circleSamples[c], x);
+      if (mapped)
       {
-        const double point[3] = { p.x, p.y, p.z };
+        const double point[3] = { x.point.x, x.point.y, x.point.z };
         grid.SetPoint(r, c, point);
+        if (exact)
+        {
+          exact->Set(r, c, x);
+        }
       }
     }
     const cga::RoundInfo image = cga::readCircle(centered.imageBlade(lambdas[r]), 1e-12);
@@ -137,5 +156,6 @@ void vtkBoostedSurfaceSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OutputType: " << (this->OutputType == SURFACE ? "SURFACE" : "CIRCLES") << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "MergeSeam: " << this->MergeSeam << "\n";
+  os << indent << "ComputeCurvatures: " << this->ComputeCurvatures << "\n";
   os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
 }

@@ -19,7 +19,11 @@
  *
  * Output (OutputType):
  * - SURFACE: quads, with point normals, texture coordinates (u along the circle, v along lambda)
- *   and the point arrays "lambda" and "theta".
+ *   and the point arrays "lambda" and "theta". The normals are exact: the unit normal
+ *   x_theta x x_lambda of the surface's closed-form derivatives (cga::BoostedCircleRow), except
+ *   at degenerate samples (x_theta parallel to x_lambda), which get central differences of the
+ *   grid. With ComputeCurvatures also "PrincipalCurvatures", "PrincipalDirections",
+ *   "GaussianCurvature" and "MeanCurvature" (vtkBoostedCurvatureArrays).
  * - CIRCLES: one closed polyline per lambda (split where clipped), with "lambda" and "theta".
  *
  * Pieces: the lambda rows are divided among the requested pieces, so each MPI rank generates its
@@ -113,6 +117,16 @@ public:
   ///@}
 
   ///@{
+  /// SURFACE only: add the point arrays PrincipalCurvatures (k1 >= k2), PrincipalDirections (two
+  /// unit 3-vectors), GaussianCurvature and MeanCurvature, computed from the surface's exact first
+  /// and second derivatives (not from the mesh). A curvature is positive where the surface bends
+  /// away from Normals; degenerate samples have zeros (and zero directions). Default off.
+  vtkSetMacro(ComputeCurvatures, bool);
+  vtkGetMacro(ComputeCurvatures, bool);
+  vtkBooleanMacro(ComputeCurvatures, bool);
+  ///@}
+
+  ///@{
   /// 0 (default): no time. N >= 1: N time steps t in [0, 1] (vtkBoostedTimeSweep); at time t the
   /// swept range is [LambdaRange[0], LambdaRange[0] + t (LambdaRange[1] - LambdaRange[0])], so the
   /// surface grows from its first circle to the whole LambdaRange as an animation plays.
@@ -146,6 +160,7 @@ protected:
   int OutputType = SURFACE;
   int OutputPointsPrecision = DOUBLE_PRECISION;
   bool MergeSeam = false;
+  bool ComputeCurvatures = false;
   int NumberOfTimeSteps = 0;
 
 private:

@@ -1,5 +1,6 @@
 #include "vtkCurvaturePatchSource.h"
 
+#include "vtkBoostedCurvatureArrays.h"
 #include "vtkBoostedExponentialRule.h"
 #include "vtkBoostedGeneratorGlyphs.h"
 #include "vtkBoostedGridDriver.h"
@@ -119,9 +120,15 @@ int vtkCurvaturePatchSource::RequestData(
     this, outInfo, this->Origin, this->ClipRadius, this->OutputPointsPrecision);
   // The update's memory per grid sample, for the memory budget (vtkBoostedMemoryBudget): peak
   // resident memory of a 2000 x 2000 grid, double precision, measured once (156 and 104 bytes;
-  // 15 GB at the 1e8-sample cap for the surface in issue 15).
-  driver.SetBytesPerSample(this->OutputType == SURFACE && rows > 1 ? 156 : 104);
-  if (!driver.Prepare(problem, rows, columns, false, this->OutputType == SURFACE && rows > 1))
+  // 15 GB at the 1e8-sample cap for the surface in issue 15; 340 with ComputeCurvatures: its
+  // exact normals and arrays).
+  const bool surface = this->OutputType == SURFACE && rows > 1;
+  const bool curvatures = surface && this->ComputeCurvatures;
+  const double normalsBytes = 24.0; // the exact normals, 3 doubles a sample in the grid
+  driver.SetBytesPerSample(surface
+      ? 156 + (curvatures ? normalsBytes + vtkBoostedCurvatureArrays::BytesPerSample : 0.0)
+      : 104);
+  if (!driver.Prepare(problem, rows, columns, false, surface))
   {
     return 1; // an error, or an empty piece
   }
@@ -143,6 +150,11 @@ int vtkCurvaturePatchSource::RequestData(
     return 1; // the output stays empty
   }
   const double fallback[3] = { patch.frame.normal.x, patch.frame.normal.y, patch.frame.normal.z };
+  std::unique_ptr<vtkBoostedCurvatureArrays> exact;
+  if (curvatures)
+  {
+    exact.reset(new vtkBoostedCurvatureArrays(grid, true));
+  }
   // Runs of a row's samples mapped at once (the block kernel), each writing only its own grid
   // slots: the builder's points and `weights`.
   driver.SampleRuns([&](int r, int first, int last) {
@@ -157,6 +169,11 @@ int vtkCurvaturePatchSource::RequestData(
       {
         const double point[3] = { images[i].x, images[i].y, images[i].z };
         grid.SetPoint(r, first + static_cast<int>(i), point);
+        cga::SurfaceDerivatives x;
+        if (exact && patch.derivatives(us[first + i], vs[r], x))
+        {
+          exact->Set(r, first + static_cast<int>(i), x);
+        }
       }
     }
     if (first == 0)
@@ -244,5 +261,6 @@ void vtkCurvaturePatchSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ClipRadius: " << this->ClipRadius << "\n";
   os << indent << "OutputType: " << (this->OutputType == SURFACE ? "SURFACE" : "LINES") << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
+  os << indent << "ComputeCurvatures: " << this->ComputeCurvatures << "\n";
   os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
 }

@@ -41,15 +41,16 @@ void Torus(benchmark::State& state)
   timeSource(state, source, state.range(0));
 }
 
-void BoostedSurface(benchmark::State& state)
+void BoostedSurface(benchmark::State& state, bool computeCurvatures)
 {
   // Fig 2's family, 1000 lambda rows of 1000 theta samples (the seam repeated).
   vtkNew<vtkBoostedSurfaceSource> source;
   source->SetCircleNormal(0.0, 0.0, 1.0);
   source->SetBoostDirection(1.0, 0.0, 0.0);
-    source->SetLambdaResolution(kMeshSide - 1);
+  source->SetLambdaResolution(kMeshSide - 1);
   source->SetThetaResolution(kMeshSide - 1);
   source->SetClipRadius(1e6);
+  source->SetComputeCurvatures(computeCurvatures);
   timeSource(state, source, state.range(0));
 }
 
@@ -122,7 +123,8 @@ void perThreads(benchmark::internal::Benchmark* benchmark)
 }
 
 BENCHMARK(Torus)->Apply(perThreads);
-BENCHMARK(BoostedSurface)->Apply(perThreads);
+BENCHMARK_CAPTURE(BoostedSurface, Surface, false)->Apply(perThreads);
+BENCHMARK_CAPTURE(BoostedSurface, Curvatures, true)->Apply(perThreads);
 BENCHMARK(HopfFibration)->Apply(perThreads);
 BENCHMARK_CAPTURE(CurvaturePatch, TranslatedTangents, vtkCurvaturePatchSource::TRANSLATED_TANGENTS)
   ->Apply(perThreads);

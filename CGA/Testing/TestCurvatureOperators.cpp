@@ -16,15 +16,6 @@ namespace
 {
 using namespace cgatest;
 
-PatchFrame randomFrame(Random& random)
-{
-  PatchFrame frame;
-  const std::string problem =
-    PatchFrame::fromDirections(random.vec3(2.0), random.unit(), random.unit(), frame);
-  EXPECT_TRUE(problem.empty()) << problem;
-  return frame;
-}
-
 Vec3 mapWith(const CurvaturePatch& patch, double a, double b)
 {
   Vec3 out{ std::numeric_limits<double>::quiet_NaN(), 0, 0 };

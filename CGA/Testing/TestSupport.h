@@ -5,6 +5,7 @@
 #include "cga/CompactConversion.h"
 #include "cga/Multivector.h"
 #include "cga/Vec3.h"
+#include "cga/surfaces/CurvatureOperators.h"
 
 #include <gtest/gtest.h>
 
@@ -94,6 +95,16 @@ public:
 private:
   std::mt19937_64 Engine;
 };
+
+/// A random orthonormal patch frame: origin in [-2, 2]^3, random u and v directions.
+inline PatchFrame randomFrame(Random& random)
+{
+  PatchFrame frame;
+  const std::string problem =
+    PatchFrame::fromDirections(random.vec3(2.0), random.unit(), random.unit(), frame);
+  EXPECT_TRUE(problem.empty()) << problem;
+  return frame;
+}
 
 /// |a - b| / max(|b|, floor) in coefficient norm.
 inline double relativeDifference(const Multivector& a, const Multivector& b, double floor = 1e-300)

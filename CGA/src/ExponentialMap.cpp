@@ -5,6 +5,7 @@
 #include "PointPairKernel.h"
 #include "PointPairKernelDispatch.h"
 #include "ProductTerms.h"
+#include "SurfaceJetDual.h"
 
 #include <algorithm>
 #include <cmath>
@@ -62,34 +63,9 @@ std::size_t mapPointsByExponentials(const Bivector* b,
   return unmapped;
 }
 
-namespace
-{
-// Second order in (a, b): the tangents of the tangents.
-using First = core::Dual<double, 2>;
-using Second = core::Dual<First, 2>;
-
-Second secondOf(const SurfaceJet& j)
-{
-  Second x;
-  x.v = First{ j.value, { j.da, j.db } };
-  x.d[0] = First{ j.da, { j.daa, j.dab } };
-  x.d[1] = First{ j.db, { j.dab, j.dbb } };
-  return x;
-}
-
-bool jetOf(const Second& x, SurfaceJet& j)
-{
-  // x.v.d and x.d[.].v are both the first derivatives; x.d[0].d[1] and x.d[1].d[0] both d2/dadb.
-  j.value = x.v.v;
-  j.da = x.d[0].v;
-  j.db = x.d[1].v;
-  j.daa = x.d[0].d[0];
-  j.dab = x.d[0].d[1];
-  j.dbb = x.d[1].d[1];
-  return std::isfinite(j.value) && std::isfinite(j.da) && std::isfinite(j.db) &&
-    std::isfinite(j.daa) && std::isfinite(j.dab) && std::isfinite(j.dbb);
-}
-} // namespace
+using Second = core::SurfaceJetDual;
+using core::jetOf;
+using core::secondOf;
 
 bool mapJetByExponential(
   const SurfaceJet* bivector, const SurfaceJet* point, ExponentialRule rule, SurfaceJet* image)

@@ -4,6 +4,8 @@
 #include "cga/CompactConversion.h"
 #include "cga/Conformal.h"
 
+#include "NullPointPairTerms.h"
+
 namespace cga
 {
 namespace
@@ -11,19 +13,8 @@ namespace
 // b += w tau(x, v), the closed form of nullPointPairCompact written into an accumulator.
 void addNullPointPair(Bivector& b, double w, Vec3 x, Vec3 v)
 {
-  using B = Bivector;
-  const double vx = dot(v, x);
-  const double half = 0.5 * norm2(x);
-  b[B::E12] += w * (x.x * v.y - x.y * v.x);
-  b[B::E13] += w * (x.x * v.z - x.z * v.x);
-  b[B::E23] += w * (x.y * v.z - x.z * v.y);
-  b[B::E1NO] -= w * v.x;
-  b[B::E2NO] -= w * v.y;
-  b[B::E3NO] -= w * v.z;
-  b[B::E1NI] += w * (vx * x.x - half * v.x);
-  b[B::E2NI] += w * (vx * x.y - half * v.y);
-  b[B::E3NI] += w * (vx * x.z - half * v.z);
-  b[B::NONI] += w * vx;
+  const double location[3] = { x.x, x.y, x.z };
+  detail::addNullPointPair(b.c.data(), w, location, v);
 }
 } // namespace
 

@@ -47,7 +47,7 @@ PointMap::PointMap(const Even& k)
   }
 }
 
-ConformalVector PointMap::apply(const ConformalVector& x) const
+ConformalVector applyMatrix(const std::array<double, 25>& matrix, const ConformalVector& x)
 {
   ConformalVector r;
   for (int i = 0; i < ConformalVector::Count; ++i)
@@ -55,11 +55,46 @@ ConformalVector PointMap::apply(const ConformalVector& x) const
     double s = 0.0;
     for (int j = 0; j < ConformalVector::Count; ++j)
     {
-      s += this->Matrix[i * ConformalVector::Count + j] * x[j];
+      s += matrix[i * ConformalVector::Count + j] * x[j];
     }
     r[i] = s;
   }
   return r;
+}
+
+ConformalVector PointMap::apply(const ConformalVector& x) const
+{
+  return applyMatrix(this->Matrix, x);
+}
+
+std::array<double, 25> commutatorMatrix(const Bivector& b)
+{
+  // B X - X B = -2 X.B, and X.(a^b) = (X.a) b - (X.b) a. The two vectors (a, b) of each bivector
+  // component, in ConformalVector order (no, e1, e2, e3, ni), and the null basis metric:
+  // e_i.e_i = 1, no.ni = -1, no.no = ni.ni = 0.
+  constexpr int NO = ConformalVector::NO, NI = ConformalVector::NI;
+  constexpr int E1 = ConformalVector::E1, E2 = ConformalVector::E2, E3 = ConformalVector::E3;
+  constexpr int pairs[Bivector::Count][2] = { { E1, E2 }, { E1, E3 }, { E2, E3 }, { E1, NO },
+    { E2, NO }, { E3, NO }, { E1, NI }, { E2, NI }, { E3, NI }, { NO, NI } };
+  auto metric = [](int i, int j) -> double {
+    if (i == j)
+    {
+      return (i == NO || i == NI) ? 0.0 : 1.0;
+    }
+    return ((i == NO && j == NI) || (i == NI && j == NO)) ? -1.0 : 0.0;
+  };
+  std::array<double, 25> matrix{};
+  constexpr int n = ConformalVector::Count;
+  for (int k = 0; k < n; ++k) // the image of basis vector k is column k
+  {
+    for (int p = 0; p < Bivector::Count; ++p)
+    {
+      const int a = pairs[p][0], c = pairs[p][1];
+      matrix[c * n + k] -= 2.0 * b[p] * metric(k, a);
+      matrix[a * n + k] += 2.0 * b[p] * metric(k, c);
+    }
+  }
+  return matrix;
 }
 
 bool PointMap::apply(Vec3 p, Vec3& out) const

@@ -41,4 +41,13 @@ public:
 private:
   std::array<double, 25> Matrix{};
 };
+
+/// The linear map X -> B X - X B of a bivector B on conformal vectors (a vector again: -2 X.B),
+/// as PointMap's matrix (row-major, ConformalVector order). It is the derivative of the
+/// sandwich: d/dt <exp(t B) X ~exp(t B)>_1 = B Y - Y B for Y the image at t, so that the
+/// derivatives of a family of boosts in its parameter are this matrix applied again and again.
+std::array<double, 25> commutatorMatrix(const Bivector& b);
+
+/// The 5x5 matrix of commutatorMatrix or PointMap applied to x.
+ConformalVector applyMatrix(const std::array<double, 25>& matrix, const ConformalVector& x);
 } // namespace cga

@@ -70,9 +70,16 @@ void BoostedCircle::planeFrame(Vec3& a, Vec3& b) const
 
 Vec3 BoostedCircle::circlePoint(double theta) const
 {
+  return this->circleSample(theta).point;
+}
+
+BoostedCircle::CircleSample BoostedCircle::circleSample(double theta) const
+{
   Vec3 a, b;
   this->planeFrame(a, b);
-  return center + radius * (std::cos(theta) * a + std::sin(theta) * b);
+  const double c = std::cos(theta), s = std::sin(theta);
+  const Vec3 offset = c * a + s * b;
+  return { center + radius * offset, radius * (c * b - s * a), -radius * offset };
 }
 
 Multivector BoostedCircle::boost(double lambda) const
@@ -93,5 +100,62 @@ Even BoostedCircle::boostCompact(double lambda) const
 Multivector BoostedCircle::imageBlade(double lambda) const
 {
   return sandwich(this->boost(lambda), circle(center, normal, radius));
+}
+
+BoostedCircleRow::BoostedCircleRow(const BoostedCircle& family, double lambda)
+  : Boost(family.boostCompact(lambda))
+  , Commutator(commutatorMatrix(nullPointPairCompact(family.boostLocation, family.boostDirection)))
+{
+}
+
+bool BoostedCircleRow::derivatives(
+  const BoostedCircle::CircleSample& sample, SurfaceDerivatives& out) const
+{
+  return this->compute<true>(sample, out);
+}
+
+bool BoostedCircleRow::firstDerivatives(
+  const BoostedCircle::CircleSample& sample, SurfaceDerivatives& out) const
+{
+  return this->compute<false>(sample, out);
+}
+
+template <bool Second>
+bool BoostedCircleRow::compute(
+  const BoostedCircle::CircleSample& sample, SurfaceDerivatives& out) const
+{
+  const Vec3 p = sample.point, pTheta = sample.tangent, pThetaTheta = sample.second;
+  // up(p) = no + p + |p|^2/2 ni and its derivatives in theta.
+  const ConformalVector y = this->Boost.apply(ConformalVector::point(p));
+  Vec3 point;
+  if (!normalizePoint(y, point))
+  {
+    return false;
+  }
+  ConformalVector xTheta;
+  xTheta.c = { 0.0, pTheta.x, pTheta.y, pTheta.z, dot(p, pTheta) };
+  // The image's derivatives: Y_lambda = C Y, Y_lambda lambda = C C Y, Y_theta lambda = C Y_theta.
+  const ConformalVector yU = this->Boost.apply(xTheta);
+  const ConformalVector yV = applyMatrix(this->Commutator, y);
+  // fn: x = e / w with e the Euclidean part and w = Y_no; e = x w differentiated.
+  const double w = y.weight();
+  const Vec3 xU = (yU.euclidean() - yU.weight() * point) / w;
+  const Vec3 xV = (yV.euclidean() - yV.weight() * point) / w;
+  out.point = point;
+  out.du = xU;
+  out.dv = xV;
+  if (Second)
+  {
+    ConformalVector xThetaTheta;
+    xThetaTheta.c = { 0.0, pThetaTheta.x, pThetaTheta.y, pThetaTheta.z,
+      dot(pTheta, pTheta) + dot(p, pThetaTheta) };
+    const ConformalVector yUU = this->Boost.apply(xThetaTheta);
+    const ConformalVector yVV = applyMatrix(this->Commutator, yV);
+    const ConformalVector yUV = applyMatrix(this->Commutator, yU);
+    out.duu = (yUU.euclidean() - 2.0 * yU.weight() * xU - yUU.weight() * point) / w;
+    out.duv = (yUV.euclidean() - yU.weight() * xV - yV.weight() * xU - yUV.weight() * point) / w;
+    out.dvv = (yVV.euclidean() - 2.0 * yV.weight() * xV - yVV.weight() * point) / w;
+  }
+  return true;
 }
 } // namespace cga

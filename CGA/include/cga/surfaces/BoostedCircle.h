@@ -7,8 +7,11 @@
 
 #include "cga/Compact.h"
 #include "cga/Multivector.h"
+#include "cga/PointSandwich.h"
+#include "cga/SurfaceCurvature.h"
 #include "cga/Vec3.h"
 
+#include <array>
 #include <string>
 
 namespace cga
@@ -40,6 +43,13 @@ struct BoostedCircle
   /// The point of the undeformed circle at angle theta.
   Vec3 circlePoint(double theta) const;
 
+  /// That point (the same bits) with its first and second derivatives in theta.
+  struct CircleSample
+  {
+    Vec3 point, tangent, second;
+  };
+  CircleSample circleSample(double theta) const;
+
   /// K(lambda) = 1 + lambda tau(boostLocation, boostDirection), full multivector (reference).
   Multivector boost(double lambda) const;
 
@@ -49,5 +59,36 @@ struct BoostedCircle
   /// The circle blade (up(a) ^ up(b) ^ up(c)) sandwiched by K(lambda): a circle, or a line where the
   /// circle passes through the boost's pole.
   Multivector imageBlade(double lambda) const;
+};
+
+/// One circle of the surface, x(theta, lambda) = fn(K(lambda) up(circlePoint(theta)) ~K(lambda))
+/// at a fixed lambda, with the surface's derivatives in closed form (docs/conventions.md
+/// section 6): the maps of K(lambda) and of the commutator with tau are built once per circle.
+class BoostedCircleRow
+{
+public:
+  BoostedCircleRow(const BoostedCircle& family, double lambda);
+
+  /// The surface point at the circle sample (the same bits as PointMap(K(lambda)).apply of its
+  /// point) and its first and second derivatives, u = theta, v = lambda. K(lambda) =
+  /// exp(lambda tau) commutes with tau, so d/dlambda Y = tau Y - Y tau for the image Y = K X ~K:
+  /// one commutator for each derivative in lambda. The derivatives in theta are the circle's,
+  /// carried by the same linear map, and fn(Y) = Y_e / Y_no gives the point's by the quotient
+  /// rule. False where the point goes to infinity (as PointMap::apply): out unchanged.
+  bool derivatives(const BoostedCircle::CircleSample& sample, SurfaceDerivatives& out) const;
+
+  /// The same with the first derivatives only (the second ones left as they are in out): what
+  /// the normal needs, at half the cost.
+  bool firstDerivatives(const BoostedCircle::CircleSample& sample, SurfaceDerivatives& out) const;
+
+  /// The point alone: PointMap(K(lambda)).apply.
+  bool point(Vec3 p, Vec3& out) const { return this->Boost.apply(p, out); }
+
+private:
+  template <bool Second>
+  bool compute(const BoostedCircle::CircleSample& sample, SurfaceDerivatives& out) const;
+
+  PointMap Boost;
+  std::array<double, 25> Commutator;
 };
 } // namespace cga

@@ -3,7 +3,9 @@
 // fn(<K up(p) ~K>_1) with K = exp(E(a, b)) by the Exact or Paper rule (docs/conventions.md section 2).
 #pragma once
 
+#include "cga/ExponentialMap.h"
 #include "cga/PointPairField.h"
+#include "cga/SurfaceCurvature.h"
 #include "cga/surfaces/CurvatureOperators.h"
 
 #include <array>
@@ -72,6 +74,19 @@ struct CurvaturePatch
   /// unchanged where it is false. map() is this for one sample: the two agree bit for bit.
   void mapRow(double b, const double* a, std::size_t count, Vec3* out, double* weights,
     bool* mapped) const;
+
+  /// generatorAt(a, b).exponent with its first and second derivatives in (a, b), ten components
+  /// in Compact.h order, of the patch moved by -shift: the operators' formulas (eq 15-18, 21-22,
+  /// 24-26) run on second-order dual numbers (src/surfaces/CurvaturePatchJet.cpp). Every operator
+  /// is a sum of w_i(a, b) tau(x_i(a, b), d_i): the weights rational in p(a, b) (osculating
+  /// circles, control points) or polynomial (the interpolations), the locations linear in (a, b)
+  /// and tau polynomial of degree 2 in its location. Call after validate().
+  void exponentJet(double a, double b, Vec3 shift, SurfaceJet exponent[Bivector::Count]) const;
+
+  /// The image of p(a, b) with its first and second derivatives, u = a, v = b: E(a, b) and
+  /// p(a, b) as jets through mapJetByExponential, about the origin as map(). False where map()
+  /// would be, or where a derivative is not finite (out unchanged).
+  bool derivatives(double a, double b, SurfaceDerivatives& out) const;
 
 private:
   /// E(a, b) of the patch moved by -shift.

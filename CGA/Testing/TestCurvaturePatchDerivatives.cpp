@@ -1,0 +1,184 @@
+// The curvature patch's derivatives (CurvaturePatch::exponentJet, ::derivatives): E(a, b)'s jet
+// against generatorAt and its central differences for every method, the image's against map(),
+// and the curvatures they give against the paper's statements: eq 15's bent line has curvature
+// kappa, and Fig 7's presets have the principal curvatures (kappaU, kappaV) at the origin.
+#include "TestSupport.h"
+
+#include "cga/SurfaceCurvature.h"
+#include "cga/surfaces/CurvaturePatch.h"
+
+#include <cmath>
+#include <limits>
+
+namespace
+{
+using namespace cgatest;
+
+// A patch of each method with generic parameters (two control points, four corners).
+CurvaturePatch patchOf(CurvatureMethod method, Random& random)
+{
+  CurvaturePatch patch;
+  patch.method = method;
+  patch.frame = randomFrame(random);
+  patch.kappaU = random.uniform(-1.0, 1.0);
+  patch.kappaV = random.uniform(-1.0, 1.0);
+  patch.epsilon = 0.3;
+  patch.falloff = 0.7;
+  for (int i = 0; i < 2; ++i)
+  {
+    patch.controlPoints.push_back({ patch.frame.at(random.uniform(-1, 1), random.uniform(-1, 1)),
+      patch.frame.normal + 0.2 * random.unit(), patch.frame.u, random.uniform(-1.0, 1.0),
+      random.uniform(-1.0, 1.0) });
+  }
+  for (CornerGenerator& g : patch.corners)
+  {
+    g.direction = patch.frame.normal + 0.3 * random.unit();
+    g.weight = random.uniform(-0.5, 0.5);
+  }
+  EXPECT_TRUE(patch.validate().empty());
+  return patch;
+}
+
+constexpr CurvatureMethod kMethods[] = { CurvatureMethod::BentLine,
+  CurvatureMethod::TranslatedTangents, CurvatureMethod::OsculatingCircles,
+  CurvatureMethod::ControlPoints, CurvatureMethod::Linear, CurvatureMethod::Bilinear };
+
+TEST(CurvaturePatchDerivatives, ExponentJetIsTheGeneratorWithItsDifferences)
+{
+  Random random(1303);
+  for (const CurvatureMethod method : kMethods)
+  {
+    for (int trial = 0; trial < 5; ++trial)
+    {
+      const CurvaturePatch patch = patchOf(method, random);
+      const double a = random.uniform(-1.5, 1.5), b = random.uniform(-1.5, 1.5);
+      SurfaceJet jet[Bivector::Count];
+      patch.exponentJet(a, b, Vec3{}, jet);
+      auto e = [&](double da, double db) { return patch.generatorAt(a + da, b + db).exponent; };
+      const Bivector value = e(0, 0);
+      // Central differences at h and h/2, extrapolated (Richardson): truncation O(h^4) = 1e-12,
+      // rounding eps / (h/2)^2 = 1e-9 in the second differences.
+      auto extrapolated = [](auto difference) {
+        const double h = 1e-3;
+        return (4.0 * difference(0.5 * h) - difference(h)) / 3.0;
+      };
+      for (int c = 0; c < Bivector::Count; ++c)
+      {
+        const double scale = std::max(1.0, value.maxAbs());
+        EXPECT_NEAR(jet[c].value, value[c], 1e-14 * scale) << static_cast<int>(method);
+        EXPECT_NEAR(jet[c].da,
+          extrapolated([&](double h) { return (e(h, 0)[c] - e(-h, 0)[c]) / (2 * h); }), 1e-8 * scale);
+        EXPECT_NEAR(jet[c].db,
+          extrapolated([&](double h) { return (e(0, h)[c] - e(0, -h)[c]) / (2 * h); }), 1e-8 * scale);
+        EXPECT_NEAR(jet[c].daa, extrapolated([&](double h) {
+          return (e(h, 0)[c] - 2 * value[c] + e(-h, 0)[c]) / (h * h);
+        }), 1e-8 * scale);
+        EXPECT_NEAR(jet[c].dbb, extrapolated([&](double h) {
+          return (e(0, h)[c] - 2 * value[c] + e(0, -h)[c]) / (h * h);
+        }), 1e-8 * scale);
+        EXPECT_NEAR(jet[c].dab, extrapolated([&](double h) {
+          return (e(h, h)[c] - e(h, -h)[c] - e(-h, h)[c] + e(-h, -h)[c]) / (4 * h * h);
+        }), 1e-8 * scale);
+      }
+    }
+  }
+}
+
+TEST(CurvaturePatchDerivatives, ImageDerivativesAreMapsDifferences)
+{
+  Random random(1304);
+  for (const ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
+  {
+    for (const CurvatureMethod method : kMethods)
+    {
+      CurvaturePatch patch = patchOf(method, random);
+      patch.rule = rule;
+      const double a = random.uniform(-1.5, 1.5), b = random.uniform(-1.5, 1.5);
+      SurfaceDerivatives x;
+      ASSERT_TRUE(patch.derivatives(a, b, x));
+      auto at = [&](double da, double db) {
+        Vec3 p;
+        double weight;
+        EXPECT_TRUE(patch.map(a + da, b + db, p, weight));
+        return p;
+      };
+      const double h = 1e-4;
+      const Vec3 p = at(0, 0);
+      EXPECT_TRUE(pointsNear(x.point, p, 1e-13));
+      const double scale = std::max({ 1.0, maxNorm(x.duu), maxNorm(x.dvv), maxNorm(x.duv) });
+      EXPECT_LE(distance(x.du, (at(h, 0) - at(-h, 0)) / (2 * h)), 1e-7 * scale);
+      EXPECT_LE(distance(x.dv, (at(0, h) - at(0, -h)) / (2 * h)), 1e-7 * scale);
+      EXPECT_LE(distance(x.duu, (at(h, 0) - 2.0 * p + at(-h, 0)) / (h * h)), 1e-6 * scale);
+      EXPECT_LE(distance(x.dvv, (at(0, h) - 2.0 * p + at(0, -h)) / (h * h)), 1e-6 * scale);
+      EXPECT_LE(distance(x.duv, (at(h, h) - at(h, -h) - at(-h, h) + at(-h, -h)) / (4 * h * h)),
+        1e-6 * scale);
+    }
+  }
+}
+
+TEST(CurvaturePatchDerivatives, BentLineHasCurvatureKappaAlongUAndNoneAlongV)
+{
+  // Eq 15: every u line is the circle of curvature kappa, and the rows are translates along v:
+  // a cylinder, k = (kappa, 0) at every point (the center of curvature on the -n side: bending
+  // away from the normal u x v, positive).
+  Random random(1305);
+  for (const double kappa : { 0.5, 2.0, -0.75 })
+  {
+    CurvaturePatch patch;
+    patch.method = CurvatureMethod::BentLine;
+    patch.frame = randomFrame(random);
+    patch.kappaU = kappa;
+    ASSERT_TRUE(patch.validate().empty());
+    for (const double a : { -2.0, -0.5, 0.0, 1.0 })
+    {
+      for (const double b : { -1.0, 0.0, 0.7 })
+      {
+        SurfaceDerivatives x;
+        ASSERT_TRUE(patch.derivatives(a, b, x));
+        const SurfaceCurvature k = surfaceCurvature(x);
+        ASSERT_TRUE(k.regular);
+        EXPECT_NEAR(k.k1, std::max(kappa, 0.0), 1e-9) << kappa << " " << a << " " << b;
+        EXPECT_NEAR(k.k2, std::min(kappa, 0.0), 1e-9);
+        EXPECT_NEAR(k.gaussian, 0.0, 1e-9);
+        EXPECT_NEAR(k.mean, 0.5 * kappa, 1e-9);
+        // v (the cylinder's axis) is the flat direction.
+        const Vec3 flat = kappa > 0 ? k.direction2 : k.direction1;
+        EXPECT_NEAR(std::fabs(dot(flat, patch.frame.v)), 1.0, 1e-9);
+      }
+    }
+  }
+}
+
+TEST(CurvaturePatchDerivatives, Fig7PresetsHaveTheirCurvaturesAtTheOrigin)
+{
+  Random random(1306);
+  for (const CurvaturePreset preset : { CurvaturePreset::Parabolic, CurvaturePreset::Elliptic,
+         CurvaturePreset::Umbilic, CurvaturePreset::Hyperbolic })
+  {
+    for (const ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
+    {
+      CurvaturePatch patch;
+      patch.method = CurvatureMethod::TranslatedTangents;
+      patch.rule = rule;
+      patch.frame = randomFrame(random);
+      presetCurvatures(preset, patch.kappaU, patch.kappaV);
+      ASSERT_TRUE(patch.validate().empty());
+      SurfaceDerivatives x;
+      ASSERT_TRUE(patch.derivatives(0.0, 0.0, x));
+      const SurfaceCurvature k = surfaceCurvature(x);
+      ASSERT_TRUE(k.regular);
+      EXPECT_LE(distance(k.normal, patch.frame.normal), 1e-12);
+      const double ku = patch.kappaU, kv = patch.kappaV;
+      EXPECT_NEAR(k.k1, std::max(ku, kv), 1e-9) << static_cast<int>(preset);
+      EXPECT_NEAR(k.k2, std::min(ku, kv), 1e-9) << static_cast<int>(preset);
+      EXPECT_NEAR(k.gaussian, ku * kv, 1e-9);
+      EXPECT_NEAR(k.mean, 0.5 * (ku + kv), 1e-9);
+      if (ku != kv) // an umbilic has no principal directions
+      {
+        const Vec3 alongU = ku > kv ? k.direction1 : k.direction2;
+        EXPECT_NEAR(std::fabs(dot(alongU, patch.frame.u)), 1.0, 1e-9);
+      }
+    }
+  }
+}
+} // namespace

@@ -1,0 +1,162 @@
+#include "cga/SurfaceCurvature.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace cga
+{
+namespace
+{
+double maxAbs(Vec3 a)
+{
+  return std::max({ std::fabs(a.x), std::fabs(a.y), std::fabs(a.z) });
+}
+
+// The binary exponent e with 2^(e-1) <= m < 2^e (0 for m = 0): dividing by 2^e is exact.
+int exponentOf(double m)
+{
+  int e = 0;
+  std::frexp(m, &e);
+  return e;
+}
+
+// The scale exponent of derivatives whose largest component is m: 0 (no scaling, the common
+// case, without the cost of frexp and ldexp) from 2^-100 to 2^100, where every product below
+// stays far from underflow and overflow; otherwise m's exponent.
+int scaleExponent(double m)
+{
+  return (m >= 0x1p-100 && m <= 0x1p100) ? 0 : exponentOf(m);
+}
+
+Vec3 scaled(Vec3 v, int e)
+{
+  return e == 0 ? v : Vec3{ std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e) };
+}
+
+// x_u and x_v, divided by 2^e where their squared lengths are outside [2^-200, 2^200] (e the
+// exponent of their largest component: then no square below underflows or overflows), their
+// squared lengths and the unit normal; false at a degenerate point: the area element vanishes
+// next to the larger derivative's square (x_u and x_v parallel, or one of them zero, as at a pole
+// of latitude and longitude), or a derivative is not finite.
+struct ScaledFirst
+{
+  Vec3 du, dv, normal;
+  double lengthU2, lengthV2;
+  int exponent;
+};
+
+bool scaledFirst(Vec3 du, Vec3 dv, ScaledFirst& out)
+{
+  out.exponent = 0;
+  double uu = dot(du, du), vv = dot(dv, dv);
+  double larger = std::max(uu, vv);
+  if (!(larger >= 0x1p-200 && larger <= 0x1p200)) // also NaN and inf
+  {
+    const double first = std::max(maxAbs(du), maxAbs(dv));
+    if (!isFinite(du) || !isFinite(dv) || !(first > 0.0))
+    {
+      return false;
+    }
+    out.exponent = exponentOf(first);
+    du = scaled(du, out.exponent);
+    dv = scaled(dv, out.exponent);
+    uu = dot(du, du);
+    vv = dot(dv, dv);
+    larger = std::max(uu, vv);
+  }
+  const Vec3 area = cross(du, dv);
+  const double areaSquared = dot(area, area);
+  // |x_u x x_v| > 1e-12 max(|x_u|, |x_v|)^2, squared.
+  if (!(areaSquared > 1e-24 * larger * larger))
+  {
+    return false;
+  }
+  out.du = du;
+  out.dv = dv;
+  out.lengthU2 = uu;
+  out.lengthV2 = vv;
+  out.normal = area * (1.0 / std::sqrt(areaSquared));
+  return true;
+}
+} // namespace
+
+bool surfaceNormal(Vec3 du, Vec3 dv, Vec3& normal)
+{
+  ScaledFirst first;
+  if (!scaledFirst(du, dv, first))
+  {
+    return false;
+  }
+  normal = first.normal;
+  return true;
+}
+
+SurfaceCurvature surfaceCurvature(const SurfaceDerivatives& x)
+{
+  SurfaceCurvature result;
+  ScaledFirst first;
+  if (!scaledFirst(x.du, x.dv, first) || !isFinite(x.duu) || !isFinite(x.duv) || !isFinite(x.dvv))
+  {
+    return result;
+  }
+  // The second derivatives scaled by 2^e2 as the first ones by 2^e1 (scaledFirst): every
+  // curvature is then divided by 2^(e2 - 2 e1).
+  const int e1 = first.exponent;
+  const double second = std::max({ maxAbs(x.duu), maxAbs(x.duv), maxAbs(x.dvv) });
+  const int e2 = second == 0.0 ? 0 : scaleExponent(second);
+  const Vec3 du = first.du, dv = first.dv, n = first.normal;
+  const Vec3 duu = scaled(x.duu, e2), duv = scaled(x.duv, e2), dvv = scaled(x.dvv, e2);
+  const double lengthU = std::sqrt(first.lengthU2);
+  // The orthonormal tangent frame (e1 along x_u, e2 = n x e1) and x_u, x_v in it: x_u = alpha e1,
+  // x_v = beta e1 + gamma e2 (gamma > 0).
+  const Vec3 t1 = du / lengthU;
+  const Vec3 t2 = cross(n, t1);
+  const double alpha = lengthU, beta = dot(dv, t1), gamma = dot(dv, t2);
+  // The second fundamental form with the sign that makes bending away from n positive.
+  const double l = -dot(duu, n), m = -dot(duv, n), nn = -dot(dvv, n);
+  // The shape operator in the frame (e1, e2): W = A^-T II A^-1 with A = [[alpha, beta], [0, gamma]].
+  const double w11 = l / (alpha * alpha);
+  const double w12 = (m * alpha - l * beta) / (alpha * alpha * gamma);
+  const double w22 = (l * beta * beta - 2.0 * m * alpha * beta + nn * alpha * alpha) /
+    (alpha * alpha * gamma * gamma);
+  // Eigenvalues of the symmetric 2x2 W as mean +- radius: the radius by hypot, so that k1 - k2
+  // is accurate to rounding of W's entries even at an umbilic.
+  const double half = 0.5 * (w11 - w22);
+  const double radius = std::hypot(half, w12);
+  const double center = 0.5 * (w11 + w22);
+  const int scale = e2 - 2 * e1;
+  const double k1 = scale == 0 ? center + radius : std::ldexp(center + radius, scale);
+  const double k2 = scale == 0 ? center - radius : std::ldexp(center - radius, scale);
+  const double gaussian = k1 * k2;
+  const double mean = scale == 0 ? center : std::ldexp(center, scale);
+  if (!std::isfinite(k1) || !std::isfinite(k2) || !std::isfinite(gaussian))
+  {
+    return result;
+  }
+  // The eigenvector of k1 at angle phi from e1, tan 2 phi = w12 / half, phi in (-pi/2, pi/2].
+  // Its sign: positive along the nearer of e1 and e2, so that it flips only where it is at 45
+  // degrees to both, not where it is along e2 (a surface of revolution's meridian is
+  // perpendicular to the parallels x_u: there cos phi is rounding, and its sign would flip from
+  // sample to sample). At an umbilic, where W's off-mean part is rounding, every direction is
+  // principal: e1.
+  const double size = std::max({ std::fabs(w11), std::fabs(w12), std::fabs(w22) });
+  const bool umbilic = radius <= 64.0 * std::numeric_limits<double>::epsilon() * size;
+  const double phi = umbilic ? 0.0 : 0.5 * std::atan2(w12, half);
+  double along1 = std::cos(phi), along2 = std::sin(phi);
+  if (std::fabs(along2) > along1 && along2 < 0.0)
+  {
+    along1 = -along1;
+    along2 = -along2;
+  }
+  result.regular = true;
+  result.normal = n;
+  result.k1 = k1;
+  result.k2 = k2;
+  result.direction1 = along1 * t1 + along2 * t2;
+  result.direction2 = cross(n, result.direction1);
+  result.gaussian = gaussian;
+  result.mean = mean;
+  return result;
+}
+} // namespace cga
