@@ -10,7 +10,8 @@ JOBS="${JOBS:-$(nproc)}"
 # Debian 12 packages: ParaView 5.11 with its own VTK 9.2, MPI, the test and benchmark
 # libraries, Xvfb for headless rendering, and the dev packages ParaView's CMake config looks for;
 # Qt's help tools for the plugin's help pages, SLEEF for the kernel, mpmath for the accuracy test,
-# and file, which CPack's Debian generator runs on every packaged file.
+# file, which CPack's Debian generator runs on every packaged file, and Ceres Solver for the
+# fit filter.
 DEBIAN_PACKAGES=(
   build-essential cmake git
   paraview paraview-dev python3-paraview python3-dev
@@ -23,6 +24,7 @@ DEBIAN_PACKAGES=(
   libopengl-dev libglx-dev
   qtbase5-dev qttools5-dev qtxmlpatterns5-dev-tools
   python3-mpmath libsleef-dev file
+  libceres-dev
 )
 
 log() { printf '\033[1m==> %s\033[0m\n' "$*"; }
