@@ -1,6 +1,8 @@
 // The batch kernel, PointPairField::mapPoints, on the 1,000,000 points of the shared mesh:
 // Kernel/<rule>/M:<generators>/threads:<n> (runOnThreads: chunks of 8192 points); and on the same
-// sheet at N = 10^4 ... 10^7 points, M = 16, one thread: KernelSize/Exact/M:16/N:<points>.
+// sheet at N = 10^4 ... 10^7 points, M = 16, one thread: KernelSize/Exact/M:16/N:<points>; the
+// images with their Jacobians (mapPointsWithJacobians, the derivative's cost per point):
+// KernelJacobian/<rule>/M:<generators>/threads:<n>.
 #include "BenchSupport.h"
 
 #include <vector>
@@ -33,6 +35,33 @@ void timeKernel(benchmark::State& state, cga::ExponentialRule rule, int generato
   reportPoints(state, count);
 }
 
+void KernelJacobian(benchmark::State& state, cga::ExponentialRule rule)
+{
+  const int threads = static_cast<int>(state.range(1));
+  vtkStructuredGrid* mesh = benchmarkMesh();
+  const auto count = static_cast<std::size_t>(mesh->GetNumberOfPoints());
+  const cga::PointPairField field(
+    benchmarkGenerators(static_cast<int>(state.range(0))), kFalloff, kEpsilon);
+  const double* in = meshPoints(mesh);
+  std::vector<double> out(3 * count), jacobians(9 * count);
+  if (field.mapPointsWithJacobians(in, out.data(), jacobians.data(), count, kStrength, rule) != 0)
+  {
+    state.SkipWithError("some points were left unchanged: not the path to time");
+    return;
+  }
+  for (auto _ : state)
+  {
+    runOnThreads(threads, count, [&](std::size_t first, std::size_t last) {
+      field.mapPointsWithJacobians(in + 3 * first, out.data() + 3 * first,
+        jacobians.data() + 9 * first, last - first, kStrength, rule);
+    });
+    benchmark::DoNotOptimize(jacobians.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetLabel(cga::mapPointsInstructionSet());
+  reportPoints(state, count);
+}
+
 void Kernel(benchmark::State& state, cga::ExponentialRule rule)
 {
   timeKernel(state, rule, static_cast<int>(state.range(0)), static_cast<int>(state.range(1)),
@@ -48,6 +77,10 @@ void KernelSize(benchmark::State& state, cga::ExponentialRule rule)
 BENCHMARK_CAPTURE(Kernel, Paper, cga::ExponentialRule::Paper)
   ->Apply(perGeneratorsAndThreads);
 BENCHMARK_CAPTURE(Kernel, Exact, cga::ExponentialRule::Exact)
+  ->Apply(perGeneratorsAndThreads);
+BENCHMARK_CAPTURE(KernelJacobian, Paper, cga::ExponentialRule::Paper)
+  ->Apply(perGeneratorsAndThreads);
+BENCHMARK_CAPTURE(KernelJacobian, Exact, cga::ExponentialRule::Exact)
   ->Apply(perGeneratorsAndThreads);
 BENCHMARK_CAPTURE(KernelSize, Exact, cga::ExponentialRule::Exact)->Apply(perPointCount);
 } // namespace

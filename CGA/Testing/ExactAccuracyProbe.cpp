@@ -4,8 +4,9 @@
 //   falloff epsilon strength generators points
 //   x y z dx dy dz weight        (one line per point-pair generator)
 //   px py pz                     (one line per point)
-// and prints per point the batch image (mapPoints) and the pointwise image (map), 17 digits each,
-// or "unmapped" for a point either path leaves unchanged.
+// and prints per point the batch image (mapPoints), the pointwise image (map) and the Jacobian
+// d image / d p (mapWithJacobian, row-major), 17 digits each, or "unmapped" for a point any of
+// them leaves unchanged.
 #include "cga/PointPairField.h"
 
 #include <cstdio>
@@ -40,14 +41,21 @@ int main()
     for (int i = 0; i < pointCount; ++i)
     {
       const cga::Vec3 p{ points[3 * i], points[3 * i + 1], points[3 * i + 2] };
-      cga::Vec3 pointwise;
-      if (!field.map(p, strength, cga::ExponentialRule::Exact, pointwise))
+      cga::Vec3 pointwise, withJacobian;
+      double jacobian[9];
+      if (!field.map(p, strength, cga::ExponentialRule::Exact, pointwise) ||
+        !field.mapWithJacobian(p, strength, cga::ExponentialRule::Exact, withJacobian, jacobian))
       {
         std::printf("unmapped\n");
         continue;
       }
-      std::printf("%.17g %.17g %.17g %.17g %.17g %.17g\n", batch[3 * i], batch[3 * i + 1],
+      std::printf("%.17g %.17g %.17g %.17g %.17g %.17g", batch[3 * i], batch[3 * i + 1],
                   batch[3 * i + 2], pointwise.x, pointwise.y, pointwise.z);
+      for (const double entry : jacobian)
+      {
+        std::printf(" %.17g", entry);
+      }
+      std::printf("\n");
     }
   }
   return 0;

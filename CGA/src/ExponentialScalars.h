@@ -79,9 +79,11 @@ struct PlaneFunctions
 // Power series in l = +-x^2 of both functions (x < kPlaneSeriesLimit): the result does not jump
 // at l = 0. Next term: l^5/10!.
 template <typename T>
-inline void planeSeries(const T& m, const T& lh, const T& x, T& c, T& sHat)
+inline void planeSeries(const T& m, const T& lh, T& c, T& sHat)
 {
-  const T l = select(lessEqual(T{}, lh), x * x, -x * x);
+  // l = m^2 lh = +-x^2, from m and lh (no overflow where the series is taken: m (m |lh|) = x^2 <
+  // 1e-4), not from x: a Dual's tangents of x = m sqrt|lh| are lost where lh = 0, those of l not.
+  const T l = m * (m * lh);
   c = 1.0 + l / 2.0 * (1.0 + l / 12.0 * (1.0 + l / 30.0 * (1.0 + l / 56.0)));
   sHat = m * (1.0 + l / 6.0 * (1.0 + l / 20.0 * (1.0 + l / 42.0 * (1.0 + l / 72.0))));
 }
@@ -92,7 +94,7 @@ inline PlaneFunctions<T> planeFunctions(const T& m, const T& lh, bool divideByCo
   const T r = laneSqrt(magnitude(lh));
   const T x = m * r;
   PlaneFunctions<T> f;
-  planeSeries(m, lh, x, f.c, f.sHat);
+  planeSeries(m, lh, f.c, f.sHat);
   const Mask<T> series = lessThan(x, splat<T>(kPlaneSeriesLimit));
   // NaN lanes (B not finite) take no branch: the caller replaces them.
   const Mask<T> positive = lessThan(T{}, lh);

@@ -19,6 +19,7 @@
 // linker keeps for the baseline code too, which would then fault on an older CPU.
 #pragma once
 
+#include "DualNumber.h"
 #include "ExponentialScalars.h"
 #include "LaneMath.h"
 #include "PointPairKernel.h"
@@ -130,13 +131,17 @@ struct Scale
   bool finite[kLanesOf<T>], zero[kLanesOf<T>];
 
   bool usable(int l) const { return finite[l] && !zero[l]; }
-
-  /// NaN where B is not finite, the identity's value where B = 0, else the computed value.
-  double guard(int l, double identity, double value) const
-  {
-    return !finite[l] ? __builtin_nan("") : (zero[l] ? identity : value);
-  }
 };
+
+/// NaN where B is not finite, value elsewhere: a selection on T itself, so that a Dual
+/// (DualNumber.h) keeps the tangents of the value it selects. Where B = 0 the computed value is
+/// the identity's, with B's tangents: the closed forms and series run there with m = 1 (u = B).
+template <typename T>
+BOOSTED_CORE_INLINE T nanWhereNotFinite(const Scale<T>& scale, const T& value)
+{
+  const Mask<T> finite = lessThan(scale.m.value(), splat<T>(__builtin_inf())); // NaN: false
+  return select(finite, value, splat<T>(__builtin_nan("")));
+}
 
 /// The scale m of B, and u = B / m where m is non-zero and finite (B where it is not).
 template <typename T>
@@ -170,14 +175,8 @@ BOOSTED_CORE_INLINE void bladeExponential(const Scale<T>& scale, const T& s, boo
     m.v[l] = scale.usable(l) ? m.v[l] : 1.0;
   }
   const detail::PlaneFunctions<T> f = detail::planeFunctions(m.value(), s, divideByCosh);
-  LaneArray<T> cosine(f.c), sHat(f.sHat);
-  for (int l = 0; l < L; ++l)
-  {
-    cosine.v[l] = scale.guard(l, 1.0, cosine.v[l]);
-    sHat.v[l] = scale.guard(l, 0.0, sHat.v[l]);
-  }
-  c = cosine.value();
-  const T factor = sHat.value();
+  c = nanWhereNotFinite(scale, f.c);
+  const T factor = nanWhereNotFinite(scale, f.sHat);
   for (int i = 0; i < kBivector; ++i)
   {
     u[i] = factor * u[i];
@@ -199,11 +198,12 @@ void paperExponential(T* b, T& c, bool divideByCosh)
 /// sums, the quadratic forms add their own (docs/conventions.md section 2 item 12).
 constexpr double kInvariantNoise = 32.0 * 0x1p-52;
 
-/// q where |q| exceeds kInvariantNoise times `terms` (the sum of its terms' magnitudes), else 0.
+/// q where |q| exceeds kInvariantNoise times `terms` (the sum of its terms' magnitudes), else 0
+/// (its value: a Dual keeps its tangents, which need not vanish where the invariant does).
 template <typename T>
 BOOSTED_CORE_INLINE T dropRounding(const T& q, const T& terms)
 {
-  return select(lessEqual(magnitude(q), kInvariantNoise * terms), T{}, q);
+  return zeroValue(lessEqual(magnitude(q), kInvariantNoise * terms), q);
 }
 
 /// The invariants of u = B/m: W = u ^ u, w2 = W W, s = <u u>_0, each 0 where it is below the
@@ -272,8 +272,9 @@ void seriesExponential(const T* b, const T& m, const T& su, const T* wUnit, cons
   const T s = (su * m) * m, w2 = (((w2Unit * m) * m) * m) * m;
   // A nilpotent B (a lone point pair: s = W W = 0 on every lane) has the constant coefficients
   // the loop would sum: 1, 1/2, 1, 1/6.
+  // (Not for a Dual: its tangents of s and W W need not vanish.)
   const detail::SeriesCoefficients<T> c =
-    allLanes(maskAnd(equalTo(s, T{}), equalTo(w2, T{})))
+    !kHasTangents<T> && allLanes(maskAnd(equalTo(s, T{}), equalTo(w2, T{})))
     ? detail::SeriesCoefficients<T>{ splat<T>(1.0), splat<T>(0.5), splat<T>(1.0), splat<T>(0.5 / 3.0) }
     : detail::seriesCoefficients(s, w2);
   k[0] = c.a0;
@@ -310,7 +311,9 @@ void exactExponential(
   bool anySeries = false, anyClosed = false, allSeries = true, allClosed = true;
   for (int l = 0; l < L; ++l)
   {
-    useSeries[l] = scale.usable(l) && detail::exactUsesSeries(m.v[l], l1.v[l], l2.v[l]);
+    // B = 0 takes the series with m = 1: exp(0) = 1, and a Dual gets the tangents of exp at 0.
+    useSeries[l] = (scale.usable(l) && detail::exactUsesSeries(m.v[l], l1.v[l], l2.v[l])) ||
+      (scale.finite[l] && scale.zero[l]);
     closed[l] = scale.usable(l) && !useSeries[l];
     mUsable.v[l] = scale.usable(l) ? m.v[l] : 1.0;
     anySeries = anySeries || useSeries[l];
@@ -332,7 +335,7 @@ void exactExponential(
   if (anyClosed)
   {
     const detail::ExactCoefficients<T> c =
-      detail::exactCoefficients(mValue, l1.value(), l2.value(), divideByCosh);
+      detail::exactCoefficients(mValue, l1Value, l2Value, divideByCosh);
     fromClosed[0] = c.scalar;
     for (int i = 0; i < kBivector; ++i)
     {
@@ -351,27 +354,16 @@ void exactExponential(
     }
     return;
   }
-  // Each lane takes one of the two, or NaN, or the identity (lane by lane, as the old kernel's
-  // loop that the compiler turns into blends).
-  alignas(64) double series[kEven][L], closedForm[kEven][L], out[kEven][L];
-  for (int i = 0; i < kEven; ++i)
-  {
-    toLanes(fromSeries[i], series[i]);
-    toLanes(fromClosed[i], closedForm[i]);
-  }
-  const double nan = __builtin_nan("");
+  // Each lane takes one of the two, or NaN (selections on T: see nanWhereNotFinite).
+  LaneArray<T> seriesFlags;
   for (int l = 0; l < L; ++l)
   {
-    const bool finite = scale.finite[l], zero = scale.zero[l], fromSeriesLane = useSeries[l];
-    for (int i = 0; i < kEven; ++i)
-    {
-      const double identity = i == 0 ? 1.0 : 0.0;
-      out[i][l] = !finite ? nan : (zero ? identity : (fromSeriesLane ? series[i][l] : closedForm[i][l]));
-    }
+    seriesFlags.v[l] = useSeries[l] ? 1.0 : 0.0;
   }
+  const Mask<T> seriesLanes = equalTo(seriesFlags.value(), splat<T>(1.0));
   for (int i = 0; i < kEven; ++i)
   {
-    fromLanes(out[i], k[i]);
+    k[i] = nanWhereNotFinite(scale, select(seriesLanes, fromSeries[i], fromClosed[i]));
   }
 }
 
@@ -601,7 +593,10 @@ void exactImageAroundPoint(const kernel::FieldArgs& args, const T* p, const T* b
     bladeExponential(unit.scale, unit.s, true, bp, c);
     sandwichScalarBivector(c, bp, origin, fromBlade);
   }
-  if (!allBlade)
+  // A Dual always takes the full K for its tangents (W may vanish at this B, its tangents need
+  // not), the blade's values where it applies.
+  const bool full = !allBlade || kHasTangents<T>;
+  if (full)
   {
     T k[kEven];
     exactExponential(tables, moved, unit, true, k);
@@ -609,7 +604,7 @@ void exactImageAroundPoint(const kernel::FieldArgs& args, const T* p, const T* b
   }
   for (int i = 0; i < kVector; ++i)
   {
-    r[i] = allBlade ? fromBlade[i] : (anyBlade ? select(blade, fromBlade[i], r[i]) : r[i]);
+    r[i] = !full ? fromBlade[i] : (anyBlade ? withValueOf(blade, fromBlade[i], r[i]) : r[i]);
   }
   const T zero[3] = {};
   T offset[3];

@@ -212,6 +212,7 @@ void PointPairField::add(
     const Bivector weighted = g.weight * relative;
     this->Generators.insert(this->Generators.end(), { location.x, location.y, location.z });
     this->Generators.insert(this->Generators.end(), weighted.c.begin(), weighted.c.end());
+    this->Unweighted.insert(this->Unweighted.end(), relative.c.begin(), relative.c.end());
     ++this->Count;
   }
 }

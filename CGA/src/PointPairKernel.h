@@ -56,21 +56,33 @@ using MapBlockBy = void (*)(const FieldArgs& args,
                             double* image,
                             std::uint8_t* mapped);
 
+/// mapBlock and its derivative: jacobian receives, component-major, d image_i / d p_j of each
+/// lane at jacobian[(3 i + j) * kLanes + l] (forward-mode differentiation of the same source,
+/// DualNumber.h: the images are mapBlock's).
+using MapBlockJacobian = void (*)(const FieldArgs& args,
+                                  const double* xyz,
+                                  double* image,
+                                  double* jacobian,
+                                  std::uint8_t* mapped);
+
 namespace baseline
 {
 void mapBlock(const FieldArgs&, const double*, double*, std::uint8_t*);
 void mapBlockBy(const FieldArgs&, double*, const double*, double*, std::uint8_t*);
+void mapBlockJacobian(const FieldArgs&, const double*, double*, double*, std::uint8_t*);
 }
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
 namespace avx2
 {
 void mapBlock(const FieldArgs&, const double*, double*, std::uint8_t*);
 void mapBlockBy(const FieldArgs&, double*, const double*, double*, std::uint8_t*);
+void mapBlockJacobian(const FieldArgs&, const double*, double*, double*, std::uint8_t*);
 }
 namespace avx512
 {
 void mapBlock(const FieldArgs&, const double*, double*, std::uint8_t*);
 void mapBlockBy(const FieldArgs&, double*, const double*, double*, std::uint8_t*);
+void mapBlockJacobian(const FieldArgs&, const double*, double*, double*, std::uint8_t*);
 }
 #endif
 } // namespace kernel

@@ -17,6 +17,7 @@ struct Candidate
   const char* name;
   MapBlock block;
   MapBlockBy blockBy;
+  MapBlockJacobian blockJacobian;
   bool (*supported)();
 };
 
@@ -40,10 +41,10 @@ bool hasAvx512()
 
 // Narrowest first.
 const Candidate kCandidates[] = {
-  { "baseline", &baseline::mapBlock, &baseline::mapBlockBy, &always },
+  { "baseline", &baseline::mapBlock, &baseline::mapBlockBy, &baseline::mapBlockJacobian, &always },
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
-  { "avx2", &avx2::mapBlock, &avx2::mapBlockBy, &hasAvx2 },
-  { "avx512", &avx512::mapBlock, &avx512::mapBlockBy, &hasAvx512 },
+  { "avx2", &avx2::mapBlock, &avx2::mapBlockBy, &avx2::mapBlockJacobian, &hasAvx2 },
+  { "avx512", &avx512::mapBlock, &avx512::mapBlockBy, &avx512::mapBlockJacobian, &hasAvx512 },
 #endif
 };
 constexpr int kCandidateCount = sizeof(kCandidates) / sizeof(kCandidates[0]);
@@ -96,6 +97,11 @@ MapBlock activeMapBlock()
 MapBlockBy activeMapBlockBy()
 {
   return kCandidates[choice().load(std::memory_order_relaxed)].blockBy;
+}
+
+MapBlockJacobian activeMapBlockJacobian()
+{
+  return kCandidates[choice().load(std::memory_order_relaxed)].blockJacobian;
 }
 
 std::vector<std::string> availableInstructionSets()

@@ -12,6 +12,7 @@ namespace kernel
 {
 MapBlock activeMapBlock();
 MapBlockBy activeMapBlockBy();
+MapBlockJacobian activeMapBlockJacobian();
 std::vector<std::string> availableInstructionSets();
 std::string activeInstructionSet();
 bool useInstructionSet(const std::string& name);

@@ -272,6 +272,7 @@ inline LaneVector laneSqrt(LaneVector x)
 } // namespace cga
 
 #include "PointMapCore.h"
+#include "DualNumber.h"
 
 namespace cga
 {
@@ -314,6 +315,32 @@ void mapBlockBy(const FieldArgs& args, double* bivectors, const double* xyz, dou
   for (int i = 0; i < 3; ++i)
   {
     toLanes(out[i], image + i * L);
+  }
+  for (int l = 0; l < L; ++l)
+  {
+    mapped[l] = ok[l] ? 1 : 0;
+  }
+}
+void mapBlockJacobian(const FieldArgs& args, const double* xyz, double* image, double* jacobian,
+  std::uint8_t* mapped)
+{
+  using Tangent = core::Dual<LaneVector, 3>;
+  Tangent p[3], out[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    LaneVector value;
+    fromLanes(xyz + i * L, value);
+    p[i] = core::variable<LaneVector, 3>(value, i);
+  }
+  bool ok[L];
+  core::mapPoint(args, p, out, ok);
+  for (int i = 0; i < 3; ++i)
+  {
+    toLanes(out[i].v, image + i * L);
+    for (int j = 0; j < 3; ++j)
+    {
+      toLanes(out[i].d[j], jacobian + (3 * i + j) * L);
+    }
   }
   for (int l = 0; l < L; ++l)
   {

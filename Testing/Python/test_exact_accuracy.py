@@ -16,6 +16,16 @@ A point on a lone generator must stay on it exactly, and the batch image must eq
 one to the bit (their blocks mix points near and far from generators, which take different
 frames).
 
+The Jacobian d image / d p (PointPairField::mapWithJacobian, forward-mode differentiation) must lie
+within
+
+    max(1, |J|) * (1e-12 + 8 * 2^-52 * max(1, strength |B(p)|))
+
+of the reference's (exact_reference.jacobian: central differences at 70 digits), entry by entry,
+|.| the largest entry or component: the derivative is exact to rounding relative to the size of
+the exponent, which next to a generator with a tiny epsilon is huge (docs/conventions.md section 3
+item 15 states this bound).
+
     python3 test_exact_accuracy.py <ExactAccuracyProbe> [-v]
 """
 import math
@@ -26,6 +36,7 @@ import exact_reference as reference
 
 RELATIVE = 1e-12
 CONDITION_FACTOR = 8.0
+JACOBIAN_EXPONENT_FACTOR = 8.0 * 2.0 ** -52
 
 
 def offsets(location, distances, directions):
@@ -77,6 +88,24 @@ def run_probe(probe, cases):
     return iter(out)
 
 
+def check_jacobian(name, p, jacobian, generators, falloff, eps, strength, verbose):
+    """1 if the Jacobian is beyond its bound (printed), else 0."""
+    ref = reference.jacobian(generators, p, falloff, eps, strength)
+    with reference.mp.workdps(reference.DIGITS):
+        b = reference.field_bivector(generators, p, falloff, eps)
+        exponent = float(max(abs(c) for row in b for c in row)) * strength
+    size = max(1.0, max(abs(c) for c in ref))
+    error = max(abs(a - r) for a, r in zip(jacobian, ref))
+    bound = size * (RELATIVE + JACOBIAN_EXPONENT_FACTOR * max(1.0, exponent))
+    if verbose and error > RELATIVE * size:
+        print(f"  {name}: {p} Jacobian error {error:.3g} = {error / size:.3g} of max(1, |J|), "
+              f"|sB| {exponent:.3g}")
+    if error > bound:
+        print(f"FAIL {name}: {p} Jacobian error {error:.3g} > bound {bound:.3g}")
+        return 1
+    return 0
+
+
 def main():
     probe = sys.argv[1]
     verbose = "-v" in sys.argv
@@ -92,7 +121,7 @@ def main():
                 images.append(None)
             else:
                 values = [float(f) for f in fields]
-                images.append((values[:3], values[3:]))
+                images.append((values[:3], values[3:6], values[6:15]))
         refs = [reference.image(generators, p, falloff, eps, strength) for p in points]
         size = max(abs(c) for p in points for c in p)
         displacement = max(math.dist([float(c) for c in r], p) for r, p in zip(refs, points))
@@ -103,6 +132,8 @@ def main():
                 print(f"FAIL {name}: {p} unmapped")
                 failures += 1
                 continue
+            failures += check_jacobian(name, p, got[2], generators, falloff, eps, strength, verbose)
+            got = got[:2]
             for path, q in zip(("batch", "pointwise"), got):
                 error = float(reference.mpmath.sqrt(sum((q[i] - ref[i]) ** 2 for i in range(3))))
                 bound = RELATIVE * scale

@@ -28,4 +28,19 @@ std::size_t mapPointsByExponentials(const Bivector* b,
                                     ExponentialRule rule,
                                     Vec3* out,
                                     bool* mapped);
+
+/// A value with its first and second derivatives with respect to two parameters (a, b): a point
+/// of a parametric surface and what its curvatures need.
+struct SurfaceJet
+{
+  double value = 0.0, da = 0.0, db = 0.0, daa = 0.0, dab = 0.0, dbb = 0.0;
+};
+
+/// The image fn(<K up(p) ~K>_1), K = exp(b) by `rule`, with its first and second derivatives in
+/// (a, b), given those of b (ten components, Compact.h order) and of p (three): forward-mode
+/// differentiation (second order) of the same computation as mapPointsByExponentials, exact to
+/// rounding; the values are its images. Returns false, image unchanged, where the image is not
+/// mapped or a derivative is not finite.
+bool mapJetByExponential(
+  const SurfaceJet* bivector, const SurfaceJet* point, ExponentialRule rule, SurfaceJet* image);
 } // namespace cga

@@ -204,6 +204,37 @@ public:
   std::size_t mapPoints(
     const double* in, float* out, std::size_t count, double strength, ExponentialRule rule) const;
 
+  // The derivatives of the map (docs/conventions.md section 3 item 15): forward-mode automatic
+  // differentiation of the same computation as map() (every branch and frame the value takes),
+  // exact to rounding, with the direct sum (a tolerance's tree is not used). Each returns false,
+  // writing nothing, where map() does or a derivative is not finite; the image is map()'s, to the
+  // bit.
+
+  /// map() and its derivative J = d out / d p, row-major: jacobian[3 i + j] = d out_i / d p_j.
+  /// J is a general 3x3 matrix for both rules: K(p) varies with p, so even the Exact rule's map,
+  /// conformal for a constant K, is not conformal as a whole.
+  bool mapWithJacobian(
+    Vec3 p, double strength, ExponentialRule rule, Vec3& out, double* jacobian) const;
+
+  /// The batch form of mapWithJacobian through the block kernel: `count` points xyz interleaved,
+  /// their images to `out` as mapPoints() writes them (the same bits), and 9 doubles per point to
+  /// `jacobians` (row-major), the identity where the point is not mapped or its derivative is not
+  /// finite. Returns how many points are such. No heap allocation; threads are the caller's.
+  std::size_t mapPointsWithJacobians(const double* in, double* out, double* jacobians,
+    std::size_t count, double strength, ExponentialRule rule) const;
+
+  /// map() and d out / d B: how the image moves per unit change of each of the ten components
+  /// (Compact.h order) of B(p) (generatorAt(p), in space, before the factor -strength):
+  /// byBivector[10 j + c] = d out_j / d B_c. For a parameter theta of the generators,
+  /// d out / d theta = sum_c byBivector[10 j + c] d B_c / d theta.
+  bool mapWithBivectorDerivative(
+    Vec3 p, double strength, ExponentialRule rule, Vec3& out, double* byBivector) const;
+
+  /// map() and d out / d w_i for each kept generator i < size(), in the order given (skipped
+  /// ones left out): derivatives[3 i + j] = d out_j / d w_i.
+  bool mapWithWeightDerivatives(
+    Vec3 p, double strength, ExponentialRule rule, Vec3& out, double* derivatives) const;
+
 private:
   void add(const FieldGenerator* generators, const GeneratorParameters* rows, std::size_t count);
   kernel::FieldArgs args(double strength, ExponentialRule rule) const;
@@ -214,6 +245,9 @@ private:
   // The one layout of the generators, read by map() and the block kernel alike: per generator 13
   // doubles, the location x_i - c, then the ten components of w_i G_i moved by -c.
   std::vector<double> Generators;
+  // G_i of each kept generator moved by -c, without its weight (ten doubles each; the weight may
+  // be 0): d B / d w_i for mapWithWeightDerivatives.
+  std::vector<double> Unweighted;
   Vec3 Center;
   std::size_t Count = 0;
   double Falloff = 1.0;
