@@ -34,7 +34,7 @@ double largestDifference(const Bivector& a, const Bivector& b)
 }
 
 // The parameter `index` of `g` (weight, location x y z, direction x y z) moved by `step`.
-GeneratorParameters moved(GeneratorParameters g, int index, double step)
+GeneratorParameters withParameterMoved(GeneratorParameters g, int index, double step)
 {
   if (index == 0)
   {
@@ -75,14 +75,14 @@ TEST(GeneratorDerivatives, GeneratorsByLocationAndDirectionMatchCentralDifferenc
         // 1e-16 |G| / h.
         const double h = 1e-3;
         const Bivector byLocation =
-          (referenceG(moved(g, 1 + j, h)) - referenceG(moved(g, 1 + j, -h))) / (2.0 * h);
+          (referenceG(withParameterMoved(g, 1 + j, h)) - referenceG(withParameterMoved(g, 1 + j, -h))) / (2.0 * h);
         EXPECT_LT(largestDifference(d.byLocation[j], byLocation), 1e-11)
           << "kind " << static_cast<int>(kind) << ", location " << j;
         // Linear in v, but the dilation's |v|: its central difference errs by h^2/6 |v|''',
         // hence the smaller step there.
         const double k = kind == GeneratorKind::Dilation ? 1e-5 : 1e-3;
         const Bivector byDirection =
-          (referenceG(moved(g, 4 + j, k)) - referenceG(moved(g, 4 + j, -k))) / (2.0 * k);
+          (referenceG(withParameterMoved(g, 4 + j, k)) - referenceG(withParameterMoved(g, 4 + j, -k))) / (2.0 * k);
         EXPECT_LT(largestDifference(d.byDirection[j], byDirection),
                   kind == GeneratorKind::Dilation ? 1e-9 : 1e-11)
           << "kind " << static_cast<int>(kind) << ", direction " << j;
@@ -111,7 +111,7 @@ TEST(GeneratorDerivatives, FieldTermsMatchCentralDifferencesOfTheFullProduct)
         // 1/D is not a polynomial: a fourth-order central difference (error h^4 f^(5)/30).
         const double h = 1e-3;
         const auto term = [&](double step) {
-          return referenceTerm(moved(g, index, step), p, falloff, epsilon);
+          return referenceTerm(withParameterMoved(g, index, step), p, falloff, epsilon);
         };
         const Bivector reference =
           (term(-2.0 * h) - 8.0 * term(-h) + 8.0 * term(h) - term(2.0 * h)) / (12.0 * h);
@@ -134,5 +134,97 @@ TEST(GeneratorDerivatives, UnusableGeneratorsHaveNoDerivative)
     generatorDerivative({ static_cast<GeneratorKind>(7), { 0, 0, 0 }, { 0, 0, 1 } }, d));
   EXPECT_FALSE(fieldTermDerivatives(
     { GeneratorKind::Dilation, { 0, 0, 0 }, { 0, 0, 0 } }, { 1, 0, 0 }, 1.0, 0.01, terms));
+}
+} // namespace
+
+namespace
+{
+// The fit's Jacobian, d out / d theta by every parameter of every generator, against central
+// differences of map() over fields rebuilt with the parameter moved (fourth order), and its weight
+// columns against PointPairField::mapWithWeightDerivatives (automatic differentiation by the
+// weights, another path through the core).
+TEST(GeneratorDerivatives, MapDerivativesByEveryParameterMatchCentralDifferencesOfTheMap)
+{
+  Random random(1303);
+  const FittedParameters all{ true, true, true };
+  for (ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
+  {
+    for (int n = 0; n < 40; ++n)
+    {
+      std::vector<GeneratorParameters> generators;
+      for (GeneratorKind kind : kAllKinds)
+      {
+        GeneratorParameters g = randomGenerator(random, kind);
+        g.weight *= 0.3;
+        generators.push_back(g);
+      }
+      const double falloff = random.uniform(0.5, 2.0), epsilon = random.uniform(0.05, 0.5);
+      const PointPairField field(generators.data(), generators.size(), falloff, epsilon);
+      const Vec3 p = random.vec3(2.0);
+      const double strength = random.uniform(0.5, 1.5);
+      Vec3 out, reference;
+      const int unknowns = 7 * static_cast<int>(generators.size());
+      std::vector<double> derivatives(3 * unknowns);
+      ASSERT_TRUE(mapWithGeneratorDerivatives(field, generators.data(), generators.size(), all,
+                                              p, strength, rule, out, derivatives.data()));
+      ASSERT_TRUE(field.map(p, strength, rule, reference));
+      EXPECT_EQ(out.x, reference.x);
+      EXPECT_EQ(out.y, reference.y);
+      EXPECT_EQ(out.z, reference.z);
+      std::vector<double> byWeight(3 * generators.size());
+      Vec3 unused;
+      ASSERT_TRUE(field.mapWithWeightDerivatives(p, strength, rule, unused, byWeight.data()));
+      for (std::size_t i = 0; i < generators.size(); ++i)
+      {
+        for (int k = 0; k < 7; ++k)
+        {
+          const auto image = [&](double step) {
+            std::vector<GeneratorParameters> moved = generators;
+            moved[i] = withParameterMoved(generators[i], k, step);
+            const PointPairField f(moved.data(), moved.size(), falloff, epsilon);
+            Vec3 q;
+            EXPECT_TRUE(f.map(p, strength, rule, q));
+            return q;
+          };
+          const double h = 1e-4;
+          const Vec3 difference =
+            (image(-2.0 * h) - 8.0 * image(-h) + 8.0 * image(h) - image(2.0 * h)) / (12.0 * h);
+          const double* column = derivatives.data() + 3 * (7 * i + k);
+          const double scale = 1.0 + norm(difference);
+          for (int j = 0; j < 3; ++j)
+          {
+            EXPECT_NEAR(column[j], difference[j], 1e-7 * scale)
+              << "rule " << static_cast<int>(rule) << ", generator " << i << ", parameter " << k
+              << ", component " << j;
+            if (k == 0)
+            {
+              EXPECT_NEAR(column[j], byWeight[3 * i + j], 1e-12 * (1.0 + std::fabs(column[j])));
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(GeneratorDerivatives, MapDerivativesNeedTheFieldOfTheGivenGenerators)
+{
+  const std::vector<GeneratorParameters> generators = {
+    { GeneratorKind::PointPair, { 0, 0, 1 }, { 0, 0, 1 }, 0.0, 0.5 },
+    { GeneratorKind::PointPair, { 0, 0, 0 }, { 0, 0, 0 }, 0.0, 0.5 } // skipped by the field
+  };
+  const PointPairField field(generators.data(), generators.size(), 1.0, 0.01);
+  Vec3 out;
+  double derivatives[6];
+  EXPECT_FALSE(mapWithGeneratorDerivatives(field, generators.data(), generators.size(),
+                                           FittedParameters{}, { 1, 0, 0 }, 1.0,
+                                           ExponentialRule::Exact, out, derivatives));
+  const PointPairField one(generators.data(), 1, 1.0, 0.01);
+  EXPECT_TRUE(mapWithGeneratorDerivatives(one, generators.data(), 1, FittedParameters{},
+                                          { 1, 0, 0 }, 1.0, ExponentialRule::Exact, out,
+                                          derivatives));
+  EXPECT_FALSE(mapWithGeneratorDerivatives(one, generators.data(), 1, FittedParameters{},
+                                           { std::nan(""), 0, 0 }, 1.0, ExponentialRule::Exact,
+                                           out, derivatives));
 }
 } // namespace
