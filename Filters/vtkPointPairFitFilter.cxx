@@ -110,7 +110,7 @@ struct FitData
   std::vector<double> Theta; // the unknowns, which Ceres updates in place
   std::vector<double> Points; // the mesh, xyz interleaved
   std::vector<double> Targets; // POINT_TO_POINT: the target's points
-  vtkStaticCellLocator* Locator = nullptr; // POINT_TO_SURFACE
+  vtkStaticCellLocator* Locator = nullptr; // POINT_TO_SURFACE: over the target's cells
   std::vector<double> Scales; // sqrt(omega_p / sum omega)
   double Falloff = 1.0, Epsilon = 0.01, Strength = 1.0;
   cga::ExponentialRule Rule = cga::ExponentialRule::Exact;
