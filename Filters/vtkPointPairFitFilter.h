@@ -133,9 +133,9 @@ public:
 
   ///@{
   /// The Generators input's arrays, as vtkPointPairDeformationFilter's: directions (default
-  /// "Direction"), weights (default "Weight", read when UseGeneratorWeightArray is on, default
-  /// on here: a fit's Generators output feeds the next fit), kinds ("Kind") and pitches
-  /// ("Pitch"), the last two optional.
+  /// "Direction"), weights (default "Weight", read when UseGeneratorWeightArray is on; default
+  /// off, every weight 1, as there: turn it on to start from another fit's Generators output),
+  /// kinds ("Kind") and pitches ("Pitch"), the last two optional.
   vtkSetStringMacro(GeneratorDirectionArrayName);
   vtkGetStringMacro(GeneratorDirectionArrayName);
   vtkSetStringMacro(GeneratorWeightArrayName);
@@ -261,7 +261,7 @@ protected:
   char* GeneratorWeightArrayName = nullptr;
   char* GeneratorKindArrayName = nullptr;
   char* GeneratorPitchArrayName = nullptr;
-  bool UseGeneratorWeightArray = true;
+  bool UseGeneratorWeightArray = false;
   int TargetMode = POINT_TO_POINT;
   char* PointWeightArrayName = nullptr;
   bool FitWeights = true;

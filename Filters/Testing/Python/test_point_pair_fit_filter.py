@@ -103,6 +103,7 @@ class PointPairFitFilterTest(unittest.TestCase):
         chained.SetInputConnection(source.GetOutputPort())
         chained.SetTargetConnection(target.GetOutputPort())
         chained.SetGeneratorsConnection(fit.GetOutputPort(1))
+        chained.UseGeneratorWeightArrayOn()
         chained.Update()
         self.assertAlmostEqual(chained.GetOutputDataObject(2).GetValueByName(0, "Weight")
                                .ToDouble(), TRUTH[0][6], delta=1e-6)
