@@ -888,15 +888,18 @@ int vtkPointPairFitFilter::RequestData(
     {
       data.Theta = start;
       this->FinalRMS = this->InitialRMS;
+    }
+    else
+    {
+      this->FinalRMS = std::sqrt(finalData);
+    }
+    if (!this->Improved && this->MaximumNumberOfIterations > 0) // 0: the start, evaluated
+    {
       vtkWarningMacro(<< "the fit could not improve on the initial generators (RMS residual "
                       << this->InitialRMS << " after " << this->NumberOfIterations
                       << " iterations: " << this->TerminationReason
                       << "); the outputs are the initial generators and the mesh as they deform "
                          "it");
-    }
-    else
-    {
-      this->FinalRMS = std::sqrt(finalData);
     }
     applyUnknowns(data.Start, data.Fitted, data.Theta.data(), fitted);
     done = true;

@@ -45,8 +45,9 @@
  * columns (X, Y, Z, DirectionX, DirectionY, DirectionZ, Weight, Kind, Pitch). The summary is also
  * in GetNumberOfIterations(), GetInitialRMS(), GetFinalRMS(), GetTerminationReason() and
  * PrintSelf. A fit that ends no lower than it started (nothing the unknowns can change reduces
- * the cost) says so in a warning, and its outputs are the initial generators and the mesh as they
- * deform it (the input itself when they are the identity).
+ * the cost) says so in a warning (none for MaximumNumberOfIterations 0, which only evaluates the
+ * start), and its outputs are the initial generators and the mesh as they deform it (the input
+ * itself when they are the identity).
  *
  * The fit needs the whole mesh and target: every input is requested whole, and the outputs are
  * on piece 0 only (empty on the other pieces).
