@@ -283,25 +283,25 @@ TEST(PointPairFitFilter, PointToSurfaceFitOfASphereToABumpedTargetReducesTheDist
   EXPECT_NEAR(std::sqrt(sum / residual->GetNumberOfTuples()), after, 1e-12);
 }
 
-TEST(PointPairFitFilter, AFitThatCannotImproveSaysSoAndReturnsTheInput)
+// Five points (x, 0, 0.5 i), double precision, no cells.
+vtkSmartPointer<vtkPolyData> pointsAlongZ(double x)
 {
-  // Points on the axis of a rotation: no weight moves them, the gradient is 0.
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   for (int i = 0; i < 5; ++i)
   {
-    points->InsertNextPoint(0.0, 0.0, 0.5 * i);
+    points->InsertNextPoint(x, 0.0, 0.5 * i);
   }
-  vtkNew<vtkPolyData> mesh;
-  mesh->SetPoints(points);
-  vtkNew<vtkPoints> shifted;
-  shifted->SetDataTypeToDouble();
-  for (int i = 0; i < 5; ++i)
-  {
-    shifted->InsertNextPoint(0.1, 0.0, 0.5 * i);
-  }
-  vtkNew<vtkPolyData> target;
-  target->SetPoints(shifted);
+  vtkNew<vtkPolyData> data;
+  data->SetPoints(points);
+  return data.GetPointer();
+}
+
+TEST(PointPairFitFilter, AFitThatCannotImproveSaysSoAndReturnsTheInput)
+{
+  // Points on the axis of a rotation: no weight moves them, the gradient is 0.
+  vtkSmartPointer<vtkPolyData> mesh = pointsAlongZ(0.0);
+  vtkSmartPointer<vtkPolyData> target = pointsAlongZ(0.1);
   vtkNew<vtkPointPairFitFilter> fit;
   fit->SetInputData(mesh);
   fit->SetTargetData(target);
