@@ -43,3 +43,11 @@ endforeach ()
 file(MAKE_DIRECTORY "${usr}/bin/plugins")
 file(RELATIVE_PATH link_target "${usr}/bin/plugins" "${usr}/${plugin_dir}")
 file(CREATE_LINK "${link_target}" "${usr}/bin/plugins/BoostedSurfaces" SYMBOLIC)
+
+# The changelog, as Debian's policy asks: gzip -9n (no name or time stamp in the header).
+find_program(gzip gzip REQUIRED)
+execute_process(COMMAND "${gzip}" -9nc "${CPACK_BOOSTEDSURFACES_CHANGELOG}"
+  OUTPUT_FILE "${usr}/share/doc/boostedsurfaces/changelog.gz" RESULT_VARIABLE gzip_result)
+if (NOT gzip_result EQUAL 0)
+  message(FATAL_ERROR "DebianLayout: gzip of ${CPACK_BOOSTEDSURFACES_CHANGELOG} failed")
+endif ()

@@ -39,7 +39,9 @@ set(BOOSTEDSURFACES_DEBIAN_PACKAGE ON)  # Testing/Install adds Install.DebianPac
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME boostedsurfaces)
 set(CPACK_PACKAGE_VERSION "${PROJECT_VERSION}")
-set(CPACK_PACKAGE_CONTACT "BoostedSurfaces maintainers")
+# Debian wants a name and an e-mail address; the project has no public address yet.
+set(CPACK_DEBIAN_PACKAGE_MAINTAINER "BoostedSurfaces developers <boostedsurfaces@localhost>")
+set(CPACK_PACKAGE_CONTACT "${CPACK_DEBIAN_PACKAGE_MAINTAINER}")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "ParaView plugin and VTK classes for boosted surfaces")
 set(CPACK_PACKAGE_DESCRIPTION [[
 Point pairs of conformal geometric algebra, exponentiated into boosts,
@@ -62,6 +64,21 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}")
 set(CPACK_DEBIAN_PACKAGE_DEPENDS
   "libceres3, python3-paraview (>= ${boostedsurfaces_paraview_upstream}), python3-paraview (<< ${boostedsurfaces_paraview_upstream}.), python3 (>= ${boostedsurfaces_python_version}), python3 (<< ${Python3_VERSION_MAJOR}.${boostedsurfaces_python_next_minor})")
+# The shared libraries in /usr/lib: a shlibs file (so that packages built against them depend on
+# this version or later) and dpkg's ldconfig trigger (CMake/debian/triggers). CPack still writes
+# its postinst/postrm calling ldconfig, which it adds for every package with libraries in /usr/lib
+# unless the package brings scripts of its own; lintian notes them as maintscript-calls-ldconfig
+# (scripts of our own would be empty: maintainer-script-empty). CPack warns (dev) that the Python
+# modules and the plugin have no SONAME: they are modules, not libraries, and rightly not in shlibs.
+set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS ON)
+set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS_POLICY ">=")
+set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA "${CMAKE_CURRENT_LIST_DIR}/debian/triggers")
+set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
+# The package's changelog: CMake/DebianLayout.cmake writes it, compressed, into the package's doc
+# folder (a native package: the version has no Debian revision, so it is changelog.gz).
+configure_file("${CMAKE_CURRENT_LIST_DIR}/debian/changelog.in"
+  "${CMAKE_BINARY_DIR}/debian/changelog" @ONLY)
+set(CPACK_BOOSTEDSURFACES_CHANGELOG "${CMAKE_BINARY_DIR}/debian/changelog")
 # Read by CMake/DebianLayout.cmake, which CPack runs on its staging tree before packing it.
 set(CPACK_PRE_BUILD_SCRIPTS "${CMAKE_CURRENT_LIST_DIR}/DebianLayout.cmake")
 set(CPACK_BOOSTEDSURFACES_PYTHON_DIR "${boostedsurfaces_python_destination}")

@@ -31,12 +31,27 @@
  * always requested whole, so every MPI rank sees every generator.
  *
  * Output: the input's topology, cells and arrays with moved points, plus the point vector
- * "Displacement" = p' - p. Normals are dropped (they would be wrong once the points moved).
+ * "Displacement" = p' - p. Vectors go through the map's derivative J = d p' / d p
+ * (cga::PointPairField::mapPointsWithJacobians; docs/conventions.md section 3 items 15-16): the
+ * active point normals (TransformNormals, on by default) and the point arrays named in
+ * NormalArrays become n' = |n| cof(J) n / |cof(J) n| (the direction of J^-T n, the input's
+ * length), those named in VectorArrays J v; ConformalScale and ConformalityDefect add the point
+ * arrays |det J|^(1/3) and 1 - sigma_min / sigma_max. Other arrays pass unchanged; cell normals
+ * are dropped (they would be wrong once the points moved), and so are the point normals when
+ * TransformNormals is off.
  * vtkImageData and vtkRectilinearGrid inputs give a vtkStructuredGrid, as vtkWarpVector does.
  * Output 1, "Generators" (vtkBoostedGeneratorGlyphs, for glyphs): one vertex per generator as
  * used (the list's rows, the selected one at SelectedGeneratorLocation, then the Generators
  * input's points), with point arrays "Direction", "Weight", "Kind" and "Pitch"; on piece 0 only,
  * and empty after an error. It is in the Generators input's format, so it can be fed back there.
+ *
+ * Transformed arrays: a name that the input's point data does not have is skipped with one
+ * warning; a named array that is not numeric with 3 components (also active normals of another
+ * size), or one asked both as a vector and as a normal, is an error and gives an empty output.
+ * A normal or vector that is not finite passes unchanged (one warning counts them); so does a
+ * normal whose direction J collapses (cof(J) n = 0: the map flattens the tangent plane there)
+ * and a vector whose image overflows its type. Where a point is left in place (below) J is the
+ * identity.
  *
  * Bad input: points that are NaN or infinite pass through unchanged (Displacement 0) and are
  * counted in one warning; so are points whose image would be at infinity. Generators with a zero
@@ -54,6 +69,8 @@
 #define vtkPointPairDeformationFilter_h
 
 #include "BoostedSurfacesFiltersModule.h" // for export macro
+#include "vtkDataArraySelection.h" // for the transformed arrays
+#include "vtkNew.h"                   // for the transformed arrays
 #include "vtkPointSetAlgorithm.h"
 
 #include <memory> // for the generator list
@@ -193,7 +210,7 @@ public:
   /// generator at every point; t > 0 sums far generators by a tree with B within t A(p) of the
   /// direct sum at each point, A(p) = sum_i |w_i G_i|_max / (Falloff |p - x_i|^2 + Epsilon)
   /// (README, "Many generators"). Values above 0.01 are used as 0.01; NaN or negative is an
-  /// error and gives an empty output. Fields of fewer than 50,000 generators always sum directly (the measured crossover).
+  /// error and gives an empty output. Fields of fewer than 10,000 generators always sum directly (the measured crossover).
   vtkSetMacro(Tolerance, double);
   vtkGetMacro(Tolerance, double);
   ///@}
@@ -205,6 +222,41 @@ public:
   void SetExponentialRuleToExact() { this->SetExponentialRule(EXACT); }
   void SetExponentialRuleToPaper() { this->SetExponentialRule(PAPER); }
   ///@}
+
+  ///@{
+  /// Transform the input's active point normals through the map's derivative (default on): n'
+  /// is the normal of the deformed surface, exactly, as the image of the input's. Off: they are
+  /// dropped, as the cell normals always are.
+  vtkSetMacro(TransformNormals, bool);
+  vtkGetMacro(TransformNormals, bool);
+  vtkBooleanMacro(TransformNormals, bool);
+  ///@}
+
+  ///@{
+  /// The point arrays (3 components) transformed as vectors, J v (velocities, tangents,
+  /// displacements of the input), and as normals, the direction of J^-T n with n's length
+  /// (normals other than the active ones): the enabled names of each selection
+  /// (GetVectorArraySelection()->EnableArray("Velocity")). Both empty by default; other arrays
+  /// pass unchanged. ParaView: VectorArrays and NormalArrays, lists of the input's 3-component
+  /// point arrays.
+  vtkDataArraySelection* GetVectorArraySelection() { return this->VectorArraySelection; }
+  vtkDataArraySelection* GetNormalArraySelection() { return this->NormalArraySelection; }
+  ///@}
+
+  ///@{
+  /// Add the point array "ConformalScale", s = |det J|^(1/3) (s for a conformal map J = s R),
+  /// and "ConformalityDefect", 1 - sigma_min / sigma_max of J's singular values (0 for a
+  /// scaled rotation, 1 for a singular J). Both off by default.
+  vtkSetMacro(ComputeConformalScale, bool);
+  vtkGetMacro(ComputeConformalScale, bool);
+  vtkBooleanMacro(ComputeConformalScale, bool);
+  vtkSetMacro(ComputeConformalityDefect, bool);
+  vtkGetMacro(ComputeConformalityDefect, bool);
+  vtkBooleanMacro(ComputeConformalityDefect, bool);
+  ///@}
+
+  /// Includes the array selections' modification times.
+  vtkMTimeType GetMTime() override;
 
   ///@{
   /// vtkAlgorithm::DEFAULT_PRECISION (default: as the input's points), SINGLE_PRECISION or
@@ -242,6 +294,11 @@ protected:
   int ExponentialRule = EXACT;
   int OutputPointsPrecision = DEFAULT_PRECISION;
   int NumberOfTimeSteps = 0;
+  bool TransformNormals = true;
+  vtkNew<vtkDataArraySelection> VectorArraySelection;
+  vtkNew<vtkDataArraySelection> NormalArraySelection;
+  bool ComputeConformalScale = false;
+  bool ComputeConformalityDefect = false;
 
 private:
   /// RequestData's allocating part, after the validation and the memory estimate: the explicit

@@ -1,6 +1,6 @@
 // The batch kernel, PointPairField::mapPoints, on the 1,000,000 points of the shared mesh:
 // Kernel/<rule>/M:<generators>/threads:<n> (runOnThreads: chunks of 8192 points); and on the same
-// sheet at N = 10^4 ... 10^7 points, M = 16, one thread: KernelSize/Exact/M:16/N:<points>; the
+// sheet at N = 10^4 ... 10^7 points, M = 16: KernelSize/Exact/M:16/N:<points>/threads:<n>; the
 // images with their Jacobians (mapPointsWithJacobians, the derivative's cost per point):
 // KernelJacobian/<rule>/M:<generators>/threads:<n>.
 #include "BenchSupport.h"
@@ -70,7 +70,7 @@ void Kernel(benchmark::State& state, cga::ExponentialRule rule)
 
 void KernelSize(benchmark::State& state, cga::ExponentialRule rule)
 {
-  timeKernel(state, rule, static_cast<int>(state.range(0)), 1,
+  timeKernel(state, rule, static_cast<int>(state.range(0)), static_cast<int>(state.range(2)),
     sheetMesh(static_cast<std::size_t>(state.range(1))));
 }
 

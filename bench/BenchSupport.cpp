@@ -166,7 +166,7 @@ void perGeneratorsAndThreads(benchmark::internal::Benchmark* benchmark)
 
 void perPointCount(benchmark::internal::Benchmark* benchmark)
 {
-  benchmark->ArgsProduct({ { 16 }, pointCounts() })->ArgNames({ "M", "N" });
+  benchmark->ArgsProduct({ { 16 }, pointCounts(), { 1, 2 } })->ArgNames({ "M", "N", "threads" });
   timedPerPoint(benchmark);
 }
 

@@ -7,13 +7,70 @@
 // and prints per point the batch image (mapPoints), the pointwise image (map) and the Jacobian
 // d image / d p (mapWithJacobian, row-major), 17 digits each, or "unmapped" for a point any of
 // them leaves unchanged.
+//
+// With the argument "exponents" it maps given exponents instead (mapPointsByExponentials, the
+// curvature patch's map), reading "count" and then per point the ten Bivector components of b and
+// p, and prints per point the batch image (mapPointsByExponentials) and the pointwise one
+// (sandwichPoint(exponential(b, Exact), p)), or "unmapped".
+#include "cga/ExponentialMap.h"
 #include "cga/PointPairField.h"
+#include "cga/PointSandwich.h"
 
 #include <cstdio>
+#include <cstring>
+#include <memory>
 #include <vector>
 
-int main()
+namespace
 {
+int mapExponents()
+{
+  int count;
+  if (std::scanf("%d", &count) != 1 || count < 0)
+  {
+    return 2;
+  }
+  std::vector<cga::Bivector> exponents(count);
+  std::vector<cga::Vec3> points(count), batch(count);
+  for (int i = 0; i < count; ++i)
+  {
+    for (double& c : exponents[i].c)
+    {
+      if (std::scanf("%lf", &c) != 1)
+      {
+        return 2;
+      }
+    }
+    if (std::scanf("%lf %lf %lf", &points[i].x, &points[i].y, &points[i].z) != 3)
+    {
+      return 2;
+    }
+  }
+  const std::unique_ptr<bool[]> ok(new bool[count]);
+  cga::mapPointsByExponentials(
+    exponents.data(), points.data(), count, cga::ExponentialRule::Exact, batch.data(), ok.get());
+  for (int i = 0; i < count; ++i)
+  {
+    cga::Vec3 pointwise;
+    if (!ok[i] ||
+      !cga::sandwichPoint(cga::exponential(exponents[i], cga::ExponentialRule::Exact), points[i], pointwise))
+    {
+      std::printf("unmapped\n");
+      continue;
+    }
+    std::printf("%.17g %.17g %.17g %.17g %.17g %.17g\n", batch[i].x, batch[i].y, batch[i].z,
+      pointwise.x, pointwise.y, pointwise.z);
+  }
+  return 0;
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if (argc > 1 && std::strcmp(argv[1], "exponents") == 0)
+  {
+    return mapExponents();
+  }
   double falloff, epsilon, strength;
   int generatorCount, pointCount;
   while (std::scanf("%lf %lf %lf %d %d", &falloff, &epsilon, &strength, &generatorCount,

@@ -1,5 +1,5 @@
 // The derivatives of the generators by their parameters (GeneratorDerivatives.h, the fit filter's
-// Jacobian; docs/conventions.md section 3 item 16) against central differences of the generators'
+// Jacobian; docs/conventions.md section 3 item 17) against central differences of the generators'
 // definitions on the full Multivector (GeneratorKindReference.h). G is a polynomial of degree <= 2
 // in the location and linear in the direction (but for the dilation's |v|), so there the central
 // difference is exact up to rounding and the comparison is tight.

@@ -4,14 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
-
-// The two loops over lanes are compiled for AVX-512, AVX2 and the baseline, chosen at load time
-// (GCC's function multiversioning), as the block kernel is (PointPairKernel.h).
-#if defined(BOOSTED_KERNEL_X86_DISPATCH) && defined(__GNUC__) && !defined(__clang__)
-#define BOOSTED_TREE_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#else
-#define BOOSTED_TREE_CLONES
-#endif
+#include <cstring>
 
 namespace cga
 {
@@ -70,24 +63,6 @@ constexpr int monomialCount(int degree)
 
 constexpr int kMaxMoments = monomialCount(GeneratorTree::kMaxDegree);
 
-// The degree whose expected work, (moments) / limit^2.5, is least: a higher degree opens fewer
-// nodes but costs more per node (the exponent between the 2-D and 3-D node counts).
-int chooseDegree(double tolerance)
-{
-  int best = 2;
-  double bestCost = HUGE_VAL;
-  for (int degree = 2; degree <= GeneratorTree::kMaxDegree; degree += 2)
-  {
-    const double limit = largestOpening(degree, tolerance);
-    const double cost = monomialCount(degree) / std::pow(limit, 2.5);
-    if (cost < bestCost)
-    {
-      best = degree;
-      bestCost = cost;
-    }
-  }
-  return best;
-}
 } // namespace
 
 GeneratorTree::GeneratorTree(const double* generators,
@@ -98,8 +73,14 @@ GeneratorTree::GeneratorTree(const double* generators,
   : Falloff(falloff)
   , Epsilon(epsilon)
 {
-  this->Degree = chooseDegree(tolerance);
+  // The largest degree: each use of a node takes the least degree its q needs (degreeFor), so a
+  // higher one costs only where it lets a larger node be used.
+  this->Degree = kMaxDegree;
   this->QLimit = largestOpening(this->Degree, tolerance);
+  for (int p = 0; p <= this->Degree; ++p)
+  {
+    this->DegreeLimit[p] = p == this->Degree ? this->QLimit : largestOpening(p, tolerance);
+  }
   const int P = this->Degree;
   // Monomials in graded order, each one power above a lower one.
   this->MonomialIndex.assign(static_cast<std::size_t>((P + 1) * (P + 1) * (P + 1)), -1);
@@ -148,11 +129,51 @@ GeneratorTree::GeneratorTree(const double* generators,
       }
     }
   }
-  // A node is summed directly below (terms + 11 moments)/20 generators: of the two settings
-  // measured with the bench's Many/* rows, this one ((terms + 24 moments)/10 the other) was the
-  // faster at M = 100,000, where the tree is used.
+  // A node is summed directly below (terms + 11 moments)/40 generators (123 at degree 10): with the
+  // target cells the fastest of 33, 65, 100, 123, 129, 180 and 247 on the bench's field at
+  // M = 100,000 (Tolerance 1e-3; 1e-6 is about as fast at 123 as at 247).
   this->DirectBelow =
-    static_cast<std::size_t>((this->Terms.size() + 11 * this->MomentCount) / 20);
+    static_cast<std::size_t>((this->Terms.size() + 11 * this->MomentCount) / 40);
+
+  // The multipole-to-local and local-to-local terms (GeneratorTreeCells.cpp): every alpha, beta
+  // with |alpha| + |beta| <= P.
+  for (int alpha = 0; alpha < this->MomentCount; ++alpha)
+  {
+    const auto& a = this->MonomialPowers[static_cast<std::size_t>(alpha)];
+    for (int beta = 0; beta < this->MomentCount; ++beta)
+    {
+      const auto& b = this->MonomialPowers[static_cast<std::size_t>(beta)];
+      const int alphaDegree = this->MonomialDegree[static_cast<std::size_t>(alpha)];
+      const int betaDegree = this->MonomialDegree[static_cast<std::size_t>(beta)];
+      if (alphaDegree + betaDegree > P)
+      {
+        continue;
+      }
+      const int gamma = this->MonomialIndex[static_cast<std::size_t>(at(a[0] + b[0], a[1] + b[1], a[2] + b[2]))];
+      this->ShiftTerms.push_back({ alpha, beta, gamma, alphaDegree, betaDegree,
+        binomial(a[0] + b[0], a[0]) * binomial(a[1] + b[1], a[1]) * binomial(a[2] + b[2], a[2]) });
+    }
+  }
+
+  for (const auto& powers : this->MonomialPowers)
+  {
+    this->Factorial.push_back(factorial(powers[0]) * factorial(powers[1]) * factorial(powers[2]));
+    this->InverseFactorial.push_back(1.0 / this->Factorial.back());
+  }
+  this->ShiftRuns.assign(static_cast<std::size_t>(this->MomentCount + 1), this->ShiftTerms.size());
+  for (std::size_t t = this->ShiftTerms.size(); t-- > 0;)
+  {
+    this->ShiftRuns[static_cast<std::size_t>(this->ShiftTerms[t].alpha)] = t;
+  }
+  this->TermsOfDegree.assign(static_cast<std::size_t>(P + 1), 0);
+  for (std::size_t t = 0; t < this->Terms.size(); ++t)
+  {
+    const int degree = this->MonomialDegree[static_cast<std::size_t>(this->Terms[t].moment)];
+    for (int p = degree; p <= P; ++p)
+    {
+      this->TermsOfDegree[static_cast<std::size_t>(p)] = t + 1;
+    }
+  }
 
   std::vector<std::size_t> order(count);
   for (std::size_t i = 0; i < count; ++i)
@@ -174,6 +195,28 @@ GeneratorTree::GeneratorTree(const double* generators,
   {
     this->computeMoments(0);
   }
+  this->chooseCells();
+}
+
+// The target cells' lattice: leaves about kLeafShare of the widest cell usable at any distance
+// (q <= QLimit at |d| = 0: radius QLimit sqrt(eps/k)), a power of two wide, between 2^-12 and 2
+// times the generators' radius; the top cells span the generators' diameter.
+void GeneratorTree::chooseCells()
+{
+  const double extent = this->Nodes.empty() ? 0.0 : this->Nodes[0].radius;
+  const double floorWidth = this->Falloff > 0.0
+    ? kLeafShare * this->QLimit * std::sqrt(this->Epsilon / this->Falloff) * 2.0 / std::sqrt(3.0)
+    : HUGE_VAL;
+  double side = std::min(floorWidth, 2.0 * extent);
+  side = std::max(side, std::ldexp(extent, -12));
+  if (!(side > 0.0) || !std::isfinite(side))
+  {
+    side = std::isfinite(floorWidth) && floorWidth > 0.0 ? floorWidth : 1.0;
+  }
+  this->LeafSide = std::exp2(std::floor(std::log2(side)));
+  this->Levels = extent > 0.0
+    ? std::clamp(static_cast<int>(std::ceil(std::log2(2.0 * extent / this->LeafSide))), 0, 20)
+    : 0;
 }
 
 // Nodes [first, first + count) of `order`, split at the median of the widest extent.
@@ -335,10 +378,53 @@ bool GeneratorTree::computeMoments(int index)
 
 // sums[c * L + l] += the node's expansion at lane l's point (p: x[L], y[L], z[L]). The lanes are
 // the inner loops, so that they vectorize (compiled for the CPU's widest vectors: BOOSTED_TREE_CLONES).
-BOOSTED_TREE_CLONES
-void GeneratorTree::addMultipole(const Node& node, const double* moments, const double* p, double* sums) const
+// Adds the nodes `starts` and their subtrees to sums for the lanes' points p, each node by its
+// expansion when usable for every point within `radius` of `center` (q at the nearest possible
+// distance), else opened; leaves and nodes without moments directly.
+void GeneratorTree::addNear(const int* starts, std::size_t count, const double* center, double radius,
+                            const double* p, double* sums) const
 {
-  const int M = this->MomentCount;
+  int stack[256];
+  for (std::size_t s = 0; s < count; ++s)
+  {
+    int top = 0;
+    stack[top++] = starts[s];
+    while (top > 0)
+    {
+      const Node& node = this->Nodes[static_cast<std::size_t>(stack[--top])];
+      if (node.moments < 0)
+      {
+        this->addDirect(node, p, sums);
+        continue;
+      }
+      const double dx = center[0] - node.center[0], dy = center[1] - node.center[1],
+                   dz = center[2] - node.center[2];
+      const double nearest = std::max(0.0, std::sqrt(dx * dx + dy * dy + dz * dz) - radius);
+      const double q = node.radius > 0.0
+        ? node.radius * std::sqrt(this->Falloff / (this->Falloff * nearest * nearest + this->Epsilon))
+        : 0.0;
+      if (q <= this->QLimit)
+      {
+        this->addMultipole(node, this->Moments.data() + node.moments, this->degreeFor(q), p, sums);
+      }
+      else if (node.children[0] < 0)
+      {
+        this->addDirect(node, p, sums);
+      }
+      else
+      {
+        stack[top++] = node.children[1];
+        stack[top++] = node.children[0];
+      }
+    }
+  }
+}
+
+BOOSTED_TREE_CLONES
+void GeneratorTree::addMultipole(const Node& node, const double* moments, int degree, const double* p,
+                                 double* sums) const
+{
+  const int M = monomialCount(degree);
   alignas(64) double u[3][L], q[L], scale[L];
   alignas(64) double power[kMaxMoments][L], e[kMaxMoments][L];
   for (int l = 0; l < L; ++l)
@@ -370,8 +456,10 @@ void GeneratorTree::addMultipole(const Node& node, const double* moments, const 
       e[m][l] = 0.0;
     }
   }
-  for (const Term& term : this->Terms)
+  const std::size_t termCount = this->TermsOfDegree[static_cast<std::size_t>(degree)];
+  for (std::size_t t = 0; t < termCount; ++t)
   {
+    const Term& term = this->Terms[t];
     const double* from = power[term.monomial];
     double* to = e[term.moment];
     for (int l = 0; l < L; ++l)
@@ -380,13 +468,13 @@ void GeneratorTree::addMultipole(const Node& node, const double* moments, const 
     }
   }
   // Each moment's coefficient times q^|b| / D.
-  int degree = 0;
+  int n = 0;
   double out[kComponents][L] = {};
   for (int m = 0; m < M; ++m)
   {
-    if (this->MonomialDegree[static_cast<std::size_t>(m)] != degree)
+    if (this->MonomialDegree[static_cast<std::size_t>(m)] != n)
     {
-      degree = this->MonomialDegree[static_cast<std::size_t>(m)];
+      n = this->MonomialDegree[static_cast<std::size_t>(m)];
       for (int l = 0; l < L; ++l)
       {
         scale[l] *= q[l];
@@ -410,25 +498,39 @@ void GeneratorTree::addMultipole(const Node& node, const double* moments, const 
   }
 }
 
+// The generators of `node` summed directly for the lanes' points, in a vector of the lanes (GCC's
+// vector extension: the compiler would otherwise vectorize across the generators' components):
+// the sums stay in registers across the node's generators.
+typedef double LaneVector __attribute__((vector_size(L * sizeof(double))));
+
 BOOSTED_TREE_CLONES
 void GeneratorTree::addDirect(const Node& node, const double* p, double* sums) const
 {
-  const double falloff = this->Falloff, epsilon = this->Epsilon;
-  for (std::size_t i = node.first; i < node.first + node.count; ++i)
+  LaneVector x, y, z, out[kComponents];
+  std::memcpy(&x, p, sizeof x);
+  std::memcpy(&y, p + L, sizeof y);
+  std::memcpy(&z, p + 2 * L, sizeof z);
+  for (LaneVector& o : out)
   {
-    const double* g = this->Generators.data() + i * kStride;
-    double factor[L];
-    for (int l = 0; l < L; ++l)
-    {
-      const double dx = p[l] - g[0], dy = p[L + l] - g[1], dz = p[2 * L + l] - g[2];
-      factor[l] = 1.0 / (falloff * (dx * dx + dy * dy + dz * dz) + epsilon);
-    }
+    o = LaneVector{} * 0.0;
+  }
+  const double falloff = this->Falloff, epsilon = this->Epsilon;
+  const double* g = this->Generators.data() + node.first * kStride;
+  const double* end = g + node.count * kStride;
+  for (; g != end; g += kStride)
+  {
+    const LaneVector dx = x - g[0], dy = y - g[1], dz = z - g[2];
+    const LaneVector factor = 1.0 / (falloff * (dx * dx + dy * dy + dz * dz) + epsilon);
     for (int c = 0; c < kComponents; ++c)
     {
-      for (int l = 0; l < L; ++l)
-      {
-        sums[c * L + l] += g[3 + c] * factor[l];
-      }
+      out[c] += g[3 + c] * factor;
+    }
+  }
+  for (int c = 0; c < kComponents; ++c)
+  {
+    for (int l = 0; l < L; ++l)
+    {
+      sums[c * L + l] += out[c][l];
     }
   }
 }
@@ -473,37 +575,8 @@ void GeneratorTree::evaluate(const double* xyz, double* bivectors) const
     }
     blockRadius = std::max(blockRadius, std::sqrt(distance2));
   }
-  int stack[256];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0)
-  {
-    const Node& node = this->Nodes[static_cast<std::size_t>(stack[--top])];
-    if (node.moments < 0)
-    {
-      this->addDirect(node, p, bivectors);
-      continue;
-    }
-    const double dx = center[0] - node.center[0], dy = center[1] - node.center[1],
-                 dz = center[2] - node.center[2];
-    const double nearest = std::max(0.0, std::sqrt(dx * dx + dy * dy + dz * dz) - blockRadius);
-    const double q = node.radius > 0.0
-      ? node.radius * std::sqrt(this->Falloff / (this->Falloff * nearest * nearest + this->Epsilon))
-      : 0.0;
-    if (q <= this->QLimit)
-    {
-      this->addMultipole(node, this->Moments.data() + node.moments, p, bivectors);
-    }
-    else if (node.children[0] < 0)
-    {
-      this->addDirect(node, p, bivectors);
-    }
-    else
-    {
-      stack[top++] = node.children[1];
-      stack[top++] = node.children[0];
-    }
-  }
+  const int root = 0;
+  this->addNear(&root, 1, center, blockRadius, p, bivectors);
   for (int l = 0; l < L; ++l)
   {
     if (!finite[l])
@@ -521,7 +594,7 @@ std::size_t GeneratorTree::bytes() const
   return this->Generators.capacity() * sizeof(double) + this->Nodes.capacity() * sizeof(Node) +
     this->Moments.capacity() * sizeof(double) + this->Terms.capacity() * sizeof(Term) +
     this->MonomialPowers.capacity() * sizeof(std::array<int, 3>) +
-    4 * this->MonomialIndex.capacity() * sizeof(int);
+    4 * this->MonomialIndex.capacity() * sizeof(int) + this->ShiftTerms.capacity() * sizeof(ShiftTerm);
 }
 } // namespace detail
 } // namespace cga

@@ -2,15 +2,16 @@
 // (g_i = w_i G_i) behind PointPairField::setTolerance (docs/conventions.md section 3 item 14).
 //
 // A binary tree over the generators (split at the median of the widest extent, leaves of at most
-// kLeafSize); each node holds the Cartesian moments mu_b = sum_i g_i yhat_i^b, |b| <= P, of its
-// generators about its center c (yhat = (x - c)/s, s its radius rho, so no moment overflows).
+// kLeafSize); each node holds the Cartesian moments mu_b = sum_i g_i yhat_i^b, |b| <= P = 10, of
+// its generators about its center c (yhat = (x - c)/s, s its radius rho, so no moment overflows).
 // For a point p, d = p - c, D = k |d|^2 + eps, kappa = k/D, u = sqrt(kappa) d, q = rho sqrt(kappa):
 //   1/(k |d - y|^2 + eps) = (1/D) sum_j D_j,  |D_j| <= (j + 1) q^j (Chebyshev U_j with |arg| <= 1),
-// so the degree-P truncation errs by at most (1/D) R_P(q), R_P(q) = q^(P+1) ((P+2) - (P+1) q)/(1-q)^2,
-// per generator. A node is used for a block of points when R_P(q)(1+q)^2 <= tolerance for every
-// point of the block (q at the block's nearest possible distance): its error is then at most
-// tolerance times its own share of A(p) = sum_i |g_i|_max / (k |p - x_i|^2 + eps), and the total
-// at most tolerance A(p). Nodes that fail are opened; leaves are summed directly.
+// so the degree-p truncation errs by at most (1/D) R_p(q), R_p(q) = q^(p+1) ((p+2) - (p+1) q)/(1-q)^2,
+// per generator. A node is used at the least degree p with R_p(q)(1+q)^2 <= tolerance (q at the
+// nearest possible distance): its error is then at most tolerance times its own share of
+// A(p) = sum_i |g_i|_max / (k |p - x_i|^2 + eps), and the total at most tolerance A(p). Nodes that
+// fail are opened; leaves are summed directly. The points' side (GeneratorTreeCells.cpp) uses
+// the same bound with the radius of a cube of points added to rho: the cube's local expansion.
 #pragma once
 
 #include "PointPairKernel.h"
@@ -18,6 +19,15 @@
 #include <array>
 #include <cstddef>
 #include <vector>
+
+// The loops over lanes and over the ten components are compiled for AVX-512, AVX2 and the
+// baseline, chosen at load time (GCC's function multiversioning), as the block kernel is
+// (PointPairKernel.h).
+#if defined(BOOSTED_KERNEL_X86_DISPATCH) && defined(__GNUC__) && !defined(__clang__)
+#define BOOSTED_TREE_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#else
+#define BOOSTED_TREE_CLONES
+#endif
 
 namespace cga
 {
@@ -36,10 +46,24 @@ public:
 
   /// B(p) for kernel::kLanes points: xyz holds x[kLanes], y[kLanes], z[kLanes] (relative to the
   /// field's center); bivectors receives Bivector::Count components per lane, component-major
-  /// (bivectors[c * kLanes + l]). A lane whose point is not finite gets 0.
+  /// (bivectors[c * kLanes + l]). A lane whose point is not finite gets 0. The nodes are chosen
+  /// for the block as a whole (its center and radius): used for points beyond the target cells'
+  /// lattice (evaluatePoints), one point per call.
   void evaluate(const double* xyz, double* bivectors) const;
 
-  /// The expansion degree P chosen for the tolerance, and the largest q a node is used at.
+  /// B(p) for `count` points, xyz interleaved (relative to the field's center), into
+  /// bivectors[i * Bivector::Count + c]; a point that is not finite gets 0. The far field comes from
+  /// local expansions about the cells of a fixed lattice of cubes (GeneratorTreeCells.cpp), so that
+  /// each B(p) depends on p alone, not on the other points of the call: the same bits whatever
+  /// the chunking, the threads, or map() of one point. Scratch memory O(count), allocated per call.
+  void evaluatePoints(const double* xyz, std::size_t count, double* bivectors) const;
+
+  /// The target cells: the side of the finest (leaf) cubes and the levels above them.
+  double leafSide() const { return this->LeafSide; }
+  int levels() const { return this->Levels; }
+
+  /// The moments' degree P (each use takes the least degree its q needs), and the largest q a
+  /// node is used at (at degree P).
   int degree() const { return this->Degree; }
   double openingLimit() const { return this->QLimit; }
   /// Bytes held (the permuted generators, the nodes, the moments): O(M).
@@ -47,8 +71,11 @@ public:
 
   /// The largest degree the tree chooses from.
   static constexpr int kMaxDegree = 10;
+  static constexpr int kMaxMomentsOfDegree = (kMaxDegree + 1) * (kMaxDegree + 2) * (kMaxDegree + 3) / 6;
   /// Generators per leaf at most.
   static constexpr std::size_t kLeafSize = 32;
+  /// A leaf cell's width over that of the widest cell usable at any distance.
+  static constexpr double kLeafShare = 0.5;
 
 private:
   struct Node
@@ -65,10 +92,28 @@ private:
     int moment, monomial;
     double coefficient;
   };
+  // One term of the multipole-to-local and local-to-local sums: index alpha + beta = gamma,
+  // with the binomial C(gamma, alpha) and the degrees |alpha|, |beta|.
+  struct ShiftTerm
+  {
+    int alpha, beta, gamma, alphaDegree, betaDegree;
+    double binomial;
+  };
+  struct CellWork;
+  void evaluateCell(CellWork& work, int level, std::size_t first, std::size_t last,
+                    const long long* cell, const double* parentLocal, const double* parentCenter) const;
+  void addSourceToLocal(const Node& node, const double* center, double radius, int degree, double* local) const;
+  void shiftLocal(const double* parent, const double* parentCenter, const double* center,
+                  double radius, double* local) const;
+  void addLocal(const double* local, const double* center, double radius, const double* p,
+                double* sums) const;
+  void addNear(const int* starts, std::size_t count, const double* center, double radius,
+               const double* p, double* sums) const;
+  void chooseCells();
   int build(std::size_t first, std::size_t count, std::vector<std::size_t>& order, int depth);
   bool computeMoments(int node);
   void addDirect(const Node& node, const double* p, double* sums) const;
-  void addMultipole(const Node& node, const double* moments, const double* p, double* b) const;
+  void addMultipole(const Node& node, const double* moments, int degree, const double* p, double* b) const;
 
   std::vector<double> Generators; // permuted, kGeneratorStride doubles each
   std::vector<Node> Nodes;
@@ -76,6 +121,21 @@ private:
   double Falloff, Epsilon;
   int Degree = 0;
   double QLimit = 0.0;
+  // DegreeLimit[p]: the largest q at which degree p meets the tolerance (p <= Degree), so that a
+  // node used at a smaller q is expanded to the least degree that suffices.
+  double DegreeLimit[kMaxDegree + 1] = {};
+  int degreeFor(double q) const
+  {
+    int p = 0;
+    while (p < this->Degree && q > this->DegreeLimit[p])
+    {
+      ++p;
+    }
+    return p;
+  }
+  std::vector<double> Factorial, InverseFactorial; // beta! = beta_0! beta_1! beta_2! per monomial
+  std::vector<std::size_t> ShiftRuns; // ShiftTerms of alpha: [ShiftRuns[alpha], ShiftRuns[alpha + 1])
+  std::vector<std::size_t> TermsOfDegree; // Terms[0, TermsOfDegree[p]) make e_beta for |beta| <= p
   int MomentCount = 0;
   std::vector<int> MonomialIndex;       // (a, b, c) -> graded index, (Degree+1)^3 entries
   std::vector<int> MonomialParent;      // index of the monomial with one power less
@@ -84,6 +144,9 @@ private:
   std::vector<std::array<int, 3>> MonomialPowers;
   std::vector<Term> Terms;
   std::size_t DirectBelow = 0; // nodes with fewer generators are summed directly even when usable
+  std::vector<ShiftTerm> ShiftTerms;
+  double LeafSide = 1.0; // a power of two
+  int Levels = 0;        // the top cells are LeafSide * 2^Levels wide
 };
 } // namespace detail
 } // namespace cga

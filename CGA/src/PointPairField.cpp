@@ -262,19 +262,8 @@ Bivector PointPairField::generatorAt(Vec3 p) const
   Bivector b;
   if (this->Tree)
   {
-    constexpr int L = kernel::kLanes;
-    double xyz[3 * L], lanes[Bivector::Count * L];
-    for (int l = 0; l < L; ++l)
-    {
-      xyz[l] = relative.x;
-      xyz[L + l] = relative.y;
-      xyz[2 * L + l] = relative.z;
-    }
-    this->Tree->evaluate(xyz, lanes);
-    for (int c = 0; c < Bivector::Count; ++c)
-    {
-      b[c] = lanes[c * L];
-    }
+    const double xyz[3] = { relative.x, relative.y, relative.z };
+    this->Tree->evaluatePoints(xyz, 1, b.c.data());
   }
   else
   {
@@ -377,6 +366,20 @@ std::size_t mapPointsInBlocks(const kernel::FieldArgs& args,
   alignas(64) double image[3 * L];
   alignas(64) double bivectors[Bivector::Count * L];
   std::uint8_t mapped[L];
+  // With a tree, B of every point of the call first (the tree's target cells span the call).
+  std::vector<double> treeBivectors;
+  if (tree)
+  {
+    std::vector<double> relative(3 * count);
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      relative[3 * i] = static_cast<double>(in[3 * i]) - c.x;
+      relative[3 * i + 1] = static_cast<double>(in[3 * i + 1]) - c.y;
+      relative[3 * i + 2] = static_cast<double>(in[3 * i + 2]) - c.z;
+    }
+    treeBivectors.resize(Bivector::Count * count);
+    tree->evaluatePoints(relative.data(), count, treeBivectors.data());
+  }
   for (std::size_t first = 0; first < count; first += L)
   {
     const int n = static_cast<int>(std::min<std::size_t>(L, count - first));
@@ -390,10 +393,13 @@ std::size_t mapPointsInBlocks(const kernel::FieldArgs& args,
     }
     if (tree)
     {
-      tree->evaluate(xyz, bivectors);
-      for (double& component : bivectors)
+      for (int l = 0; l < L; ++l)
       {
-        component *= -args.strength; // the exponent, as mapBlock's
+        const double* b = treeBivectors.data() + Bivector::Count * (first + std::min(l, n - 1));
+        for (int k = 0; k < Bivector::Count; ++k)
+        {
+          bivectors[k * L + l] = b[k] * -args.strength; // the exponent, as mapBlock's
+        }
       }
       mapBlockBy(args, bivectors, xyz, image, mapped);
     }

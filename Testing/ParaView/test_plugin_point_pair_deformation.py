@@ -38,6 +38,11 @@ defaults = {
     "ExponentialRule": "Exact",
     "GeneratorDirectionArrayName": "Direction",
     "UseGeneratorWeightArray": 0,
+    "TransformNormals": 1,
+    "VectorArrays": [],
+    "NormalArrays": [],
+    "ComputeConformalScale": 0,
+    "ComputeConformalityDefect": 0,
 }
 common.check_defaults(deformation, defaults, failures)
 # The generator table: the same protocol and columns as the Dipole Field's.
@@ -52,8 +57,8 @@ deformation.UpdatePipeline()
 info = deformation.GetDataInformation()
 if info.GetPointDataInformation().GetArrayInformation("Displacement") is None:
     failures.append("no Displacement array")
-if info.GetPointDataInformation().GetArrayInformation("Normals") is not None:
-    failures.append("Normals were not dropped")
+if info.GetPointDataInformation().GetArrayInformation("Normals") is None:
+    failures.append("the Normals were not transformed (TransformNormals is on by default)")
 source_points = points_of(sphere)
 expected = []
 for p in source_points:
@@ -66,6 +71,25 @@ error = largest_distance(points_of(deformation), expected)
 print("one generator vs closed form: %g" % error)
 if error > 1e-5:  # the sphere's points are float
     failures.append("one generator differs from the closed form by %g" % error)
+
+# The arrays through the derivative: the sphere's normals copied into "Copy" (a plain point
+# array), picked in Normal Arrays, come out as the transformed active normals; picked in Vector
+# Arrays they are J n instead, another direction; the scalars are added when asked for.
+copied = simple.Calculator(Input=sphere, ResultArrayName="Copy", Function="Normals")
+for mode in ("NormalArrays", "VectorArrays"):
+    through = PointPairDeformation(Input=copied, GeneratorList=list(x) + list(v) + [w, 0, 0],  # noqa: F821
+                                   Falloff=k, Epsilon=eps, ComputeConformalScale=1,
+                                   ComputeConformalityDefect=1, **{mode: ["Copy"]})
+    data = servermanager.Fetch(through)
+    normals, copy = data.GetPointData().GetNormals(), data.GetPointData().GetArray("Copy")
+    largest = max(math.dist(normals.GetTuple3(i), copy.GetTuple3(i))
+                  for i in range(data.GetNumberOfPoints()))
+    print("%s: Copy vs the transformed Normals: %g" % (mode, largest))
+    if (largest > 1e-6) if mode == "NormalArrays" else (largest < 1e-2):
+        failures.append("%s=['Copy'] did not transform it as documented (%g)" % (mode, largest))
+    for name in ("ConformalScale", "ConformalityDefect"):
+        if data.GetPointData().GetArray(name) is None:
+            failures.append("no %s array" % name)
 
 # The same generator from the optional Generators input: one point with Direction and w arrays.
 point = simple.PointSource(Center=list(x), NumberOfPoints=1, Radius=0.0)

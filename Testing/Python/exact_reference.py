@@ -110,9 +110,29 @@ def one_ulp_sensitivity(generators, p, falloff, epsilon, strength, trials=3, see
     """The largest movement of the image when every component of B(p) (in the orthonormal basis)
     changes by one unit in the last place of a double (2^-53 relative, random signs): a numerical
     estimate of what any double computation of B(p) cannot avoid."""
+    with mp.workdps(DIGITS):
+        return bivector_sensitivity(field_bivector(generators, p, falloff, epsilon), p, strength,
+                                    trials, seed)
+
+
+def bivector_from_components(c):
+    """The antisymmetric array of the bivector with the ten null-basis components c (doubles) in
+    the project's order: e12, e13, e23, e1^no, e2^no, e3^no, e1^ni, e2^ni, e3^ni, no^ni."""
+    e = [_vector((1, 0, 0)), _vector((0, 1, 0)), _vector((0, 0, 1))]
+    pairs = [(e[0], e[1]), (e[0], e[2]), (e[1], e[2]), (e[0], NO), (e[1], NO), (e[2], NO),
+             (e[0], NI), (e[1], NI), (e[2], NI), (NO, NI)]
+    total = [[mpf(0)] * 5 for _ in range(5)]
+    for coefficient, (a, b) in zip(c, pairs):
+        for i in range(5):
+            for j in range(5):
+                total[i][j] += mpf(coefficient) * (a[i] * b[j] - a[j] * b[i])
+    return total
+
+
+def bivector_sensitivity(s, p, strength, trials=3, seed=1):
+    """one_ulp_sensitivity for a given bivector s (antisymmetric array)."""
     rng = random.Random(seed)
     with mp.workdps(DIGITS):
-        s = field_bivector(generators, p, falloff, epsilon)
         base = image_of_bivector(s, p, strength)
         largest = mpf(0)
         for _ in range(trials):

@@ -188,6 +188,8 @@ def build(spec):
         array = filled_array(rng, spec["regime"], layout, components, max(0, points + wrong_by),
                              name)
         data.GetPointData().AddArray(array)
+        if name == "Normals" and components == 3:
+            data.GetPointData().SetActiveNormals(name)  # the normals a filter may transform
         all_finite = all_finite and finite(array)
     for k in range(spec["cell_arrays"]):
         array = filled_array(rng, spec["regime"], "double", 1, data.GetNumberOfCells(),

@@ -8,6 +8,8 @@ without touching this file:
   bool values (or one str), with its clamp range from Get<Name>MinValue/MaxValue when it has one;
 * shortcuts: every argument-less Set<Name>To<Value>;
 * lists: every Add<Row> with numeric arguments that has a SetNumberOf<Row>s (the one list API);
+* array selections: every Get<Name>ArraySelection returning a vtkDataArraySelection (names of
+  input arrays to act on), whose arrays are enabled, disabled or cleared;
 * inputs: every input port, its required data type and whether it is optional.
 
 A trial is a recipe: plain data made by random.Random("<seed>/<trial>") alone (the same on every
@@ -20,6 +22,7 @@ import re
 import sys
 
 import boostedsurfaces
+from vtkmodules.vtkCommonCore import vtkDataArraySelection
 from vtkmodules.vtkCommonExecutionModel import vtkAlgorithm
 
 INT_MIN, INT_MAX = -2 ** 31, 2 ** 31 - 1
@@ -85,6 +88,9 @@ class ClassModel:
                     self.lists[row] = max(widths)
         list_methods = {f % row for row in self.lists for f in ("Set%s", "SetNumberOf%ss")}
         instance = cls()
+        self.selections = [method for method in own
+                           if re.match(r"Get\w+ArraySelection$", method)
+                           and isinstance(getattr(instance, method)(), vtkDataArraySelection)]
         self.setters = {}
         self.shortcuts = []
         for method in own:
@@ -273,6 +279,13 @@ def mutation(rng, values, model, rows):
         required, optional = model.ports[port]
         return ("SetInputDataObject", [port, data_spec(rng, values, required, optional,
                                                         port > 0 and optional)])
+    if model.selections and roll < 0.57:
+        # "Get<Name>ArraySelection.<Method>": the runner calls the getter, then the method. The
+        # names are the ones fuzz_inputs gives arrays (of 1 to 4 components), and others.
+        selection = rng.choice(model.selections)
+        operation = rng.choices(["EnableArray", "DisableArray", "RemoveAllArrays"], [6, 2, 1])[0]
+        return ("%s.%s" % (selection, operation),
+                [] if operation == "RemoveAllArrays" else [rng.choice(NAMES)])
     name = rng.choice(sorted(model.setters))
     types, bounds = model.setters[name]
     if all(t == "float" for t in types) and len(types) > 1 and rng.random() < 0.1:
@@ -309,10 +322,21 @@ def make_recipe(models, seed, trial):
     return {"seed": seed, "trial": trial, "class": model.name, "regime": regime, "calls": calls}
 
 
+def call(algorithm, method, arguments):
+    """Calls `method` of a recipe on `algorithm` ("Get<Name>ArraySelection.<Method>" through the
+    getter)."""
+    target = algorithm
+    *getters, name = method.split(".")
+    for getter in getters:
+        target = getattr(target, getter)()
+    return getattr(target, name)(*arguments)
+
+
 def describe(recipe):
     """The recipe as Python-like lines, one call each."""
     lines = ["# seed %d trial %d: %s, %s values" % (recipe["seed"], recipe["trial"],
                                                   recipe["class"], recipe["regime"])]
     for method, arguments in recipe["calls"]:
-        lines.append("algorithm.%s(%s)" % (method, ", ".join(repr(a) for a in arguments)))
+        lines.append("algorithm.%s(%s)" % (method.replace(".", "()."),
+                                            ", ".join(repr(a) for a in arguments)))
     return "\n".join(lines)

@@ -122,7 +122,7 @@ def run_trial(models, log, seed, trial, verbose=False):
         ports = range(algorithm.GetNumberOfOutputPorts())
         befores = [algorithm.GetOutputDataObject(port) for port in ports]
         stamps = [b.GetMTime() if b is not None else None for b in befores]
-        getattr(algorithm, method)(*call_arguments)
+        fuzz_recipe.call(algorithm, method, call_arguments)
         if not method.startswith("Update"):
             log.take(recorder)  # a setter's own error (a row outside the list) is not the update's
             continue

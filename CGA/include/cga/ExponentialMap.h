@@ -20,7 +20,9 @@ namespace cga
 /// the Exact rule where b[i] is far from nilpotent (one template source), to round-off for the
 /// Paper rule (its closed-form sandwich of c + B). Where b[i] is nearly nilpotent (a point pair,
 /// a generator next to p) the Exact rule maps in a frame around p[i] instead, which is more
-/// exact than the pointwise sandwich (docs/conventions.md section 2 item 12). The same bits on
+/// exact than the pointwise sandwich next to the nilpotent part's location (far from it, under a
+/// huge nilpotent part with a rest, neither is exact to the problem's condition:
+/// docs/conventions.md section 2 item 12). The same bits on
 /// every instruction set and however the points are split into calls.
 std::size_t mapPointsByExponentials(const Bivector* b,
                                     const Vec3* p,

@@ -1,5 +1,5 @@
 // The derivatives of the field's generators with respect to their parameters, for fitting
-// generators to a target (vtkPointPairFitFilter; docs/conventions.md section 3 item 16).
+// generators to a target (vtkPointPairFitFilter; docs/conventions.md section 3 item 17).
 //
 // A generator of kind k at location x with direction v (and, for a twist, pitch h) is the bivector
 // G(x, v) of FieldGenerator::of; in the field it adds the term w G(x, v) / (f |p - x|^2 + eps) to

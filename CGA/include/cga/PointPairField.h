@@ -163,7 +163,10 @@ public:
   /// tolerance t > 0, every B(p) that generatorAt, map and mapPoints compute is within
   ///   t * A(p),  A(p) = sum_i |w_i G_i|_max / (k |p - x_i|^2 + eps),
   /// of the direct sum in each component (|.|_max: the largest component), by a tree over the
-  /// generators whose remainder bound is enforced per block of points. 0 (the default) is the
+  /// generators whose remainder bound is enforced at every point, and local expansions about
+  /// cubes of a fixed lattice holding the points of a mapPoints call (so B(p) depends on p alone,
+  /// not on the call: map() of one point gives mapPoints' bits, but pays for a whole column of
+  /// cubes, and mapPoints should get many points at once). 0 (the default) is the
   /// direct sum. A tolerance above maximumTolerance() is used as maximumTolerance(). Returns false,
   /// changing nothing, for a NaN or negative tolerance. Fields of fewer than `minimumGenerators`
   /// generators (default treeMinimumGenerators(), the measured crossover below which the direct
@@ -172,7 +175,7 @@ public:
   bool setTolerance(double tolerance, std::size_t minimumGenerators = treeMinimumGenerators());
   double tolerance() const { return this->Tolerance; }
   static constexpr double maximumTolerance() { return 1e-2; }
-  static constexpr std::size_t treeMinimumGenerators() { return 50000; }
+  static constexpr std::size_t treeMinimumGenerators() { return 10000; }
   /// Bytes the tree holds (0 without one), and its expansion degree (0 without one).
   std::size_t treeBytes() const;
   int treeDegree() const;
@@ -191,7 +194,8 @@ public:
   /// xyz interleaved, from `in` to `out` (which may be the same array when the types match).
   /// A point that is not finite, or whose image is not finite, is copied unchanged; the return
   /// value counts them. A float out holds an image beyond the largest float (3.4e38) as inf, as
-  /// the conversion rounds it: the VTK classes turn that into an error. `out` is written for every point. No heap allocation.
+  /// the conversion rounds it: the VTK classes turn that into an error. `out` is written for every point. No heap allocation
+  /// without a tree (setTolerance); with one, O(count) scratch, about 150 bytes per point.
   /// The points go through a vectorized block kernel, the same source as map() instantiated for
   /// a vector of points (every image bit for bit as map() gives it), compiled for several
   /// instruction sets and chosen for the running CPU: see mapPointsInstructionSets().
@@ -208,7 +212,7 @@ public:
   // differentiation of the same computation as map() (every branch and frame the value takes),
   // exact to rounding, with the direct sum (a tolerance's tree is not used). Each returns false,
   // writing nothing, where map() does or a derivative is not finite; the image is map()'s, to the
-  // bit.
+  // bit, without a tolerance (with one: the direct sum's image, within the tolerance of map()'s).
 
   /// map() and its derivative J = d out / d p, row-major: jacobian[3 i + j] = d out_i / d p_j.
   /// J is a general 3x3 matrix for both rules: K(p) varies with p, so even the Exact rule's map,
@@ -218,8 +222,11 @@ public:
 
   /// The batch form of mapWithJacobian through the block kernel: `count` points xyz interleaved,
   /// their images to `out` as mapPoints() writes them (the same bits), and 9 doubles per point to
-  /// `jacobians` (row-major), the identity where the point is not mapped or its derivative is not
-  /// finite. Returns how many points are such. No heap allocation; threads are the caller's.
+  /// `jacobians` (row-major). A point that is not mapped, or whose derivative is not finite (an
+  /// image whose derivative overflows: huge weights), is copied unchanged with the identity as its
+  /// Jacobian, unlike mapPoints, which maps the latter: callers that need every image call
+  /// mapPoints where the returned count is not 0. Returns how many points are such. No heap
+  /// allocation; threads are the caller's.
   std::size_t mapPointsWithJacobians(const double* in, double* out, double* jacobians,
     std::size_t count, double strength, ExponentialRule rule) const;
 

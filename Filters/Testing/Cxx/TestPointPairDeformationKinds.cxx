@@ -3,6 +3,7 @@
 // against the full multivector product, and the kinds' bad input.
 #include "vtkPointPairDeformationFilter.h"
 
+#include "DeformedOutput.h"
 #include "EventCounter.h"
 #include "GeneratorKindReference.h"
 #include "TestSupport.h"
@@ -96,13 +97,6 @@ vtkNew<vtkPolyData> generatorPoints(const std::vector<GeneratorParameters>& gene
     data->GetPointData()->AddArray(array);
   }
   return data;
-}
-
-Vec3 pointOf(vtkPointSet* data, vtkIdType i)
-{
-  double p[3];
-  data->GetPoint(i, p);
-  return { p[0], p[1], p[2] };
 }
 
 Vec3 referenceImage(const cga::Multivector& k, Vec3 p)

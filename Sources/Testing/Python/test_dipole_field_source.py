@@ -91,7 +91,7 @@ class DipoleFieldSourceTest(unittest.TestCase):
             source = vtkDipoleFieldSource()
             events = common.ErrorRecorder(source)
             source.RemoveAllGenerators()
-            for _ in range(50000):  # the tree's crossover (treeMinimumGenerators)
+            for _ in range(10000):  # the tree's crossover (treeMinimumGenerators)
                 source.AddGenerator(rng.uniform(-2, 2), rng.uniform(-2, 2), 0.0,
                                     rng.uniform(-1, 1), rng.uniform(-1, 1), 0.0, 1e-4)
             rng.seed(5)

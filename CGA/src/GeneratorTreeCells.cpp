@@ -1,0 +1,457 @@
+// GeneratorTree::evaluatePoints: the target side of the far-field approximation (docs/conventions.md
+// section 3 item 14). The points of a call are sorted into the cubes of a fixed lattice (anchored
+// at the field's center, leaves LeafSide wide, Levels levels up to the top cells); each occupied
+// cell gets a local expansion of degree P, the Taylor polynomial in p - c_cell of the generator
+// nodes usable for the whole cell (multipole-to-local), plus its parent's (local-to-local, an
+// exact shift of the polynomial); in a leaf each point adds the polynomial's value and the nodes
+// left over (the near field, per point as in evaluate()). Cells are cubes of the lattice, not
+// boxes around the call's points, so B(p) depends on p alone.
+#include "GeneratorTree.h"
+
+#include "cga/Compact.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+namespace cga
+{
+namespace detail
+{
+namespace
+{
+constexpr int L = kernel::kLanes;
+constexpr int kComponents = Bivector::Count;
+// Points whose leaf index would exceed this are evaluated one by one (evaluate()).
+constexpr double kLargestIndex = 0x1p50;
+
+// A point's place in the lattice: its top cell and the Morton code of its leaf within it (the
+// coarsest level in the highest bits, so that every cell's points are consecutive once sorted).
+struct CellKey
+{
+  long long top[3];
+  std::uint64_t morton;
+  std::size_t index;
+  bool operator<(const CellKey& other) const
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      if (this->top[k] != other.top[k])
+      {
+        return this->top[k] < other.top[k];
+      }
+    }
+    if (this->morton != other.morton)
+    {
+      return this->morton < other.morton;
+    }
+    return this->index < other.index;
+  }
+};
+
+std::uint64_t spreadBits(std::uint64_t v)
+{
+  std::uint64_t r = 0;
+  for (int b = 0; b < 21; ++b)
+  {
+    r |= ((v >> b) & 1u) << (3 * b);
+  }
+  return r;
+}
+
+long long floorDivide(long long a, int shift)
+{
+  // Arithmetic shift rounds toward minus infinity for negative a on every supported compiler;
+  // spelled out to not depend on it.
+  const long long divisor = 1LL << shift;
+  long long q = a / divisor;
+  if (a % divisor != 0 && a < 0)
+  {
+    --q;
+  }
+  return q;
+}
+} // namespace
+
+namespace
+{
+// The ten components of a bivector in registers: eight in one vector, two in another (GCC's
+// vector extension; the compiler does not vectorize the loop of ten over arrays that may alias).
+typedef double Eight __attribute__((vector_size(8 * sizeof(double))));
+typedef double Two __attribute__((vector_size(2 * sizeof(double))));
+struct Components
+{
+  Eight low = {};
+  Two high = {};
+  void add(double factor, const double* from)
+  {
+    Eight l;
+    Two h;
+    std::memcpy(&l, from, sizeof l);
+    std::memcpy(&h, from + 8, sizeof h);
+    this->low += factor * l;
+    this->high += factor * h;
+  }
+  void addTo(double factor, double* to) const
+  {
+    Eight l;
+    Two h;
+    std::memcpy(&l, to, sizeof l);
+    std::memcpy(&h, to + 8, sizeof h);
+    l += factor * this->low;
+    h += factor * this->high;
+    std::memcpy(to, &l, sizeof l);
+    std::memcpy(to + 8, &h, sizeof h);
+  }
+};
+static_assert(kComponents == 10, "Components holds ten");
+} // namespace
+
+// The scratch of one evaluatePoints call: sorted keys, the points, one local expansion and two
+// node lists per level.
+struct GeneratorTree::CellWork
+{
+  const double* xyz;
+  double* bivectors;
+  std::vector<CellKey> keys;
+  std::vector<double> locals;           // per level: MomentCount x kComponents
+  std::vector<std::vector<int>> lists;  // per level: the nodes left for the cells below
+  std::vector<std::vector<int>> stacks; // per level: the nodes to classify
+};
+
+void GeneratorTree::evaluatePoints(const double* xyz, std::size_t count, double* bivectors) const
+{
+  std::fill_n(bivectors, count * kComponents, 0.0);
+  if (this->Nodes.empty())
+  {
+    return;
+  }
+  CellWork work;
+  work.xyz = xyz;
+  work.bivectors = bivectors;
+  work.keys.reserve(count);
+  const double inverseSide = 1.0 / this->LeafSide;
+  const int levels = this->Levels;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const double* p = xyz + 3 * i;
+    if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
+    {
+      continue;
+    }
+    double scaled[3];
+    bool inLattice = true;
+    for (int k = 0; k < 3; ++k)
+    {
+      scaled[k] = std::floor(p[k] * inverseSide);
+      inLattice = inLattice && std::fabs(scaled[k]) < kLargestIndex;
+    }
+    if (!inLattice)
+    {
+      // Far beyond the generators: one point at a time, every lane the same point.
+      alignas(64) double lanes[3 * L], sums[kComponents * L];
+      for (int k = 0; k < 3; ++k)
+      {
+        std::fill_n(lanes + k * L, L, p[k]);
+      }
+      this->evaluate(lanes, sums);
+      for (int c = 0; c < kComponents; ++c)
+      {
+        bivectors[i * kComponents + c] = sums[c * L];
+      }
+      continue;
+    }
+    CellKey key;
+    key.morton = 0;
+    key.index = i;
+    for (int k = 0; k < 3; ++k)
+    {
+      const auto leaf = static_cast<long long>(scaled[k]);
+      key.top[k] = floorDivide(leaf, levels);
+      const auto within = static_cast<std::uint64_t>(leaf - key.top[k] * (1LL << levels));
+      key.morton |= spreadBits(within) << k;
+    }
+    work.keys.push_back(key);
+  }
+  std::sort(work.keys.begin(), work.keys.end());
+  const std::size_t localSize = static_cast<std::size_t>(this->MomentCount * kComponents);
+  work.locals.resize(static_cast<std::size_t>(levels + 1) * localSize);
+  work.lists.resize(static_cast<std::size_t>(levels + 2));
+  work.stacks.resize(static_cast<std::size_t>(levels + 1));
+  work.lists[0].assign(1, 0); // the root for every top cell
+  for (std::size_t first = 0; first < work.keys.size();)
+  {
+    std::size_t last = first + 1;
+    const long long* top = work.keys[first].top;
+    while (last < work.keys.size() && std::equal(top, top + 3, work.keys[last].top))
+    {
+      ++last;
+    }
+    this->evaluateCell(work, 0, first, last, top, nullptr, nullptr);
+    first = last;
+  }
+}
+
+// The cell `cell` (integer coordinates at `level`) holding the sorted keys [first, last).
+void GeneratorTree::evaluateCell(CellWork& work, int level, std::size_t first, std::size_t last,
+                                 const long long* cell, const double* parentLocal,
+                                 const double* parentCenter) const
+{
+  const double side = std::ldexp(this->LeafSide, this->Levels - level);
+  const double radius = 0.5 * std::sqrt(3.0) * side;
+  const double center[3] = { (static_cast<double>(cell[0]) + 0.5) * side,
+                             (static_cast<double>(cell[1]) + 0.5) * side,
+                             (static_cast<double>(cell[2]) + 0.5) * side };
+  const std::size_t localSize = static_cast<std::size_t>(this->MomentCount * kComponents);
+  double* local = work.locals.data() + static_cast<std::size_t>(level) * localSize;
+  bool hasLocal = parentLocal != nullptr;
+  if (hasLocal)
+  {
+    this->shiftLocal(parentLocal, parentCenter, center, radius, local);
+  }
+  else
+  {
+    std::fill_n(local, localSize, 0.0);
+  }
+  const bool leaf = level == this->Levels;
+  const std::vector<int>& candidates = work.lists[static_cast<std::size_t>(level)];
+  std::vector<int>& left = work.lists[static_cast<std::size_t>(level + 1)];
+  std::vector<int>& stack = work.stacks[static_cast<std::size_t>(level)];
+  left.clear();
+  stack.assign(candidates.rbegin(), candidates.rend());
+  while (!stack.empty())
+  {
+    const int index = stack.back();
+    stack.pop_back();
+    const Node& node = this->Nodes[static_cast<std::size_t>(index)];
+    const double dx = center[0] - node.center[0], dy = center[1] - node.center[1],
+                 dz = center[2] - node.center[2];
+    const double distance = std::sqrt(dx * dx + dy * dy + dz * dz);
+    if (node.moments >= 0)
+    {
+      const double q = (node.radius + radius) *
+        std::sqrt(this->Falloff / (this->Falloff * distance * distance + this->Epsilon));
+      if (q <= this->QLimit)
+      {
+        this->addSourceToLocal(node, center, radius, this->degreeFor(q), local);
+        hasLocal = true;
+        continue;
+      }
+    }
+    // Left whole for the cells below (or the leaf's points one by one) while the cell is the
+    // larger of the two, or the node may be usable at the cell's nearest point; else opened.
+    const double nearest = std::max(0.0, distance - radius);
+    const bool usableBelow = node.moments >= 0 &&
+      node.radius * std::sqrt(this->Falloff / (this->Falloff * nearest * nearest + this->Epsilon)) <=
+        this->QLimit;
+    if (leaf || node.children[0] < 0 || node.moments < 0 || usableBelow || node.radius <= radius)
+    {
+      left.push_back(index);
+      continue;
+    }
+    stack.push_back(node.children[1]);
+    stack.push_back(node.children[0]);
+  }
+  if (!leaf)
+  {
+    const int shift = this->Levels - level - 1;
+    for (std::size_t begin = first; begin < last;)
+    {
+      const unsigned octant = static_cast<unsigned>((work.keys[begin].morton >> (3 * shift)) & 7u);
+      std::size_t end = begin + 1;
+      while (end < last && ((work.keys[end].morton >> (3 * shift)) & 7u) == octant)
+      {
+        ++end;
+      }
+      const long long child[3] = { 2 * cell[0] + (octant & 1u), 2 * cell[1] + ((octant >> 1) & 1u),
+                                   2 * cell[2] + ((octant >> 2) & 1u) };
+      this->evaluateCell(work, level + 1, begin, end, child, hasLocal ? local : nullptr, center);
+      begin = end;
+    }
+    return;
+  }
+  // The leaf's points, kLanes at a time (the last block repeats its last point).
+  for (std::size_t begin = first; begin < last; begin += L)
+  {
+    const std::size_t n = std::min<std::size_t>(L, last - begin);
+    alignas(64) double p[3 * L], sums[kComponents * L];
+    for (int l = 0; l < L; ++l)
+    {
+      const double* point = work.xyz + 3 * work.keys[begin + std::min<std::size_t>(l, n - 1)].index;
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k * L + l] = point[k];
+      }
+    }
+    std::fill_n(sums, kComponents * L, 0.0);
+    if (hasLocal)
+    {
+      this->addLocal(local, center, radius, p, sums);
+    }
+    this->addNear(left.data(), left.size(), center, radius, p, sums);
+    for (std::size_t l = 0; l < n; ++l)
+    {
+      double* out = work.bivectors + work.keys[begin + l].index * kComponents;
+      for (int c = 0; c < kComponents; ++c)
+      {
+        out[c] = sums[c * L + static_cast<int>(l)];
+      }
+    }
+  }
+}
+
+// local += the degree-p Taylor polynomial in yhat = (p - center)/radius of the node's sum
+// (GeneratorTree.h): with d = center - c_node, D = k|d|^2 + eps, u = sqrt(k/D) d,
+// a = sqrt(k/D) radius and b = sqrt(k/D) rho_node,
+//   L_alpha += (-a)^|alpha| sum_beta C(alpha + beta, alpha) b^|beta| e_(alpha+beta)(u)/D mu_beta.
+BOOSTED_TREE_CLONES
+void GeneratorTree::addSourceToLocal(const Node& node, const double* center, double radius, int degree,
+                                     double* local) const
+{
+  const int M = (degree + 1) * (degree + 2) * (degree + 3) / 6;
+  const double d[3] = { center[0] - node.center[0], center[1] - node.center[1], center[2] - node.center[2] };
+  const double D = this->Falloff * (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) + this->Epsilon;
+  const double rootKappa = std::sqrt(this->Falloff / D);
+  const double u[3] = { rootKappa * d[0], rootKappa * d[1], rootKappa * d[2] };
+  const double a = rootKappa * radius;
+  const double b = rootKappa * (node.radius > 0.0 ? node.radius : 1.0);
+  double power[kMaxMomentsOfDegree], e[kMaxMomentsOfDegree];
+  power[0] = 1.0;
+  for (int m = 1; m < M; ++m)
+  {
+    power[m] = power[this->MonomialParent[static_cast<std::size_t>(m)]] *
+      u[this->MonomialAxis[static_cast<std::size_t>(m)]];
+  }
+  std::fill_n(e, M, 0.0);
+  const std::size_t termCount = this->TermsOfDegree[static_cast<std::size_t>(degree)];
+  for (std::size_t t = 0; t < termCount; ++t)
+  {
+    const Term& term = this->Terms[t];
+    e[term.moment] += term.coefficient * power[term.monomial];
+  }
+  double aPower[kMaxDegree + 1], bPower[kMaxDegree + 1];
+  aPower[0] = 1.0;
+  bPower[0] = 1.0;
+  for (int n = 1; n <= degree; ++n)
+  {
+    aPower[n] = -a * aPower[n - 1];
+    bPower[n] = b * bPower[n - 1];
+  }
+  // With C(alpha + beta, alpha) = gamma!/(alpha! beta!): L_alpha += (-a)^|alpha|/alpha! times the sum
+  // over beta of (gamma! e_gamma / D) (b^|beta| mu_beta / beta!), one product per term.
+  const double* moments = this->Moments.data() + node.moments;
+  alignas(64) double scaled[kMaxMomentsOfDegree * kComponents];
+  for (int m = 0; m < M; ++m)
+  {
+    const auto index = static_cast<std::size_t>(m);
+    const double factor = bPower[this->MonomialDegree[index]] * this->InverseFactorial[index];
+    for (int c = 0; c < kComponents; ++c)
+    {
+      scaled[m * kComponents + c] = factor * moments[m * kComponents + c];
+    }
+    e[m] *= this->Factorial[index] / D;
+  }
+  // The monomials are in graded order: alpha's terms of |alpha| + |beta| <= degree come first.
+  for (int alpha = 0; alpha < M; ++alpha)
+  {
+    const ShiftTerm* term = this->ShiftTerms.data() + this->ShiftRuns[static_cast<std::size_t>(alpha)];
+    const ShiftTerm* end = this->ShiftTerms.data() + this->ShiftRuns[static_cast<std::size_t>(alpha + 1)];
+    const int betaDegrees = degree - term->alphaDegree;
+    Components sum = {};
+    for (; term != end && term->betaDegree <= betaDegrees; ++term)
+    {
+      sum.add(e[term->gamma], scaled + term->beta * kComponents);
+    }
+    const auto index = static_cast<std::size_t>(alpha);
+    sum.addTo(aPower[this->MonomialDegree[index]] * this->InverseFactorial[index], local + alpha * kComponents);
+  }
+}
+
+// local = the parent's polynomial in the child's variable: yhat_parent = lambda yhat + delta,
+// lambda = radius / parentRadius = 1/2, delta = (center - parentCenter)/parentRadius:
+//   L_alpha = lambda^|alpha| sum_beta C(alpha + beta, alpha) delta^beta L_parent,(alpha+beta).
+BOOSTED_TREE_CLONES
+void GeneratorTree::shiftLocal(const double* parent, const double* parentCenter, const double* center,
+                               double radius, double* local) const
+{
+  const int M = this->MomentCount;
+  const double parentRadius = 2.0 * radius;
+  const double delta[3] = { (center[0] - parentCenter[0]) / parentRadius,
+                            (center[1] - parentCenter[1]) / parentRadius,
+                            (center[2] - parentCenter[2]) / parentRadius };
+  double power[kMaxMomentsOfDegree];
+  power[0] = 1.0;
+  for (int m = 1; m < M; ++m)
+  {
+    power[m] = power[this->MonomialParent[static_cast<std::size_t>(m)]] *
+      delta[this->MonomialAxis[static_cast<std::size_t>(m)]];
+  }
+  double lambdaPower[kMaxDegree + 1];
+  lambdaPower[0] = 1.0;
+  for (int n = 1; n <= this->Degree; ++n)
+  {
+    lambdaPower[n] = 0.5 * lambdaPower[n - 1];
+  }
+  std::fill_n(local, static_cast<std::size_t>(M * kComponents), 0.0);
+  for (std::size_t t = 0; t < this->ShiftTerms.size();)
+  {
+    const int alpha = this->ShiftTerms[t].alpha;
+    const double scale = lambdaPower[this->ShiftTerms[t].alphaDegree];
+    Components sum = {};
+    for (; t < this->ShiftTerms.size() && this->ShiftTerms[t].alpha == alpha; ++t)
+    {
+      const ShiftTerm& term = this->ShiftTerms[t];
+      sum.add(term.binomial * power[term.beta], parent + term.gamma * kComponents);
+    }
+    sum.addTo(scale, local + alpha * kComponents);
+  }
+}
+
+// sums[c * L + l] += the local polynomial at lane l's point.
+BOOSTED_TREE_CLONES
+void GeneratorTree::addLocal(const double* local, const double* center, double radius, const double* p,
+                             double* sums) const
+{
+  const int M = this->MomentCount;
+  const double inverse = 1.0 / radius;
+  alignas(64) double y[3][L], power[kMaxMomentsOfDegree][L];
+  for (int l = 0; l < L; ++l)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      y[k][l] = (p[k * L + l] - center[k]) * inverse;
+    }
+    power[0][l] = 1.0;
+  }
+  for (int m = 1; m < M; ++m)
+  {
+    const double* from = power[this->MonomialParent[static_cast<std::size_t>(m)]];
+    const double* axis = y[this->MonomialAxis[static_cast<std::size_t>(m)]];
+    for (int l = 0; l < L; ++l)
+    {
+      power[m][l] = from[l] * axis[l];
+    }
+  }
+  alignas(64) double out[kComponents][L] = {};
+  for (int m = 0; m < M; ++m)
+  {
+    const double* coefficients = local + m * kComponents;
+    for (int c = 0; c < kComponents; ++c)
+    {
+      for (int l = 0; l < L; ++l)
+      {
+        out[c][l] += coefficients[c] * power[m][l];
+      }
+    }
+  }
+  for (int c = 0; c < kComponents; ++c)
+  {
+    for (int l = 0; l < L; ++l)
+    {
+      sums[c * L + l] += out[c][l];
+    }
+  }
+}
+} // namespace detail
+} // namespace cga
