@@ -46,7 +46,8 @@ set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "ParaView plugin and VTK classes for boost
 set(CPACK_PACKAGE_DESCRIPTION [[
 Point pairs of conformal geometric algebra, exponentiated into boosts,
 bend lines into circles and sweep circles into surfaces (P. Colapinto,
-Boosted Surfaces, 2014). VTK sources and a deformation filter, the Python
+Boosted Surfaces, 2014). VTK sources, a deformation filter and a filter
+that fits generators to a target shape (Ceres Solver), the Python
 package boostedsurfaces, and the ParaView plugin BoostedSurfaces (Sources
 and Filters > Boosted Surfaces), loaded automatically by ParaView 5.11.]])
 set(CPACK_STRIP_FILES ON)
@@ -56,11 +57,13 @@ set(CPACK_DEBIAN_PACKAGE_SECTION science)
 # dpkg-shlibdeps adds the libraries' packages: libc6, libstdc++6, ... and, from paraview's shlibs
 # file, paraview (>= <upstream>), paraview (<< <upstream>.). The rest is what no ELF file says: the
 # Python modules need ParaView's vtkmodules (python3-paraview, the same version) and the python3
-# whose minor version they were built for.
+# whose minor version they were built for. libceres3 (Ceres Solver, the fit filter's solver) is
+# named too although dpkg-shlibdeps finds it from libBoostedSurfacesFilters.so: the one library
+# outside Debian's ParaView stack that the package needs at run time, visible here.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}")
 set(CPACK_DEBIAN_PACKAGE_DEPENDS
-  "python3-paraview (>= ${boostedsurfaces_paraview_upstream}), python3-paraview (<< ${boostedsurfaces_paraview_upstream}.), python3 (>= ${boostedsurfaces_python_version}), python3 (<< ${Python3_VERSION_MAJOR}.${boostedsurfaces_python_next_minor})")
+  "libceres3, python3-paraview (>= ${boostedsurfaces_paraview_upstream}), python3-paraview (<< ${boostedsurfaces_paraview_upstream}.), python3 (>= ${boostedsurfaces_python_version}), python3 (<< ${Python3_VERSION_MAJOR}.${boostedsurfaces_python_next_minor})")
 # The shared libraries in /usr/lib: a shlibs file (so that packages built against them depend on
 # this version or later) and dpkg's ldconfig trigger (CMake/debian/triggers). CPack still writes
 # its postinst/postrm calling ldconfig, which it adds for every package with libraries in /usr/lib

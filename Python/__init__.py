@@ -2,6 +2,7 @@
 
     from boostedsurfaces import vtkBoostedSurfaceSource
     from boostedsurfaces import vtkPointPairDeformationFilter
+    from boostedsurfaces import vtkPointPairFitFilter    # generators fitted to a target shape
     from boostedsurfaces import vtkConformalOrbitSource  # orbits of exp(t B), torus knots
 """
 # The wrapped module depends on these VTK modules; importing them first makes the classes'

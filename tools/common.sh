@@ -11,8 +11,8 @@ JOBS="${JOBS:-$(nproc)}"
 # libraries, Xvfb for headless rendering, and the dev packages ParaView's CMake config looks for;
 # Qt's help tools for the plugin's help pages; for the plugin's GUI side, the packages that
 # ParaView's pqComponents and its VTK modules need from CMake (Qt5 OpenGL, HDF5, NetCDF, libxml2,
-# Boost); SLEEF for the kernel, mpmath for the accuracy test,
-# and file, which CPack's Debian generator runs on every packaged file.
+# Boost); SLEEF for the kernel, mpmath for the accuracy test, file, which CPack's Debian
+# generator runs on every packaged file, and Ceres Solver for the fit filter.
 DEBIAN_PACKAGES=(
   build-essential cmake git
   paraview paraview-dev python3-paraview python3-dev
@@ -26,6 +26,7 @@ DEBIAN_PACKAGES=(
   qtbase5-dev qttools5-dev qtxmlpatterns5-dev-tools
   libqt5opengl5-dev libhdf5-dev libnetcdf-dev libxml2-dev libboost-dev
   python3-mpmath libsleef-dev file
+  libceres-dev
 )
 
 log() { printf '\033[1m==> %s\033[0m\n' "$*"; }

@@ -9,7 +9,7 @@ import numpy
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import VTK_FLOAT, vtkDataArray
 from vtkmodules.vtkCommonDataModel import (vtkImageData, vtkPointSet, vtkPolyData,
-                                           vtkStructuredGrid, vtkUnstructuredGrid)
+                                           vtkStructuredGrid, vtkTable, vtkUnstructuredGrid)
 
 # vtkStreamingDemandDrivenPipeline::ExecuteDataEnd adds this array to every structured output of a
 # piece request with ghost levels; on an empty output (extent 0 -1 0 -1 0 -1) VTK 9.2's
@@ -84,6 +84,8 @@ def output_problems(output, own_errors, pipeline_errors, unchanged, finite_input
     algorithm), or the algorithm ran on what it got and its output must be valid."""
     if output is None:  # no output object at all (an input of the wrong type)
         return []
+    if isinstance(output, vtkTable):  # the fit filter's generator table
+        return table_problems(output, own_errors, pipeline_errors, unchanged, finite_inputs)
     points, cells = output.GetNumberOfPoints(), output.GetNumberOfCells()
     if own_errors:
         if points or cells:
@@ -123,3 +125,17 @@ def output_problems(output, own_errors, pipeline_errors, unchanged, finite_input
     problems += array_problems(output, output.GetPointData(), points, "point", finite_inputs)
     problems += array_problems(output, output.GetCellData(), cells, "cell", finite_inputs)
     return problems
+
+
+def table_problems(table, own_errors, pipeline_errors, unchanged, finite_inputs):
+    """output_problems for a vtkTable: no rows after an error, else every column as long as the
+    rows and, when the inputs were finite, finite."""
+    rows = table.GetNumberOfRows()
+    if own_errors:
+        if rows:
+            return [("error-but-output", "%d error(s) (%s) but the table has %d rows" % (
+                len(own_errors), own_errors[0].strip().splitlines()[-1][:200], rows))]
+        return []
+    if pipeline_errors and unchanged:
+        return []
+    return array_problems(table, table.GetRowData(), rows, "row", finite_inputs)

@@ -277,7 +277,8 @@ def mutation(rng, values, model, rows):
     if model.ports and roll < 0.47:
         port = rng.randrange(len(model.ports))
         required, optional = model.ports[port]
-        return ("SetInputDataObject", [port, data_spec(rng, values, required, optional, port > 0)])
+        return ("SetInputDataObject", [port, data_spec(rng, values, required, optional,
+                                                        port > 0 and optional)])
     if model.selections and roll < 0.57:
         # "Get<Name>ArraySelection.<Method>": the runner calls the getter, then the method. The
         # names are the ones fuzz_inputs gives arrays (of 1 to 4 components), and others.
@@ -300,9 +301,16 @@ def make_recipe(models, seed, trial):
     values = Values(rng, regime)
     rows = {row: None for row in model.lists}  # None: the class's own initial count
     calls = []
+    first = None
     for port, (required, optional) in enumerate(model.ports):
         if not optional or rng.random() < 0.5:
-            spec = data_spec(rng, values, required, optional, port > 0)
+            # A later optional port holds a few rows (generators); a later required one (the fit
+            # filter's target) is sized like the first, and half the time is the first's data
+            # (the same points: a fit to where the mesh already is).
+            spec = data_spec(rng, values, required, optional, port > 0 and optional)
+            if port > 0 and not optional and first is not None and rng.random() < 0.5:
+                spec = dict(first)
+            first = spec if port == 0 else first
             calls.append(("SetInputDataObject", [port, spec]))
     instance = model.cls()
     for row in rows:

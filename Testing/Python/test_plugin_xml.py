@@ -201,7 +201,8 @@ class PluginXmlTest(unittest.TestCase):
                         for value, words, constant in entries:
                             self.assertEqual(words.upper().replace(" ", "_"), constant)
                             self.assertEqual(getattr(cls, constant), int(value))
-        self.assertEqual(tables, 3)  # the deformation filter's, the dipole source's, the orbits'
+        # The deformation filter's, the dipole source's, the orbits', the fit filter's.
+        self.assertEqual(tables, 4)
 
 
 if __name__ == "__main__":

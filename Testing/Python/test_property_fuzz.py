@@ -268,7 +268,8 @@ def check_discovery(models):
     expected = {"vtkBoostedSurfaceSource": {}, "vtkCurvaturePatchSource": {"ControlPoint": 11},
                 "vtkDipoleFieldSource": {"Generator": 9}, "vtkHopfFibrationSource":
                 {"BasePoint": 2}, "vtkPointPairDeformationFilter": {"Generator": 9},
-                "vtkConformalOrbitSource": {"Generator": 9, "Seed": 3}}
+                "vtkConformalOrbitSource": {"Generator": 9, "Seed": 3},
+                "vtkPointPairFitFilter": {"Generator": 9}}
     problems = []
     for name, lists in expected.items():
         if name not in found:
@@ -286,6 +287,9 @@ def check_discovery(models):
     deformation = found.get("vtkPointPairDeformationFilter")
     if deformation and [optional for _, optional in deformation.ports] != [False, True]:
         problems.append("the deformation filter's ports: %s" % deformation.ports)
+    fit = found.get("vtkPointPairFitFilter")
+    if fit and [optional for _, optional in fit.ports] != [False, False, True]:
+        problems.append("the fit filter's ports: %s" % fit.ports)
     return problems
 
 

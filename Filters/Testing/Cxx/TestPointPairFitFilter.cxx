@@ -1,0 +1,545 @@
+// vtkPointPairFitFilter: recovering known generators from a synthetic deformation of a sphere
+// (the target made by vtkPointPairDeformationFilter, an independent path through the batch
+// kernel), a point-to-surface fit to a bumped sphere, a fit that cannot improve, progress and
+// abort, and bad input.
+#include "vtkPointPairFitFilter.h"
+
+#include "EventCounter.h"
+#include "ProgressLog.h"
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPointPairDeformationFilter.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
+#include "vtkTable.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace
+{
+// A latitude-longitude triangulated sphere of `radius(theta, phi)` about the origin: rings of
+// `longitudes` points at `latitudes - 1` latitudes, and the two poles.
+vtkSmartPointer<vtkPolyData> sphere(
+  int longitudes, int latitudes, const std::function<double(double, double)>& radius)
+{
+  const double pi = std::acos(-1.0);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  const auto add = [&](double theta, double phi) {
+    const double r = radius(theta, phi);
+    return points->InsertNextPoint(r * std::sin(phi) * std::cos(theta),
+      r * std::sin(phi) * std::sin(theta), r * std::cos(phi));
+  };
+  const vtkIdType north = add(0.0, 0.0);
+  for (int j = 1; j < latitudes; ++j)
+  {
+    for (int i = 0; i < longitudes; ++i)
+    {
+      add(2.0 * pi * i / longitudes, pi * j / latitudes);
+    }
+  }
+  const vtkIdType south = add(0.0, pi);
+  vtkNew<vtkCellArray> triangles;
+  const auto ring = [&](int j, int i) { return 1 + (j - 1) * longitudes + (i % longitudes); };
+  for (int i = 0; i < longitudes; ++i)
+  {
+    triangles->InsertNextCell({ north, ring(1, i), ring(1, i + 1) });
+    triangles->InsertNextCell({ south, ring(latitudes - 1, i + 1), ring(latitudes - 1, i) });
+    for (int j = 1; j + 1 < latitudes; ++j)
+    {
+      triangles->InsertNextCell({ ring(j, i), ring(j + 1, i), ring(j + 1, i + 1) });
+      triangles->InsertNextCell({ ring(j, i), ring(j + 1, i + 1), ring(j, i + 1) });
+    }
+  }
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(points);
+  mesh->SetPolys(triangles);
+  return mesh.GetPointer();
+}
+
+vtkSmartPointer<vtkPolyData> unitSphere(int longitudes = 24, int latitudes = 12)
+{
+  return sphere(longitudes, latitudes, [](double, double) { return 1.0; });
+}
+
+// A generator row: location, direction, weight, kind, pitch.
+struct Row
+{
+  double values[9];
+};
+
+// Four generators of three kinds, 0.4 to 0.5 outside the unit sphere: their deformation moves
+// the sphere's points by up to about 0.4.
+std::vector<Row> knownGenerators()
+{
+  return { { { 0.0, 0.0, 1.5, 0.0, 0.0, 1.0, 0.3, 0, 0 } },
+    { { 1.4, 0.3, 0.0, -1.0, 0.2, 0.0, -0.2, 0, 0 } },
+    { { 0.0, -0.6, -1.3, 0.3, 0.0, 1.0, 0.25, 1, 0 } },
+    { { -1.1, 0.9, 0.3, 1.0, 0.0, 0.0, 0.15, 3, 0 } } };
+}
+
+template <class Filter>
+void addRows(Filter* filter, const std::vector<Row>& rows)
+{
+  for (const Row& r : rows)
+  {
+    const double* v = r.values;
+    filter->AddGenerator(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]);
+  }
+}
+
+vtkSmartPointer<vtkPolyData> deformed(vtkPolyData* mesh, const std::vector<Row>& rows)
+{
+  vtkNew<vtkPointPairDeformationFilter> deformation;
+  deformation->SetInputData(mesh);
+  addRows(deformation.GetPointer(), rows);
+  deformation->Update();
+  vtkSmartPointer<vtkPolyData> out = vtkPolyData::SafeDownCast(deformation->GetOutput());
+  return out;
+}
+
+double fieldValue(vtkDataObject* data, const char* name)
+{
+  vtkDataArray* array = vtkDataArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(name));
+  return array ? array->GetComponent(0, 0) : std::nan("");
+}
+
+double largestResidual(vtkPolyData* output)
+{
+  vtkDataArray* residual = output->GetPointData()->GetArray("FitResidual");
+  double largest = -1.0;
+  for (vtkIdType i = 0; residual && i < residual->GetNumberOfTuples(); ++i)
+  {
+    largest = std::max(largest, residual->GetComponent(i, 0));
+  }
+  return largest;
+}
+
+TEST(PointPairFitFilter, RecoversKnownWeightsOfASyntheticDeformationOfASphere)
+{
+  for (int rule : { vtkPointPairFitFilter::EXACT, vtkPointPairFitFilter::PAPER })
+  {
+    vtkSmartPointer<vtkPolyData> mesh = unitSphere();
+    std::vector<Row> truth = knownGenerators();
+    vtkNew<vtkPointPairDeformationFilter> deformation;
+    deformation->SetInputData(mesh);
+    deformation->SetExponentialRule(rule);
+    addRows(deformation.GetPointer(), truth);
+    deformation->Update();
+    std::vector<Row> start = truth;
+    for (Row& r : start)
+    {
+      r.values[6] = 0.0; // the fit starts from zero weights: the identity
+    }
+    vtkNew<vtkPointPairFitFilter> fit;
+    fit->SetInputData(mesh);
+    fit->SetTargetData(deformation->GetOutput());
+    fit->SetExponentialRule(rule);
+    addRows(fit.GetPointer(), start);
+    EventCounter events(fit);
+    fit->Update();
+    EXPECT_EQ(events.errors, 0) << events.lastError;
+    EXPECT_EQ(events.warnings, 0) << events.lastWarning;
+    vtkTable* table = vtkTable::SafeDownCast(fit->GetOutputDataObject(2));
+    ASSERT_EQ(table->GetNumberOfRows(), 4);
+    vtkPolyData* glyphs = vtkPolyData::SafeDownCast(fit->GetOutputDataObject(1));
+    ASSERT_EQ(glyphs->GetNumberOfPoints(), 4);
+    for (int g = 0; g < 4; ++g)
+    {
+      EXPECT_NEAR(table->GetValueByName(g, "Weight").ToDouble(), truth[g].values[6], 1e-6)
+        << "rule " << rule << ", generator " << g;
+      EXPECT_EQ(table->GetValueByName(g, "Kind").ToDouble(), truth[g].values[7]);
+      EXPECT_EQ(glyphs->GetPointData()->GetArray("Weight")->GetComponent(g, 0),
+        table->GetValueByName(g, "Weight").ToDouble());
+    }
+    vtkPolyData* output = vtkPolyData::SafeDownCast(fit->GetOutput());
+    EXPECT_EQ(output->GetNumberOfPoints(), mesh->GetNumberOfPoints());
+    EXPECT_EQ(output->GetNumberOfPolys(), mesh->GetNumberOfPolys());
+    EXPECT_LE(largestResidual(output), 1e-10);
+    EXPECT_LE(fit->GetFinalRMS(), 1e-10);
+    EXPECT_GT(fit->GetInitialRMS(), 0.05);
+    EXPECT_TRUE(fit->GetImproved());
+    EXPECT_GT(fit->GetNumberOfIterations(), 0);
+    EXPECT_EQ(fieldValue(output, "FitFinalRMS"), fit->GetFinalRMS());
+    EXPECT_EQ(fieldValue(output, "FitInitialRMS"), fit->GetInitialRMS());
+    EXPECT_EQ(fieldValue(output, "FitIterations"), fit->GetNumberOfIterations());
+    EXPECT_EQ(fieldValue(output, "FitImproved"), 1.0);
+    auto* termination =
+      vtkStringArray::SafeDownCast(output->GetFieldData()->GetAbstractArray("FitTermination"));
+    ASSERT_NE(termination, nullptr);
+    EXPECT_EQ(termination->GetValue(0), fit->GetTerminationReason());
+    EXPECT_EQ(std::string(fit->GetTerminationReason()).rfind("CONVERGENCE", 0), 0u)
+      << fit->GetTerminationReason();
+
+    // The Generators output feeds the deformation filter, which then gives the fitted mesh.
+    vtkNew<vtkPointPairDeformationFilter> again;
+    again->SetInputData(mesh);
+    again->SetGeneratorsConnection(fit->GetOutputPort(1));
+    again->UseGeneratorWeightArrayOn();
+    again->SetExponentialRule(rule);
+    again->Update();
+    for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+    {
+      double a[3], b[3];
+      again->GetOutput()->GetPoint(i, a);
+      output->GetPoint(i, b);
+      EXPECT_EQ(a[0], b[0]);
+      EXPECT_EQ(a[1], b[1]);
+      EXPECT_EQ(a[2], b[2]);
+    }
+  }
+}
+
+TEST(PointPairFitFilter, RecoversLocationsAndDirections)
+{
+  vtkSmartPointer<vtkPolyData> mesh = unitSphere();
+  std::vector<Row> truth = { { { 0.0, 0.1, 1.3, 0.0, 0.2, 1.0, 0.4, 0, 0 } },
+    { { 1.2, 0.3, 0.0, -1.0, 0.2, 0.1, -0.3, 0, 0 } } };
+  vtkSmartPointer<vtkPolyData> target = deformed(mesh, truth);
+  std::vector<Row> start = truth;
+  const double offsets[6] = { 0.05, -0.04, 0.03, -0.05, 0.04, 0.06 };
+  for (std::size_t g = 0; g < start.size(); ++g)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      start[g].values[j] += offsets[3 * g + j];
+      start[g].values[3 + j] -= 0.5 * offsets[3 * g + j];
+    }
+  }
+  vtkNew<vtkPointPairFitFilter> fit;
+  fit->SetInputData(mesh);
+  fit->SetTargetData(target);
+  addRows(fit.GetPointer(), start);
+  fit->FitWeightsOff(); // a direction's length multiplies the weight: fit one of the two
+  fit->FitLocationsOn();
+  fit->FitDirectionsOn();
+  fit->Update();
+  vtkTable* table = vtkTable::SafeDownCast(fit->GetOutputDataObject(2));
+  ASSERT_EQ(table->GetNumberOfRows(), 2);
+  const char* columns[6] = { "X", "Y", "Z", "DirectionX", "DirectionY", "DirectionZ" };
+  for (int g = 0; g < 2; ++g)
+  {
+    for (int c = 0; c < 6; ++c)
+    {
+      EXPECT_NEAR(table->GetValueByName(g, columns[c]).ToDouble(), truth[g].values[c], 1e-6)
+        << "generator " << g << ", " << columns[c];
+    }
+    EXPECT_EQ(table->GetValueByName(g, "Weight").ToDouble(), truth[g].values[6]);
+  }
+  EXPECT_LE(fit->GetFinalRMS(), 1e-10);
+}
+
+// The radius of the bumped target: the unit sphere with a Gaussian bump of height 0.3 about the
+// north pole.
+double bumpedRadius(double, double phi)
+{
+  return 1.0 + 0.3 * std::exp(-phi * phi / 0.25);
+}
+
+TEST(PointPairFitFilter, PointToSurfaceFitOfASphereToABumpedTargetReducesTheDistance)
+{
+  vtkSmartPointer<vtkPolyData> mesh = unitSphere();
+  vtkSmartPointer<vtkPolyData> target = sphere(64, 32, bumpedRadius);
+  vtkNew<vtkPointPairFitFilter> fit;
+  fit->SetInputData(mesh);
+  fit->SetTargetData(target);
+  fit->SetTargetModeToPointToSurface();
+  // Three point pairs inside the sphere on the bump's axis, aimed along it: their weights and
+  // locations are fitted.
+  fit->AddGenerator(0.0, 0.0, 0.9, 0.0, 0.0, 1.0, 0.0);
+  fit->AddGenerator(0.0, 0.0, 0.6, 0.0, 0.0, 1.0, 0.0);
+  fit->AddGenerator(0.0, 0.0, 0.3, 0.0, 0.0, 1.0, 0.0);
+  fit->FitLocationsOn();
+  EventCounter events(fit);
+  fit->Update();
+  EXPECT_EQ(events.errors, 0) << events.lastError;
+  const double before = fit->GetInitialRMS(), after = fit->GetFinalRMS();
+  std::cout << "point-to-surface: RMS distance " << before << " -> " << after << " ("
+            << 100.0 * (1.0 - after / before) << " % less) in " << fit->GetNumberOfIterations()
+            << " iterations: " << fit->GetTerminationReason() << "\n";
+  EXPECT_GT(before, 0.02);
+  EXPECT_LE(after, 0.1 * before);
+  // The output's FitResidual is the distance of its points to the target.
+  vtkPolyData* output = vtkPolyData::SafeDownCast(fit->GetOutput());
+  double sum = 0.0;
+  vtkDataArray* residual = output->GetPointData()->GetArray("FitResidual");
+  ASSERT_NE(residual, nullptr);
+  for (vtkIdType i = 0; i < residual->GetNumberOfTuples(); ++i)
+  {
+    sum += residual->GetComponent(i, 0) * residual->GetComponent(i, 0);
+  }
+  EXPECT_NEAR(std::sqrt(sum / residual->GetNumberOfTuples()), after, 1e-12);
+}
+
+// Five points (x, 0, 0.5 i), double precision, no cells.
+vtkSmartPointer<vtkPolyData> pointsAlongZ(double x)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (int i = 0; i < 5; ++i)
+  {
+    points->InsertNextPoint(x, 0.0, 0.5 * i);
+  }
+  vtkNew<vtkPolyData> data;
+  data->SetPoints(points);
+  return data.GetPointer();
+}
+
+TEST(PointPairFitFilter, AFitThatCannotImproveSaysSoAndReturnsTheInput)
+{
+  // Points on the axis of a rotation: no weight moves them, the gradient is 0.
+  vtkSmartPointer<vtkPolyData> mesh = pointsAlongZ(0.0);
+  vtkSmartPointer<vtkPolyData> target = pointsAlongZ(0.1);
+  vtkNew<vtkPointPairFitFilter> fit;
+  fit->SetInputData(mesh);
+  fit->SetTargetData(target);
+  fit->AddGenerator(0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.5, vtkPointPairFitFilter::ROTATION, 0.0);
+  EventCounter events(fit);
+  fit->Update();
+  EXPECT_EQ(events.errors, 0) << events.lastError;
+  EXPECT_EQ(events.warnings, 1);
+  EXPECT_NE(events.lastWarning.find("could not improve"), std::string::npos) << events.lastWarning;
+  EXPECT_FALSE(fit->GetImproved());
+  EXPECT_EQ(fit->GetFinalRMS(), fit->GetInitialRMS());
+  EXPECT_NEAR(fit->GetInitialRMS(), 0.1, 1e-15);
+  // The output is the initial generators' deformation: the input, to the rounding of the turn.
+  vtkPolyData* output = vtkPolyData::SafeDownCast(fit->GetOutput());
+  ASSERT_EQ(output->GetNumberOfPoints(), 5);
+  vtkSmartPointer<vtkPolyData> initial =
+    deformed(mesh, { { { 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.5, 1, 0.0 } } });
+  for (vtkIdType i = 0; i < 5; ++i)
+  {
+    double a[3], b[3], c[3];
+    output->GetPoint(i, a);
+    initial->GetPoint(i, b);
+    mesh->GetPoint(i, c);
+    for (int j = 0; j < 3; ++j)
+    {
+      EXPECT_EQ(a[j], b[j]);
+      EXPECT_NEAR(a[j], c[j], 1e-15);
+    }
+  }
+  vtkTable* table = vtkTable::SafeDownCast(fit->GetOutputDataObject(2));
+  ASSERT_EQ(table->GetNumberOfRows(), 1);
+  EXPECT_EQ(table->GetValueByName(0, "Weight").ToDouble(), 0.5); // the initial generator
+  EXPECT_EQ(fieldValue(output, "FitImproved"), 0.0);
+}
+
+TEST(PointPairFitFilter, RegularizationKeepsTheWeightsNearTheirStart)
+{
+  vtkSmartPointer<vtkPolyData> mesh = unitSphere();
+  std::vector<Row> truth = knownGenerators();
+  vtkSmartPointer<vtkPolyData> target = deformed(mesh, truth);
+  double previous = 0.0;
+  for (double lambda : { 0.0, 1e-3, 1e-1 })
+  {
+    std::vector<Row> start = truth;
+    for (Row& r : start)
+    {
+      r.values[6] = 0.0;
+    }
+    vtkNew<vtkPointPairFitFilter> fit;
+    fit->SetInputData(mesh);
+    fit->SetTargetData(target);
+    addRows(fit.GetPointer(), start);
+    fit->SetRegularizationWeight(lambda);
+    fit->Update();
+    vtkTable* table = vtkTable::SafeDownCast(fit->GetOutputDataObject(2));
+    double norm2 = 0.0;
+    for (int g = 0; g < 4; ++g)
+    {
+      norm2 += std::pow(table->GetValueByName(g, "Weight").ToDouble(), 2);
+    }
+    // The minimum of RMS^2 + lambda |w|^2: larger lambda, smaller weights and a larger RMS.
+    if (lambda > 0.0)
+    {
+      EXPECT_LT(norm2, previous) << "lambda " << lambda;
+      EXPECT_GT(fit->GetFinalRMS(), 1e-6) << "lambda " << lambda;
+    }
+    previous = norm2;
+  }
+}
+
+TEST(PointPairFitFilter, WeightRangeBoundsTheWeights)
+{
+  vtkSmartPointer<vtkPolyData> mesh = unitSphere();
+  vtkSmartPointer<vtkPolyData> target =
+    deformed(mesh, { { { 0.0, 0.0, 1.3, 0.0, 0.0, 1.0, 0.3, 0, 0 } } });
+  vtkNew<vtkPointPairFitFilter> fit;
+  fit->SetInputData(mesh);
+  fit->SetTargetData(target);
+  fit->AddGenerator(0.0, 0.0, 1.3, 0.0, 0.0, 1.0, 0.0);
+  fit->SetWeightRange(-0.1, 0.1);
+  fit->Update();
+  vtkTable* table = vtkTable::SafeDownCast(fit->GetOutputDataObject(2));
+  EXPECT_EQ(table->GetValueByName(0, "Weight").ToDouble(), 0.1); // on the bound
+  EXPECT_GT(fit->GetFinalRMS(), 1e-3);
+  EXPECT_LT(fit->GetFinalRMS(), fit->GetInitialRMS());
+}
+
+TEST(PointPairFitFilter, PointWeightsSelectThePointsThatCount)
+{
+  // Half of the target is the known deformation, the other half is far off; weighting the other
+  // half 0 recovers the weights exactly from the first half.
+  vtkSmartPointer<vtkPolyData> mesh = unitSphere();
+  vtkSmartPointer<vtkPolyData> target = deformed(mesh, knownGenerators());
+  vtkNew<vtkDoubleArray> weights;
+  weights->SetName("Trust");
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    const bool spoiled = i % 2 == 1;
+    weights->InsertNextValue(spoiled ? 0.0 : 2.0);
+    if (spoiled)
+    {
+      double p[3];
+      target->GetPoint(i, p);
+      target->GetPoints()->SetPoint(i, p[0] + 0.5, p[1], p[2]);
+    }
+  }
+  mesh->GetPointData()->AddArray(weights);
+  std::vector<Row> start = knownGenerators();
+  for (Row& r : start)
+  {
+    r.values[6] = 0.0;
+  }
+  vtkNew<vtkPointPairFitFilter> fit;
+  fit->SetInputData(mesh);
+  fit->SetTargetData(target);
+  addRows(fit.GetPointer(), start);
+  fit->SetPointWeightArrayName("Trust");
+  EventCounter events(fit);
+  fit->Update();
+  EXPECT_EQ(events.errors, 0) << events.lastError;
+  vtkTable* table = vtkTable::SafeDownCast(fit->GetOutputDataObject(2));
+  for (int g = 0; g < 4; ++g)
+  {
+    EXPECT_NEAR(table->GetValueByName(g, "Weight").ToDouble(), knownGenerators()[g].values[6], 1e-6);
+  }
+  EXPECT_LE(fit->GetFinalRMS(), 1e-10);
+}
+
+TEST(PointPairFitFilter, ProgressPerIterationAndAbort)
+{
+  vtkSmartPointer<vtkPolyData> mesh = unitSphere();
+  vtkSmartPointer<vtkPolyData> target = deformed(mesh, knownGenerators());
+  {
+    vtkNew<vtkPointPairFitFilter> fit;
+    fit->SetInputData(mesh);
+    fit->SetTargetData(target);
+    fit->AddGenerator(0.0, 0.0, 1.3, 0.0, 0.0, 1.0, 0.0);
+    ProgressLog log;
+    log.Observe(fit);
+    fit->Update();
+    // One step per iteration (iteration 0, the start, included), then the executive's 1.
+    const std::vector<double> steps = log.Steps();
+    EXPECT_EQ(std::count_if(steps.begin(), steps.end(), [](double s) { return s < 1.0; }),
+      fit->GetNumberOfIterations() + 1);
+  }
+  {
+    vtkNew<vtkPointPairFitFilter> fit;
+    fit->SetInputData(mesh);
+    fit->SetTargetData(target);
+    fit->AddGenerator(0.0, 0.0, 1.3, 0.0, 0.0, 1.0, 0.0);
+    ProgressLog log;
+    log.abortAfterFirstStep = true;
+    log.Observe(fit);
+    fit->Update();
+    EXPECT_EQ(fit->GetOutput()->GetNumberOfPoints(), 0);
+    EXPECT_EQ(vtkTable::SafeDownCast(fit->GetOutputDataObject(2))->GetNumberOfRows(), 0);
+  }
+}
+
+// Every bad input: one error naming the problem, and empty outputs.
+TEST(PointPairFitFilter, BadInputGivesAClearErrorAndEmptyOutputs)
+{
+  vtkSmartPointer<vtkPolyData> mesh = unitSphere();
+  vtkSmartPointer<vtkPolyData> target = deformed(mesh, knownGenerators());
+  vtkSmartPointer<vtkPolyData> small = unitSphere(6, 4);
+  vtkNew<vtkPolyData> empty;
+  vtkSmartPointer<vtkPolyData> withNaN = unitSphere();
+  withNaN->GetPoints()->SetPoint(3, std::nan(""), 0.0, 0.0);
+  vtkNew<vtkPolyData> cloud; // points without cells
+  cloud->SetPoints(target->GetPoints());
+  struct Case
+  {
+    const char* what;
+    std::function<void(vtkPointPairFitFilter*)> setup;
+    const char* message;
+  };
+  const std::vector<Case> cases = {
+    { "mismatched point counts", [&](vtkPointPairFitFilter* f) { f->SetTargetData(small); },
+      "the mesh has" },
+    { "empty target", [&](vtkPointPairFitFilter* f) { f->SetTargetData(empty); }, "is empty" },
+    { "NaN mesh point", [&](vtkPointPairFitFilter* f) { f->SetInputData(withNaN); },
+      "NaN or infinite points" },
+    { "NaN target point", [&](vtkPointPairFitFilter* f) { f->SetTargetData(withNaN); },
+      "NaN or infinite points" },
+    { "no generators", [&](vtkPointPairFitFilter* f) { f->RemoveAllGenerators(); },
+      "no generators to fit" },
+    { "only zero directions",
+      [&](vtkPointPairFitFilter* f) {
+        f->RemoveAllGenerators();
+        f->AddGenerator(0, 0, 0, 0, 0, 0, 1);
+      },
+      "no generators to fit" },
+    { "nothing to fit", [&](vtkPointPairFitFilter* f) { f->FitWeightsOff(); }, "nothing to fit" },
+    { "surface without cells",
+      [&](vtkPointPairFitFilter* f) {
+        f->SetTargetData(cloud);
+        f->SetTargetModeToPointToSurface();
+      },
+      "no cells" },
+    { "missing weight array", [&](vtkPointPairFitFilter* f) { f->SetPointWeightArrayName("No"); },
+      "'No'" },
+    { "empty weight range", [&](vtkPointPairFitFilter* f) { f->SetWeightRange(1.0, -1.0); },
+      "WeightRange" },
+    { "start outside the range", [&](vtkPointPairFitFilter* f) { f->SetWeightRange(1.0, 2.0); },
+      "outside WeightRange" },
+    { "NaN strength", [&](vtkPointPairFitFilter* f) { f->SetStrength(std::nan("")); },
+      "Strength" },
+    { "NaN tolerance", [&](vtkPointPairFitFilter* f) { f->SetFunctionTolerance(std::nan("")); },
+      "tolerances" },
+    { "start at infinity",
+      [&](vtkPointPairFitFilter* f) {
+        f->RemoveAllGenerators();
+        // K = exp(-c tau(0, e3)) with c = Strength w / Epsilon = 1 maps x to
+        // (x - c e3 |x|^2) / (1 - 2 c x.e3 + c^2 |x|^2): the north pole (0, 0, 1) to infinity.
+        f->AddGenerator(0, 0, 0, 0, 0, 1, 1.0);
+        f->SetEpsilon(1.0);
+        f->SetFalloff(0.0);
+      },
+      "infinity" },
+  };
+  for (const Case& c : cases)
+  {
+    vtkNew<vtkPointPairFitFilter> fit;
+    fit->SetInputData(mesh);
+    fit->SetTargetData(target);
+    fit->AddGenerator(0.0, 0.0, 1.3, 0.0, 0.0, 1.0, 0.0);
+    c.setup(fit);
+    EventCounter events(fit);
+    fit->Update();
+    EXPECT_EQ(events.errors, 1) << c.what;
+    EXPECT_NE(events.lastError.find(c.message), std::string::npos)
+      << c.what << ": " << events.lastError;
+    EXPECT_EQ(fit->GetOutput()->GetNumberOfPoints(), 0) << c.what;
+    EXPECT_EQ(vtkPolyData::SafeDownCast(fit->GetOutputDataObject(1))->GetNumberOfPoints(), 0)
+      << c.what;
+    EXPECT_EQ(vtkTable::SafeDownCast(fit->GetOutputDataObject(2))->GetNumberOfRows(), 0)
+      << c.what;
+    EXPECT_TRUE(std::isnan(fit->GetFinalRMS())) << c.what;
+  }
+}
+} // namespace
