@@ -153,8 +153,11 @@ std::size_t PointPairField::mapPointsWithJacobians(const double* in, double* out
   return unchanged;
 }
 
-bool PointPairField::mapWithBivectorDerivative(
-  Vec3 p, double strength, ExponentialRule rule, Vec3& out, double* byBivector) const
+/// map() of p with d out / d b (byExponent[10 j + k] = d out_j / d b_k) for the exponent
+/// b = -strength B(p) about the field's center, as map() computes it: the one differentiation
+/// behind mapWithBivectorDerivative and mapWithWeightDerivatives.
+bool PointPairField::mapWithExponentDerivative(
+  Vec3 p, double strength, ExponentialRule rule, Vec3& out, double* byExponent) const
 {
   if (!isFinite(p))
   {
@@ -164,59 +167,6 @@ bool PointPairField::mapWithBivectorDerivative(
   const Vec3 c = this->Center;
   const double relative[3] = { p.x - c.x, p.y - c.y, p.z - c.z };
   const kernel::FieldArgs args = this->args(strength, rule);
-  // The value: b = -strength B(p) about the center, as map() computes it.
-  double b[kBivector];
-  core::fieldBivector(args, relative, -strength, b);
-  // The tangents: B in space as the seeds, moved to the center (translateBivector, linear in B:
-  // the seeds' values do not matter) and scaled by -strength; the value stays map()'s b.
-  Tangent seeds[kBivector], moved[kBivector], exponent[kBivector];
-  for (int k = 0; k < kBivector; ++k)
-  {
-    seeds[k] = core::variable<double, kBivector>(0.0, k);
-  }
-  const Tangent shift[3] = { core::constant<double, kBivector>(-c.x),
-    core::constant<double, kBivector>(-c.y), core::constant<double, kBivector>(-c.z) };
-  core::translateBivector(seeds, shift, moved);
-  for (int k = 0; k < kBivector; ++k)
-  {
-    exponent[k] = -strength * moved[k];
-    exponent[k].v = b[k];
-  }
-  Tangent xyz[3], image[3];
-  for (int i = 0; i < 3; ++i)
-  {
-    xyz[i] = core::constant<double, kBivector>(relative[i]);
-  }
-  bool mapped = false;
-  core::mapPointBy(args, exponent, xyz, image, &mapped);
-  if (!mapped || !finiteTangents(image, 3))
-  {
-    return false;
-  }
-  out = imageOf(p, relative, image);
-  for (int j = 0; j < 3; ++j)
-  {
-    for (int k = 0; k < kBivector; ++k)
-    {
-      byBivector[kBivector * j + k] = image[j].d[k];
-    }
-  }
-  return true;
-}
-
-bool PointPairField::mapWithWeightDerivatives(
-  Vec3 p, double strength, ExponentialRule rule, Vec3& out, double* derivatives) const
-{
-  if (!isFinite(p))
-  {
-    return false;
-  }
-  using Tangent = core::Dual<double, kBivector>;
-  const Vec3 c = this->Center;
-  const double relative[3] = { p.x - c.x, p.y - c.y, p.z - c.z };
-  const kernel::FieldArgs args = this->args(strength, rule);
-  // d out / d b for the exponent b = -strength B(p) about the center, then
-  // d b / d w_i = -strength G_i / (k |p - x_i|^2 + eps) (G_i about the center too).
   double b[kBivector];
   core::fieldBivector(args, relative, -strength, b);
   Tangent exponent[kBivector], xyz[3], image[3];
@@ -235,6 +185,56 @@ bool PointPairField::mapWithWeightDerivatives(
     return false;
   }
   out = imageOf(p, relative, image);
+  for (int j = 0; j < 3; ++j)
+  {
+    for (int k = 0; k < kBivector; ++k)
+    {
+      byExponent[kBivector * j + k] = image[j].d[k];
+    }
+  }
+  return true;
+}
+
+bool PointPairField::mapWithBivectorDerivative(
+  Vec3 p, double strength, ExponentialRule rule, Vec3& out, double* byBivector) const
+{
+  double byExponent[3 * kBivector];
+  if (!this->mapWithExponentDerivative(p, strength, rule, out, byExponent))
+  {
+    return false;
+  }
+  // b = -strength (B in space moved to the center): translateBivector is linear in B, so
+  // d b / d B_k = -strength times the unit bivector e_k moved by -c.
+  const double shift[3] = { -this->Center.x, -this->Center.y, -this->Center.z };
+  for (int k = 0; k < kBivector; ++k)
+  {
+    double unit[kBivector] = {}, moved[kBivector];
+    unit[k] = 1.0;
+    core::translateBivector(unit, shift, moved);
+    for (int j = 0; j < 3; ++j)
+    {
+      double sum = 0.0;
+      for (int c = 0; c < kBivector; ++c)
+      {
+        sum += byExponent[kBivector * j + c] * moved[c];
+      }
+      byBivector[kBivector * j + k] = -strength * sum;
+    }
+  }
+  return true;
+}
+
+bool PointPairField::mapWithWeightDerivatives(
+  Vec3 p, double strength, ExponentialRule rule, Vec3& out, double* derivatives) const
+{
+  // d out / d b, then d b / d w_i = -strength G_i / (k |p - x_i|^2 + eps) (G_i about the center).
+  double byExponent[3 * kBivector];
+  if (!this->mapWithExponentDerivative(p, strength, rule, out, byExponent))
+  {
+    return false;
+  }
+  const Vec3 c = this->Center;
+  const double relative[3] = { p.x - c.x, p.y - c.y, p.z - c.z };
   for (std::size_t i = 0; i < this->Count; ++i)
   {
     const double* g = this->Generators.data() + i * kernel::kGeneratorStride;
@@ -246,7 +246,7 @@ bool PointPairField::mapWithWeightDerivatives(
       double sum = 0.0;
       for (int k = 0; k < kBivector; ++k)
       {
-        sum += image[j].d[k] * unit[k];
+        sum += byExponent[kBivector * j + k] * unit[k];
       }
       derivatives[3 * i + j] = sum * factor;
     }

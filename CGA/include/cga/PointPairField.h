@@ -243,6 +243,8 @@ public:
     Vec3 p, double strength, ExponentialRule rule, Vec3& out, double* derivatives) const;
 
 private:
+  bool mapWithExponentDerivative(
+    Vec3 p, double strength, ExponentialRule rule, Vec3& out, double* byExponent) const;
   void add(const FieldGenerator* generators, const GeneratorParameters* rows, std::size_t count);
   kernel::FieldArgs args(double strength, ExponentialRule rule) const;
   template <typename In, typename Out>
