@@ -33,6 +33,13 @@ bool finiteTangents(const core::Dual<double, N>* x, int count)
   return true;
 }
 
+/// The identity 3x3 (row-major): the derivative of a point the map leaves in place.
+void writeIdentity(double* jacobian)
+{
+  std::fill(jacobian, jacobian + 9, 0.0);
+  jacobian[0] = jacobian[4] = jacobian[8] = 1.0;
+}
+
 /// The image of p relative to the field's center (as map()): p plus the relative displacement.
 template <int N>
 Vec3 imageOf(Vec3 p, const double* relative, const core::Dual<double, N>* image)
@@ -52,8 +59,7 @@ bool PointPairField::mapWithJacobian(
   if (this->Count == 0 || strength == 0.0)
   {
     out = p;
-    std::fill(jacobian, jacobian + 9, 0.0);
-    jacobian[0] = jacobian[4] = jacobian[8] = 1.0;
+    writeIdentity(jacobian);
     return true;
   }
   using Tangent = core::Dual<double, 3>;
@@ -85,10 +91,6 @@ std::size_t PointPairField::mapPointsWithJacobians(const double* in, double* out
   std::size_t count, double strength, ExponentialRule rule) const
 {
   constexpr int L = kernel::kLanes;
-  const auto identity = [](double* j) {
-    std::fill(j, j + 9, 0.0);
-    j[0] = j[4] = j[8] = 1.0;
-  };
   if (this->Count == 0 || strength == 0.0)
   {
     std::size_t unchanged = 0;
@@ -97,7 +99,7 @@ std::size_t PointPairField::mapPointsWithJacobians(const double* in, double* out
       const double* p = in + 3 * i;
       unchanged += std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) ? 0 : 1;
       std::copy(p, p + 3, out + 3 * i);
-      identity(jacobians + 9 * i);
+      writeIdentity(jacobians + 9 * i);
     }
     return unchanged;
   }
@@ -131,12 +133,11 @@ std::size_t PointPairField::mapPointsWithJacobians(const double* in, double* out
       }
       if (!finite)
       {
-        // (in may be out: copy through temporaries)
-        const double x = p[0], y = p[1], z = p[2];
-        o[0] = x;
-        o[1] = y;
-        o[2] = z;
-        identity(j);
+        for (int k = 0; k < 3; ++k)
+        {
+          o[k] = p[k]; // (in may be out: then each coordinate onto itself)
+        }
+        writeIdentity(j);
         ++unchanged;
         continue;
       }
