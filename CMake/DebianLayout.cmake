@@ -39,10 +39,19 @@ foreach (library IN LISTS plugin_libraries)
   file(RPATH_SET FILE "${library}" NEW_RPATH "$ORIGIN/../../../..")
 endforeach ()
 
-# Auto-loading: ParaView loads every plugin folder of <folder of its executable>/plugins.
+# Auto-loading: ParaView loads every plugin folder of <folder of its executable>/plugins, the only
+# folder it searches without an environment variable; lintian's subdir-in-usr-bin for it is
+# overridden, with that reason (CMake/debian/lintian-overrides).
 file(MAKE_DIRECTORY "${usr}/bin/plugins")
 file(RELATIVE_PATH link_target "${usr}/bin/plugins" "${usr}/${plugin_dir}")
 file(CREATE_LINK "${link_target}" "${usr}/bin/plugins/BoostedSurfaces" SYMBOLIC)
+file(MAKE_DIRECTORY "${usr}/share/lintian/overrides")
+file(COPY_FILE "${CPACK_BOOSTEDSURFACES_DEBIAN_DIR}/lintian-overrides"
+  "${usr}/share/lintian/overrides/boostedsurfaces")
+
+# The copyright file (machine-readable, DEP-5): the holders, and that no licence is granted yet.
+file(COPY_FILE "${CPACK_BOOSTEDSURFACES_DEBIAN_DIR}/copyright"
+  "${usr}/share/doc/boostedsurfaces/copyright")
 
 # The changelog, as Debian's policy asks: gzip -9n (no name or time stamp in the header).
 find_program(gzip gzip REQUIRED)

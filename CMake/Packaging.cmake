@@ -6,11 +6,14 @@
 #   /usr/lib/python3/dist-packages/boostedsurfaces/                     `import boostedsurfaces`
 #   /usr/lib/libBoostedSurfaces*.so, /usr/include/boostedsurfaces/      the libraries and headers
 #   /usr/lib/cmake/BoostedSurfaces/                                     find_package(BoostedSurfaces)
-#   /usr/share/doc/boostedsurfaces/                                     README and docs
+#   /usr/share/doc/boostedsurfaces/                                     README, docs, changelog.gz,
+#                                                                       copyright (debian/copyright)
+#   /usr/share/lintian/overrides/boostedsurfaces                        debian/lintian-overrides
 # Debian's ParaView 5.11 reads no plugin configuration file of its own (no paraview.conf, and its
 # plugins/paraview.plugins.xml is not read); what it loads at start-up, in the GUI, pvpython,
 # pvbatch and pvserver alike, are the plugins in PV_PLUGIN_PATH and in <executable's folder>/plugins,
-# so the package links /usr/bin/plugins/BoostedSurfaces to the plugin's folder.
+# so the package links /usr/bin/plugins/BoostedSurfaces to the plugin's folder (lintian's
+# subdir-in-usr-bin, overridden with that reason).
 include_guard(GLOBAL)
 
 # The documentation (in `cmake --install`'s tree too).
@@ -79,6 +82,8 @@ set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
 configure_file("${CMAKE_CURRENT_LIST_DIR}/debian/changelog.in"
   "${CMAKE_BINARY_DIR}/debian/changelog" @ONLY)
 set(CPACK_BOOSTEDSURFACES_CHANGELOG "${CMAKE_BINARY_DIR}/debian/changelog")
+# The copyright file and the lintian overrides, copied into the package by DebianLayout.cmake.
+set(CPACK_BOOSTEDSURFACES_DEBIAN_DIR "${CMAKE_CURRENT_LIST_DIR}/debian")
 # Read by CMake/DebianLayout.cmake, which CPack runs on its staging tree before packing it.
 set(CPACK_PRE_BUILD_SCRIPTS "${CMAKE_CURRENT_LIST_DIR}/DebianLayout.cmake")
 set(CPACK_BOOSTEDSURFACES_PYTHON_DIR "${boostedsurfaces_python_destination}")

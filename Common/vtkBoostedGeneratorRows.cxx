@@ -1,5 +1,6 @@
 #include "vtkBoostedGeneratorRows.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace vtkBoostedGeneratorRows
@@ -39,5 +40,36 @@ bool Read(const double* row, const double location[3], int index, cga::Generator
   out.weight = row[6];
   out.pitch = row[PitchValue];
   return true;
+}
+
+const double* Selected(const double* row, int index, const Selection& selection,
+  double used[NumberOfValues])
+{
+  if (index != selection.Index)
+  {
+    return row;
+  }
+  std::copy(row, row + NumberOfValues, used);
+  for (int c = 0; c < 3; ++c)
+  {
+    used[c] = selection.Location[c];
+    if (selection.Aim)
+    {
+      used[3 + c] = selection.Tip[c] - selection.Location[c];
+    }
+  }
+  return used;
+}
+
+void PrintSelection(ostream& os, vtkIndent indent, const Selection& selection)
+{
+  auto vector3 = [&os](const double* v)
+  { os << "(" << v[0] << ", " << v[1] << ", " << v[2] << ")\n"; };
+  os << indent << "SelectedGenerator: " << selection.Index << "\n";
+  os << indent << "SelectedGeneratorLocation: ";
+  vector3(selection.Location);
+  os << indent << "AimSelectedGenerator: " << selection.Aim << "\n";
+  os << indent << "SelectedGeneratorTip: ";
+  vector3(selection.Tip);
 }
 } // namespace vtkBoostedGeneratorRows

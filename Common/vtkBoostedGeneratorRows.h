@@ -1,5 +1,6 @@
-// The one layout of a generator row, shared by vtkPointPairDeformationFilter,
-// vtkDipoleFieldSource and vtkConformalOrbitSource (their lists and ParaView tables): x, y, z, direction x, y, z, weight,
+// The one layout of a generator row, shared by vtkPointPairDeformationFilter, vtkPointPairFitFilter,
+// vtkDipoleFieldSource and vtkConformalOrbitSource (their lists and ParaView tables, and the row
+// their line widget selects): x, y, z, direction x, y, z, weight,
 // kind, pitch. A row given without its last two values (the 7-value AddGenerator/SetGenerator,
 // old scripts) is a point pair of pitch 0. The kind constants of the VTK classes are
 // cga::GeneratorKind's values (checked at compile time by vtkBoostedGeneratorKinds).
@@ -8,6 +9,7 @@
 
 #include "BoostedSurfacesCommonModule.h" // for export macro
 #include "vtkBoostedRowList.h"           // for vtkBoostedRowListMethods
+#include "vtkIndent.h"                   // for PrintSelection
 #include "cga/PointPairField.h"
 
 #include <string>
@@ -33,6 +35,27 @@ BOOSTEDSURFACESCOMMON_EXPORT bool ReadKind(double value, const std::string& what
 /// Row `row` of a list as the core's generator, at `location` (the row's own or the handle's).
 BOOSTEDSURFACESCOMMON_EXPORT bool Read(const double* row, const double location[3], int index, cga::GeneratorParameters& out,
   std::string& problem);
+
+/// The row that ParaView's *Selected Generator* line widget moves (its start) and aims (its end):
+/// each class's SelectedGenerator (-1: none), SelectedGeneratorLocation, AimSelectedGenerator
+/// and SelectedGeneratorTip.
+struct Selection
+{
+  int Index = -1;
+  const double* Location = nullptr;
+  bool Aim = false;
+  const double* Tip = nullptr;
+};
+
+/// Row `index` of a list as used: `row` itself, or, when it is the selected row, a copy in `used`
+/// at the selection's location and, when aimed, along Tip - Location (that length multiplies the
+/// weight, as a row's direction's). Returns `row` or `used`.
+BOOSTEDSURFACESCOMMON_EXPORT const double* Selected(
+  const double* row, int index, const Selection& selection, double used[NumberOfValues]);
+
+/// PrintSelf's lines for a class's selection properties.
+BOOSTEDSURFACESCOMMON_EXPORT void PrintSelection(
+  ostream& os, vtkIndent indent, const Selection& selection);
 } // namespace vtkBoostedGeneratorRows
 
 /// Checks at compile time that a VTK class numbers the kinds as cga::GeneratorKind does.

@@ -441,19 +441,17 @@ int vtkPointPairDeformationFilter::RequestData(
   }
   std::vector<cga::GeneratorParameters> generators(this->GetNumberOfGenerators());
   std::string problem;
+  const vtkBoostedGeneratorRows::Selection selection{ this->SelectedGenerator,
+    this->SelectedGeneratorLocation, this->AimSelectedGenerator, this->SelectedGeneratorTip };
   for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
   {
-    const double* location =
-      this->Generators->Location(i, this->SelectedGenerator, this->SelectedGeneratorLocation);
-    if (!vtkBoostedGeneratorRows::Read(
-          this->Generators->Row(i), location, i, generators[i], problem))
+    double used[vtkBoostedGeneratorRows::NumberOfValues];
+    const double* row =
+      vtkBoostedGeneratorRows::Selected(this->Generators->Row(i), i, selection, used);
+    if (!vtkBoostedGeneratorRows::Read(row, row, i, generators[i], problem))
     {
       vtkErrorMacro(<< problem);
       return 1; // the output stays empty
-    }
-    if (i == this->SelectedGenerator && this->AimSelectedGenerator)
-    {
-      generators[i].direction = cga::toVec3(this->SelectedGeneratorTip) - cga::toVec3(location);
     }
   }
   if (vtkPointSet* generatorSet = vtkPointSet::GetData(inputVector[1]))
@@ -631,12 +629,9 @@ void vtkPointPairDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   this->Generators->Print(os, indent);
-  os << indent << "SelectedGenerator: " << this->SelectedGenerator << "\n";
-  os << indent << "SelectedGeneratorLocation: (" << this->SelectedGeneratorLocation[0] << ", "
-     << this->SelectedGeneratorLocation[1] << ", " << this->SelectedGeneratorLocation[2] << ")\n";
-  os << indent << "AimSelectedGenerator: " << this->AimSelectedGenerator << "\n";
-  os << indent << "SelectedGeneratorTip: (" << this->SelectedGeneratorTip[0] << ", "
-     << this->SelectedGeneratorTip[1] << ", " << this->SelectedGeneratorTip[2] << ")\n";
+  vtkBoostedGeneratorRows::PrintSelection(os, indent,
+    { this->SelectedGenerator, this->SelectedGeneratorLocation, this->AimSelectedGenerator,
+      this->SelectedGeneratorTip });
   os << indent << "GeneratorDirectionArrayName: "
      << (this->GeneratorDirectionArrayName ? this->GeneratorDirectionArrayName : "(none)") << "\n";
   os << indent << "GeneratorWeightArrayName: "

@@ -581,17 +581,22 @@ int vtkPointPairFitFilter::RequestData(
     return 1;
   }
 
-  // The initial generators: the list, then the Generators input.
+  // The initial generators: the list (the selected row at its line widget), then the Generators
+  // input.
   if (!this->Generators->CheckForUpdate())
   {
     return 1;
   }
   std::vector<cga::GeneratorParameters> given(this->GetNumberOfGenerators());
   std::string problem;
+  const vtkBoostedGeneratorRows::Selection selection{ this->SelectedGenerator,
+    this->SelectedGeneratorLocation, this->AimSelectedGenerator, this->SelectedGeneratorTip };
   for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
   {
-    if (!vtkBoostedGeneratorRows::Read(
-          this->Generators->Row(i), this->Generators->Row(i), i, given[i], problem))
+    double used[vtkBoostedGeneratorRows::NumberOfValues];
+    const double* row =
+      vtkBoostedGeneratorRows::Selected(this->Generators->Row(i), i, selection, used);
+    if (!vtkBoostedGeneratorRows::Read(row, row, i, given[i], problem))
     {
       vtkErrorMacro(<< problem);
       return 1;
@@ -1001,6 +1006,9 @@ void vtkPointPairFitFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   this->Generators->Print(os, indent);
+  vtkBoostedGeneratorRows::PrintSelection(os, indent,
+    { this->SelectedGenerator, this->SelectedGeneratorLocation, this->AimSelectedGenerator,
+      this->SelectedGeneratorTip });
   const auto name = [](const char* s) { return s ? s : "(none)"; };
   os << indent << "GeneratorDirectionArrayName: " << name(this->GeneratorDirectionArrayName)
      << "\n";

@@ -120,6 +120,24 @@ public:
   ///@}
 
   ///@{
+  /// One initial generator of the list aimed and moved by itself (ParaView's line widget from its
+  /// location to its tip), as vtkPointPairDeformationFilter's: when SelectedGenerator is a valid
+  /// row index, that row starts at SelectedGeneratorLocation and, when AimSelectedGenerator is
+  /// on, along SelectedGeneratorTip - SelectedGeneratorLocation (its length multiplies the
+  /// weight). -1 (the default) selects none; defaults location (0, 0, 0), aim off, tip (0, 0, 1).
+  /// A non-finite location or (aimed) tip makes that row unusable, as a non-finite row value.
+  vtkSetClampMacro(SelectedGenerator, int, -1, VTK_INT_MAX);
+  vtkGetMacro(SelectedGenerator, int);
+  vtkSetVector3Macro(SelectedGeneratorLocation, double);
+  vtkGetVector3Macro(SelectedGeneratorLocation, double);
+  vtkSetMacro(AimSelectedGenerator, bool);
+  vtkGetMacro(AimSelectedGenerator, bool);
+  vtkBooleanMacro(AimSelectedGenerator, bool);
+  vtkSetVector3Macro(SelectedGeneratorTip, double);
+  vtkGetVector3Macro(SelectedGeneratorTip, double);
+  ///@}
+
+  ///@{
   /// The target (input 1): a vtkPointSet (see TargetMode).
   void SetTargetConnection(vtkAlgorithmOutput* output);
   void SetTargetData(vtkDataObject* data);
@@ -258,6 +276,10 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   std::unique_ptr<vtkBoostedRowList> Generators;
+  int SelectedGenerator = -1;
+  double SelectedGeneratorLocation[3] = { 0.0, 0.0, 0.0 };
+  bool AimSelectedGenerator = false;
+  double SelectedGeneratorTip[3] = { 0.0, 0.0, 1.0 };
   char* GeneratorDirectionArrayName = nullptr;
   char* GeneratorWeightArrayName = nullptr;
   char* GeneratorKindArrayName = nullptr;

@@ -1,5 +1,6 @@
 #include "BoostedSurfacesPanelFit.h"
 
+#include "HandleSizedToData.h"
 #include "pqActiveObjects.h"
 #include "pqApplicationCore.h"
 #include "pqCoreUtilities.h"
@@ -14,10 +15,14 @@
 #include <QHeaderView>
 #include <QMetaObject>
 #include <QPointer>
+#include <QStyle>
 #include <QTableView>
 #include <QTimer>
 #include <QVariant>
 #include <QWidget>
+
+#include <algorithm>
+#include <cmath>
 
 
 namespace
@@ -29,24 +34,37 @@ bool HasHint(vtkSMProxy* proxy, const char* name)
 }
 
 // The columns share the table's width instead of each taking its contents' width (ParaView's
-// ResizeToContents: the dipole field's 9 columns need 539 pixels), down to the header's minimum
-// section size (28 pixels here); longer labels and values are cut.
+// ResizeToContents: the dipole field's 9 columns need 539 pixels), down to one digit's width and
+// the header's margins (the style's minimum section, 15 pixels here, would keep the nine columns
+// wider than the 132 pixels of the default panel's table); longer labels and values are cut.
 void FitColumns(QTableView* table)
 {
   QHeaderView* header = table->horizontalHeader();
   header->setStretchLastSection(false); // else the last column keeps its contents' width
+  const int margin = header->style()->pixelMetric(QStyle::PM_HeaderMargin, nullptr, header);
+  const int digit = header->fontMetrics().horizontalAdvance(QLatin1Char('0'));
+  header->setMinimumSectionSize(std::min(header->minimumSectionSize(), digit + 2 * margin));
   header->setSectionResizeMode(QHeaderView::Stretch);
 }
 
-bool HasOutput(vtkSMProxy* proxy)
+// The diagonal of the first output's bounds; 0 before the first update (no bounds yet).
+double OutputDiagonal(vtkSMProxy* proxy)
 {
   auto* source = vtkSMSourceProxy::SafeDownCast(proxy);
   if (!source || source->GetNumberOfOutputPorts() == 0)
   {
-    return false;
+    return 0.0;
   }
   const double* bounds = source->GetDataInformation(0)->GetBounds();
-  return bounds[0] <= bounds[1];
+  if (!(bounds[0] <= bounds[1]))
+  {
+    return 0.0;
+  }
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  // A single point has bounds but no size: sized as data of diagonal 1.
+  return diagonal > 0.0 ? diagonal : 1.0;
 }
 }
 
@@ -114,20 +132,26 @@ void BoostedSurfacesPanelFit::fit(pqPipelineSource* source)
     {
       // By class name and Qt's meta-object system only: pqInteractivePropertyWidgetAbstract is in
       // pqApplicationComponents, which pvpython and pvserver (they load this plugin too) lack.
+      const double diagonal = OutputDiagonal(proxy);
       for (QWidget* widget : panel->findChildren<QWidget*>())
       {
-        if (!widget->inherits("pqInteractivePropertyWidgetAbstract") ||
-          widget->property("dataSource").value<pqSMProxy>())
+        if (!widget->inherits("pqInteractivePropertyWidgetAbstract"))
         {
-          continue; // not an interactive widget, or placed by ParaView from its group's Input
+          continue;
         }
-        QMetaObject::invokeMethod(widget, "setDataSource", Q_ARG(vtkSMProxy*, proxy));
-        // Placed once, when the first output exists; afterwards ParaView places it whenever
-        // the panel is selected.
-        if (HasOutput(proxy) && !widget->property("boostedSurfacesPlaced").toBool())
+        const vtkSMProxy* dataSource = widget->property("dataSource").value<pqSMProxy>();
+        if (!dataSource || dataSource == proxy)
         {
-          widget->setProperty("boostedSurfacesPlaced", true);
-          QMetaObject::invokeMethod(widget, "placeWidget");
+          // Not placed by ParaView from its group's Input: placed by this source's output.
+          QMetaObject::invokeMethod(widget, "setDataSource", Q_ARG(vtkSMProxy*, proxy));
+          // Placed once, when the first output exists; afterwards ParaView places it whenever
+          // the panel is selected.
+          if (diagonal > 0.0 && !widget->property("boostedSurfacesPlaced").toBool())
+          {
+            widget->setProperty("boostedSurfacesPlaced", true);
+            QMetaObject::invokeMethod(widget, "placeWidget");
+          }
+          HandleSizedToData::Attach(widget, diagonal); // handles only
         }
       }
     }

@@ -6,8 +6,8 @@
 //   stay a unit box. For such a proxy, every interactive widget whose group has no Input takes the
 //   proxy itself as its data source (pqInteractivePropertyWidgetAbstract::setDataSource) and is
 //   placed once its output exists; ParaView places it again whenever the panel is selected, as it
-//   does a filter's. (The handles have no size to set: ParaView's HandleWidgetRepresentation
-//   exposes none and its placeWidget() does nothing.)
+//   does a filter's. ParaView's handles have no size of their own in the world (their
+//   placeWidget() does nothing): HandleSizedToData sizes them to the source's output.
 // * Table columns that fit the panel (hint <TableColumnsFitPanel/>): the tables of repeated
 //   properties (the generator rows and the other lists) get columns that share the table's width
 //   (QHeaderView::Stretch) instead of ParaView's widths by contents, so all columns show in a

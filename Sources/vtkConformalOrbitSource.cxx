@@ -176,11 +176,18 @@ int vtkConformalOrbitSource::RequestData(
   else
   {
     problem = this->Generators->Problem();
+    // Row i as used: the selected row's location and (aimed) direction are the line widget's.
+    const vtkBoostedGeneratorRows::Selection selection{ this->SelectedGenerator,
+      this->SelectedGeneratorLocation, this->AimSelectedGenerator, this->SelectedGeneratorTip };
+    double used[vtkBoostedGeneratorRows::NumberOfValues];
+    auto rowAsUsed = [this, &selection, &used](int i) {
+      return vtkBoostedGeneratorRows::Selected(this->Generators->Row(i), i, selection, used);
+    };
     std::vector<cga::GeneratorParameters> kept;
     int ignored = 0;
     for (int i = 0; problem.empty() && i < this->Generators->GetNumberOfRows(); ++i)
     {
-      const double* row = this->Generators->Row(i);
+      const double* row = rowAsUsed(i);
       cga::GeneratorParameters generator;
       if (!finite(row, vtkBoostedGeneratorRows::NumberOfValues))
       {
@@ -202,7 +209,8 @@ int vtkConformalOrbitSource::RequestData(
     for (int i = 0; problem.empty() && i < this->Generators->GetNumberOfRows(); ++i)
     {
       cga::GeneratorParameters generator;
-      vtkBoostedGeneratorRows::Read(this->Generators->Row(i), this->Generators->Row(i), i, generator, problem);
+      const double* row = rowAsUsed(i);
+      vtkBoostedGeneratorRows::Read(row, row, i, generator, problem);
       glyphs.Add(generator);
     }
     // The mean as a sum of x_i / n (as cga::PointPairField's center): no overflow, and a lone
@@ -498,6 +506,9 @@ void vtkConformalOrbitSource::PrintSelf(ostream& os, vtkIndent indent)
   auto vector3 = [&os](const double* v) { os << "(" << v[0] << ", " << v[1] << ", " << v[2] << ")\n"; };
   os << indent << "GeneratorType: " << (this->GeneratorType == TORUS_KNOT ? "TORUS_KNOT" : "GENERATOR_LIST") << "\n";
   this->Generators->Print(os, indent);
+  vtkBoostedGeneratorRows::PrintSelection(os, indent,
+    { this->SelectedGenerator, this->SelectedGeneratorLocation, this->AimSelectedGenerator,
+      this->SelectedGeneratorTip });
   os << indent << "KnotP: " << this->KnotP << "\n";
   os << indent << "KnotQ: " << this->KnotQ << "\n";
   os << indent << "KnotCenter: ";

@@ -125,6 +125,24 @@ public:
   ///@}
 
   ///@{
+  /// GENERATOR_LIST: one row aimed and moved by itself (ParaView's line widget from its location to
+  /// its tip), as the deformation filter's: when SelectedGenerator is a valid row index, that row
+  /// is at SelectedGeneratorLocation and, when AimSelectedGenerator is on, its direction is
+  /// SelectedGeneratorTip - SelectedGeneratorLocation (its length multiplies the weight). -1 (the
+  /// default) selects none; defaults location (0, 0, 0), aim off, tip (0, 0, 1). A non-finite
+  /// location or (aimed) tip of the selected row is an error, as a non-finite row value.
+  vtkSetClampMacro(SelectedGenerator, int, -1, VTK_INT_MAX);
+  vtkGetMacro(SelectedGenerator, int);
+  vtkSetVector3Macro(SelectedGeneratorLocation, double);
+  vtkGetVector3Macro(SelectedGeneratorLocation, double);
+  vtkSetMacro(AimSelectedGenerator, bool);
+  vtkGetMacro(AimSelectedGenerator, bool);
+  vtkBooleanMacro(AimSelectedGenerator, bool);
+  vtkSetVector3Macro(SelectedGeneratorTip, double);
+  vtkGetVector3Macro(SelectedGeneratorTip, double);
+  ///@}
+
+  ///@{
   /// TORUS_KNOT: the integers P and Q (1 to 1000; 0 is an error), default (2, 3).
   vtkSetClampMacro(KnotP, int, 0, 1000);
   vtkGetMacro(KnotP, int);
@@ -225,6 +243,10 @@ protected:
 
   int GeneratorType = TORUS_KNOT;
   std::unique_ptr<vtkBoostedRowList> Generators;
+  int SelectedGenerator = -1;
+  double SelectedGeneratorLocation[3] = { 0.0, 0.0, 0.0 };
+  bool AimSelectedGenerator = false;
+  double SelectedGeneratorTip[3] = { 0.0, 0.0, 1.0 };
   int KnotP = 2;
   int KnotQ = 3;
   double KnotCenter[3] = { 0.0, 0.0, 0.0 };

@@ -184,6 +184,17 @@ std::string vtkDipoleFieldSource::Validate() const
       return "GeneratorsTranslation must be finite";
     }
   }
+  if (this->SelectedGenerator >= 0 && this->SelectedGenerator < this->GetNumberOfGenerators())
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      if (!std::isfinite(this->SelectedGeneratorLocation[c]) ||
+        (this->AimSelectedGenerator && !std::isfinite(this->SelectedGeneratorTip[c])))
+      {
+        return "SelectedGeneratorLocation and SelectedGeneratorTip must be finite";
+      }
+    }
+  }
   for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
   {
     for (int c = 0; c < this->Generators->GetNumberOfValuesPerRow(); ++c)
@@ -293,11 +304,7 @@ int vtkDipoleFieldSource::RequestData(
   std::vector<cga::GeneratorParameters> generators(this->GetNumberOfGenerators());
   for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
   {
-    const double* g = this->Generators->Row(i);
-    const double* t = this->GeneratorsTranslation;
-    const double location[3] = { g[0] + t[0], g[1] + t[1], g[2] + t[2] };
-    std::string problem;
-    vtkBoostedGeneratorRows::Read(g, location, i, generators[i], problem);
+    generators[i] = this->GeneratorAsUsed(i);
   }
   cga::DipoleField field(generators.data(), generators.size(), this->Falloff,
     this->Epsilon, vtkBoostedExponentialRule<vtkDipoleFieldSource>(this->ExponentialRule));
@@ -371,24 +378,36 @@ int vtkDipoleFieldSource::FillOutputPortInformation(int port, vtkInformation* in
   return this->Superclass::FillOutputPortInformation(port, info);
 }
 
+cga::GeneratorParameters vtkDipoleFieldSource::GeneratorAsUsed(int index) const
+{
+  double used[vtkBoostedGeneratorRows::NumberOfValues];
+  const double* row = vtkBoostedGeneratorRows::Selected(this->Generators->Row(index), index,
+    { this->SelectedGenerator, this->SelectedGeneratorLocation, this->AimSelectedGenerator,
+      this->SelectedGeneratorTip },
+    used);
+  const double* t = this->GeneratorsTranslation;
+  const double translated[3] = { row[0] + t[0], row[1] + t[1], row[2] + t[2] };
+  cga::GeneratorParameters generator;
+  std::string problem;
+  // The selected row stays at the line's start: GeneratorsTranslation does not move it.
+  const bool selected = row == used;
+  vtkBoostedGeneratorRows::Read(row, selected ? row : translated, index, generator, problem);
+  return generator; // the rows were validated
+}
+
 void vtkDipoleFieldSource::WriteGenerators(vtkInformationVector* outputVector)
 {
   vtkInformation* info = outputVector->GetInformationObject(1);
   vtkPolyData* output = vtkPolyData::GetData(info);
   if (vtkBoostedGeneratorGlyphs::OnFirstPiece(outputVector))
   {
-    // The rows as the field uses them: moved by GeneratorsTranslation, weights at this time.
+    // The rows as the field uses them, weights at this time.
     const double weightScale =
       vtkBoostedTimeSweep::Fraction(outputVector->GetInformationObject(0), this->NumberOfTimeSteps);
     vtkBoostedGeneratorGlyphs glyphs(vtkBoostedGeneratorGlyphs::KindAndPitch);
     for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
     {
-      const double* g = this->Generators->Row(i);
-      const double* t = this->GeneratorsTranslation;
-      const double location[3] = { g[0] + t[0], g[1] + t[1], g[2] + t[2] };
-      cga::GeneratorParameters generator;
-      std::string problem;
-      vtkBoostedGeneratorRows::Read(g, location, i, generator, problem); // validated rows
+      cga::GeneratorParameters generator = this->GeneratorAsUsed(i);
       generator.weight *= weightScale;
       glyphs.Add(generator);
     }
@@ -409,6 +428,9 @@ void vtkDipoleFieldSource::PrintSelf(ostream& os, vtkIndent indent)
   this->Generators->Print(os, indent);
   os << indent << "GeneratorsTranslation: (" << this->GeneratorsTranslation[0] << ", "
      << this->GeneratorsTranslation[1] << ", " << this->GeneratorsTranslation[2] << ")\n";
+  vtkBoostedGeneratorRows::PrintSelection(os, indent,
+    { this->SelectedGenerator, this->SelectedGeneratorLocation, this->AimSelectedGenerator,
+      this->SelectedGeneratorTip });
   os << indent << "Falloff: " << this->Falloff << "\n";
   os << indent << "Epsilon: " << this->Epsilon << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";

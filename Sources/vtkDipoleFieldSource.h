@@ -34,7 +34,8 @@
  * leaves the output empty).
  *
  * Bad input (a dimension < 1, a zero, negative or non-finite spacing, a non-finite origin,
- * GeneratorsTranslation, Falloff or Epsilon, a non-finite generator value, a kind that is none
+ * GeneratorsTranslation, Falloff or Epsilon, a non-finite generator value or selected generator
+ * location or tip, a kind that is none
  * of the five constants) gives an error and an empty output. A generator with a zero direction or weight contributes nothing. The field stays
  * finite at a generator on a grid point (Epsilon > 0); a single generator leaves its location
  * fixed. Where a boost sends a grid point to infinity the failed displacement is zero and a
@@ -42,8 +43,9 @@
  * huge weights would overflow it.
  *
  * Output 1, "Generators" (vtkBoostedGeneratorGlyphs, for glyphs): one vertex per row at its
- * location plus GeneratorsTranslation, point arrays "Direction", "Weight" (the row's weight times
- * the time sweep's factor), "Kind" and "Pitch"; on piece 0 only, empty after an error.
+ * location plus GeneratorsTranslation (the selected row at SelectedGeneratorLocation), point
+ * arrays "Direction", "Weight" (the row's weight times the time sweep's factor), "Kind" and
+ * "Pitch"; on piece 0 only, empty after an error.
  */
 #ifndef vtkDipoleFieldSource_h
 #define vtkDipoleFieldSource_h
@@ -55,6 +57,10 @@
 #include <memory> // for the generator list
 
 class vtkBoostedRowList;
+namespace cga
+{
+struct GeneratorParameters;
+}
 
 class BOOSTEDSURFACESSOURCES_EXPORT vtkDipoleFieldSource : public vtkImageAlgorithm
 {
@@ -120,6 +126,24 @@ public:
   ///@}
 
   ///@{
+  /// One generator of the list aimed and moved by itself (ParaView's line widget from its location
+  /// to its tip): when SelectedGenerator is a valid row index, that row is at
+  /// SelectedGeneratorLocation (where the line widget starts: GeneratorsTranslation does not move
+  /// it) and, when AimSelectedGenerator is on, its direction is SelectedGeneratorTip -
+  /// SelectedGeneratorLocation (its length, as a row's direction's, multiplies the weight). -1
+  /// (the default) selects none; defaults location (0, 0, 0), aim off, tip (1, 0, 0).
+  vtkSetClampMacro(SelectedGenerator, int, -1, VTK_INT_MAX);
+  vtkGetMacro(SelectedGenerator, int);
+  vtkSetVector3Macro(SelectedGeneratorLocation, double);
+  vtkGetVector3Macro(SelectedGeneratorLocation, double);
+  vtkSetMacro(AimSelectedGenerator, bool);
+  vtkGetMacro(AimSelectedGenerator, bool);
+  vtkBooleanMacro(AimSelectedGenerator, bool);
+  vtkSetVector3Macro(SelectedGeneratorTip, double);
+  vtkGetVector3Macro(SelectedGeneratorTip, double);
+  ///@}
+
+  ///@{
   /// Falloff k >= 0 and Epsilon > 0 of d^2 = k |p - x|^2 + Epsilon. Defaults 1 and 0.1.
   vtkSetClampMacro(Falloff, double, 0.0, 1e12);
   vtkGetMacro(Falloff, double);
@@ -170,6 +194,10 @@ protected:
   int Dimensions[3] = { 21, 21, 1 };
   std::unique_ptr<vtkBoostedRowList> Generators;
   double GeneratorsTranslation[3] = { 0.0, 0.0, 0.0 };
+  int SelectedGenerator = -1;
+  double SelectedGeneratorLocation[3] = { 0.0, 0.0, 0.0 };
+  bool AimSelectedGenerator = false;
+  double SelectedGeneratorTip[3] = { 1.0, 0.0, 0.0 };
   double Falloff = 1.0;
   double Epsilon = 0.1;
   double Tolerance = 0.0;
@@ -183,6 +211,9 @@ private:
 
   // Empty when the parameters are valid, otherwise what is wrong.
   std::string Validate() const;
+  // Row `index` (validated) as the field uses it: moved by GeneratorsTranslation, or the selected
+  // row at SelectedGeneratorLocation, aimed at SelectedGeneratorTip.
+  cga::GeneratorParameters GeneratorAsUsed(int index) const;
   // Output 1 after a successful update (on piece 0 only), with output 0's time.
   void WriteGenerators(vtkInformationVector* outputVector);
 };

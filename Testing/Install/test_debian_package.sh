@@ -49,6 +49,23 @@ if find "$root" -type f -exec grep -lF "$build_dir/" {} + | grep .; then
   fail "files of the package name the build tree"
 fi
 
+# The copyright file: machine-readable (DEP-5), the holders, and no licence granted (none chosen).
+copyright="$root/usr/share/doc/boostedsurfaces/copyright"
+[ -f "$copyright" ] || fail "the package has no /usr/share/doc/boostedsurfaces/copyright"
+for line in "Format: https://www.debian.org/doc/packaging-manuals/copyright-format/1.0/" \
+            "Copyright: 2026 The BoostedSurfaces developers" "No licence granted yet; all rights reserved."; do
+  grep -qxF -- "$line" <(sed 's/^ //' "$copyright") || fail "copyright lacks the line: $line"
+done
+# lintian, when installed: neither of the two tags this package answers (the copyright file; the
+# auto-load link, overridden with its reason) may be reported.
+if command -v lintian >/dev/null; then
+  lintian --tag-display-limit 0 "$deb" >"$work/lintian.log" 2>&1 || true
+  if grep -E "no-copyright-file|subdir-in-usr-bin|copyright-format|malformed-override|unused-override" "$work/lintian.log"; then
+    fail "lintian reports the tags above"
+  fi
+  echo "lintian: $(grep -c '^[EWIP]: ' "$work/lintian.log" || true) other tags (README, Debian package)"
+fi
+
 # Run from an unrelated folder, with no PV_PLUGIN_PATH or PYTHONPATH of the caller's.
 cd "$work"
 unset PV_PLUGIN_PATH PYTHONPATH LD_LIBRARY_PATH

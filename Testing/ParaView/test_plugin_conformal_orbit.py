@@ -17,6 +17,10 @@ failures = []
 source = ConformalOrbit()  # noqa: F821
 defaults = {
     "GeneratorType": "Torus Knot",
+    "SelectedGenerator": -1,
+    "SelectedGeneratorLocation": [0.0, 0.0, 0.0],
+    "AimSelectedGenerator": 0,
+    "SelectedGeneratorTip": [0.0, 0.0, 1.0],
     "KnotP": 2,
     "KnotQ": 3,
     "KnotCenter": [0.0, 0.0, 0.0],

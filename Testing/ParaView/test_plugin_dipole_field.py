@@ -18,6 +18,10 @@ source = DipoleField()  # noqa: F821
 defaults = {
     "GeneratorList": [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.5, 0.0, 0.0],
     "GeneratorsTranslation": [0.0, 0.0, 0.0],
+    "SelectedGenerator": -1,
+    "SelectedGeneratorLocation": [0.0, 0.0, 0.0],
+    "AimSelectedGenerator": 0,
+    "SelectedGeneratorTip": [1.0, 0.0, 0.0],
     "Origin": [-2.0, -2.0, 0.0],
     "Spacing": [0.2, 0.2, 1.0],
     "Dimensions": [21, 21, 1],
@@ -69,6 +73,25 @@ source.UpdatePipeline()
 magnitude = source.PointData["DisplacementDifferenceMagnitude"].GetRange()
 if not magnitude[1] > 0.1:
     failures.append("two generators: largest |a - b| is %g, expected > 0.1" % magnitude[1])
+
+# The line widget's properties: the selected row at the line's start (Generators Translation does
+# not move it), aimed at its end, gives the field of the table with that row written out.
+translation = [0.25, -0.5, 0.0]
+aimed = DipoleField(GeneratorList=[-1, 0, 0, 0, 1, 0, 0.35, 0, 0, 1, 0, 0, 1, 0, 0, 0.35, 0, 0],  # noqa: F821
+                    GeneratorsTranslation=translation, SelectedGenerator=1,
+                    SelectedGeneratorLocation=[0.5, 0.5, 0.0], AimSelectedGenerator=1,
+                    SelectedGeneratorTip=[0.5, 1.5, 0.0])
+written = DipoleField(GeneratorList=[-1, 0, 0, 0, 1, 0, 0.35, 0, 0,  # noqa: F821
+                                     0.25, 1.0, 0.0, 0, 1, 0, 0.35, 0, 0],
+                      GeneratorsTranslation=translation)
+fields = [servermanager.Fetch(proxy).GetPointData().GetArray("DisplacementSummedGenerators")
+          for proxy in (aimed, written)]
+difference = max(abs(fields[0].GetValue(i) - fields[1].GetValue(i))
+                 for i in range(fields[0].GetNumberOfValues()))
+print("selected and aimed generator vs the row written out: %g" % difference)
+if not difference < 1e-12:
+    failures.append("the selected, aimed generator differs from its row written out by %g"
+                    % difference)
 
 # Time steps: 0 .. 1, and the field at t = 0 is zero.
 source.NumberOfTimeSteps = 5

@@ -41,15 +41,18 @@ def largest_extent(*ports):
 failures = []
 view = simple.GetActiveViewOrCreate("RenderView")
 sphere = simple.Sphere()
+deformed = PointPairDeformation(Input=sphere)  # noqa: F821
+# label: (proxy, Generators port, number of ports, output 0's representation)
 proxies = {
-    "Dipole Field": (DipoleField(), 1, "Slice"),  # noqa: F821
-    "Curvature Patch": (CurvaturePatch(), 1, "Surface"),  # noqa: F821
-    "Hopf Fibration": (HopfFibration(), 1, "Surface"),  # noqa: F821
-    "Conformal Orbit": (ConformalOrbit(), 2, "Surface"),  # noqa: F821
-    "Point Pair Deformation": (PointPairDeformation(Input=sphere), 1, "Surface"),  # noqa: F821
+    "Dipole Field": (DipoleField(), 1, 2, "Slice"),  # noqa: F821
+    "Curvature Patch": (CurvaturePatch(), 1, 2, "Surface"),  # noqa: F821
+    "Hopf Fibration": (HopfFibration(), 1, 2, "Surface"),  # noqa: F821
+    "Conformal Orbit": (ConformalOrbit(), 2, 3, "Surface"),  # noqa: F821
+    "Point Pair Deformation": (deformed, 1, 2, "Surface"),
+    "Point Pair Fit": (PointPairFit(Input=sphere, Target=deformed), 1, 3, "Surface"),  # noqa: F821
 }
-for label, (proxy, port, first) in proxies.items():
-    if proxy.GetNumberOfOutputPorts() != port + 1:
+for label, (proxy, port, ports, first) in proxies.items():
+    if proxy.GetNumberOfOutputPorts() != ports:
         failures.append("%s: %d output ports" % (label, proxy.GetNumberOfOutputPorts()))
         continue
     display = simple.Show(simple.OutputPort(proxy, port), view)

@@ -25,6 +25,8 @@ start[6] = start[15] = 0.0
 fit = PointPairFit(Input=sphere, Target=target)  # noqa: F821
 common.check_defaults(fit, {
     "GeneratorList": [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0],
+    "SelectedGenerator": -1, "SelectedGeneratorLocation": [0.0, 0.0, 0.0],
+    "AimSelectedGenerator": 0, "SelectedGeneratorTip": [0.0, 0.0, 1.0],
     "TargetMode": "Point To Point",
     "FitWeights": 1, "FitLocations": 0, "FitDirections": 0,
     "RegularizationWeight": 0.0, "WeightRange": [-1000.0, 1000.0],

@@ -241,6 +241,50 @@ TEST(PointPairFitFilter, RecoversLocationsAndDirections)
   EXPECT_LE(fit->GetFinalRMS(), 1e-10);
 }
 
+// The line widget's row (SelectedGenerator): the start moved and aimed by the widget gives the
+// fit of the list with that start written out, to the bit; the list itself is unchanged.
+TEST(PointPairFitFilter, TheSelectedInitialGeneratorStartsAtTheLineWidget)
+{
+  vtkSmartPointer<vtkPolyData> mesh = unitSphere();
+  std::vector<Row> truth = { { { 0.0, 0.1, 1.3, 0.0, 0.2, 1.0, 0.4, 0, 0 } } };
+  vtkSmartPointer<vtkPolyData> target = deformed(mesh, truth);
+  const double location[3] = { 0.05, 0.05, 1.35 };
+  const double tip[3] = { 0.05, 0.2, 2.3 };
+  std::vector<Row> written = { { { location[0], location[1], location[2], tip[0] - location[0],
+    tip[1] - location[1], tip[2] - location[2], 0.4, 0, 0 } } };
+  vtkNew<vtkPointPairFitFilter> selected, reference;
+  for (vtkPointPairFitFilter* fit : { selected.Get(), reference.Get() })
+  {
+    fit->SetInputData(mesh);
+    fit->SetTargetData(target);
+    fit->FitWeightsOff();
+    fit->FitLocationsOn();
+    fit->FitDirectionsOn();
+  }
+  addRows(selected.GetPointer(), truth);
+  selected->SetSelectedGenerator(0);
+  selected->SetSelectedGeneratorLocation(location);
+  selected->AimSelectedGeneratorOn();
+  selected->SetSelectedGeneratorTip(tip);
+  addRows(reference.GetPointer(), written);
+  selected->Update();
+  reference->Update();
+  vtkTable* a = vtkTable::SafeDownCast(selected->GetOutputDataObject(2));
+  vtkTable* b = vtkTable::SafeDownCast(reference->GetOutputDataObject(2));
+  ASSERT_EQ(a->GetNumberOfRows(), 1);
+  ASSERT_EQ(b->GetNumberOfRows(), 1);
+  for (const char* column : { "X", "Y", "Z", "DirectionX", "DirectionY", "DirectionZ", "Weight" })
+  {
+    EXPECT_EQ(a->GetValueByName(0, column).ToDouble(), b->GetValueByName(0, column).ToDouble())
+      << column;
+  }
+  EXPECT_EQ(selected->GetFinalRMS(), reference->GetFinalRMS());
+  EXPECT_GT(selected->GetInitialRMS(), 0.0);
+  double values[9];
+  ASSERT_TRUE(selected->GetGenerator(0, values));
+  EXPECT_EQ(values[2], 1.3);
+}
+
 // The radius of the bumped target: the unit sphere with a Gaussian bump of height 0.3 about the
 // north pole.
 double bumpedRadius(double, double phi)

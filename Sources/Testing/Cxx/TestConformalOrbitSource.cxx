@@ -203,6 +203,57 @@ TEST(ConformalOrbitSource, OnePointPairIsTheTransversionAboutItsLocation)
   EXPECT_EQ(vtkPolyData::SafeDownCast(source->GetOutputDataObject(1))->GetNumberOfPoints(), 0);
 }
 
+// The line widget's row: at SelectedGeneratorLocation and aimed at SelectedGeneratorTip, it gives
+// the orbits, cores and Generators port of a list whose row is written out there, with the
+// direction tip - location; the list itself is unchanged.
+TEST(ConformalOrbitSource, TheSelectedGeneratorIsAtTheLinesStartAndAimedAtItsEnd)
+{
+  const double location[3] = { 0.25, -0.5, 0.125 };
+  const double tip[3] = { 0.25, 0.5, 1.125 };
+  vtkNew<vtkConformalOrbitSource> selected, written;
+  for (vtkConformalOrbitSource* source : { selected.Get(), written.Get() })
+  {
+    source->SetGeneratorTypeToGeneratorList();
+    source->AddGenerator(0, 0, 0, 0, 0, 1, 1.0, vtkConformalOrbitSource::ROTATION, 0);
+    source->SetTResolution(40);
+  }
+  selected->AddGenerator(2, 0, 0, 1, 0, 0, 0.5);
+  selected->SetSelectedGenerator(1);
+  selected->SetSelectedGeneratorLocation(location);
+  selected->AimSelectedGeneratorOn();
+  selected->SetSelectedGeneratorTip(tip);
+  written->AddGenerator(location[0], location[1], location[2], tip[0] - location[0],
+    tip[1] - location[1], tip[2] - location[2], 0.5);
+  selected->Update();
+  written->Update();
+  for (int port = 0; port < 3; ++port)
+  {
+    auto* a = vtkPolyData::SafeDownCast(selected->GetOutputDataObject(port));
+    auto* b = vtkPolyData::SafeDownCast(written->GetOutputDataObject(port));
+    ASSERT_EQ(a->GetNumberOfPoints(), b->GetNumberOfPoints()) << "port " << port;
+    for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+    {
+      double p[3], q[3];
+      a->GetPoint(i, p);
+      b->GetPoint(i, q);
+      EXPECT_EQ(distance({ p[0], p[1], p[2] }, { q[0], q[1], q[2] }), 0.0) << "port " << port;
+    }
+  }
+  EXPECT_GT(selected->GetOutput()->GetNumberOfPoints(), 0);
+  auto* glyphs = vtkPolyData::SafeDownCast(selected->GetOutputDataObject(2));
+  ASSERT_EQ(glyphs->GetNumberOfPoints(), 2);
+  vtkDataArray* direction = glyphs->GetPointData()->GetArray("Direction");
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_EQ(glyphs->GetPoint(1)[c], location[c]);
+    EXPECT_EQ(direction->GetComponent(1, c), tip[c] - location[c]);
+  }
+  double values[9];
+  ASSERT_TRUE(selected->GetGenerator(1, values));
+  EXPECT_EQ(values[0], 2.0);
+  EXPECT_EQ(values[3], 1.0);
+}
+
 TEST(ConformalOrbitSource, GeneratorRowsOfEveryKindAreTheFieldAtStrengthT)
 {
   // exp(t B) with B = -sum w G is cga::PointPairField's boost exp(-t B(p)) without falloff (k 0,
@@ -421,6 +472,19 @@ TEST(ConformalOrbitSource, BadParametersGiveOneErrorAndEmptyOutputs)
       [](S* s) {
         s->SetGeneratorTypeToGeneratorList();
         s->AddGenerator(0, 0, 0, 1, 0, 0, 1, 7, 0); // no such kind
+      },
+      [=](S* s) {
+        s->SetGeneratorTypeToGeneratorList();
+        s->AddGenerator(0, 0, 0, 1, 0, 0, 1);
+        s->SetSelectedGenerator(0);
+        s->SetSelectedGeneratorLocation(0, nan, 0);
+      },
+      [=](S* s) {
+        s->SetGeneratorTypeToGeneratorList();
+        s->AddGenerator(0, 0, 0, 1, 0, 0, 1);
+        s->SetSelectedGenerator(0);
+        s->AimSelectedGeneratorOn();
+        s->SetSelectedGeneratorTip(inf, 0, 0);
       },
       [=](S* s) { s->SetSeedPoint(0, nan, 0); },
       [=](S* s) {

@@ -16,6 +16,7 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <gtest/gtest.h>
@@ -48,6 +49,24 @@ std::array<double, 3> closedForm(const double x[3], const double v[3], double w,
     out[i] = x[i] + (y[i] + u[i] * y2) / denominator - p[i];
   }
   return out;
+}
+
+// Every array of two fields, value by value, to `tolerance`.
+void expectEqualArrays(vtkImageData* a, vtkImageData* b, double tolerance)
+{
+  for (const char* name : ArrayNames)
+  {
+    vtkDataArray* x = a->GetPointData()->GetArray(name);
+    vtkDataArray* y = b->GetPointData()->GetArray(name);
+    ASSERT_EQ(x->GetNumberOfTuples(), y->GetNumberOfTuples()) << name;
+    for (vtkIdType id = 0; id < x->GetNumberOfTuples(); ++id)
+    {
+      for (int c = 0; c < x->GetNumberOfComponents(); ++c)
+      {
+        EXPECT_NEAR(x->GetComponent(id, c), y->GetComponent(id, c), tolerance) << name;
+      }
+    }
+  }
 }
 
 void addFig14Generators(vtkDipoleFieldSource* source)
@@ -296,6 +315,8 @@ TEST(DipoleFieldSource, BadInputGivesAnErrorAndAnEmptyOutput)
     NaNGenerator,
     NaNEpsilon,
     NaNTranslation,
+    NaNSelectedLocation,
+    InfiniteAimedTip,
     HugeDimensions,
     GridOverflowsFromTheOrigin,
     GridSpanOverflows,
@@ -315,6 +336,15 @@ TEST(DipoleFieldSource, BadInputGivesAnErrorAndAnEmptyOutput)
       case NaNGenerator: source->AddGenerator(1, 1, 0, nan, 0, 0, 1); break;
       case NaNEpsilon: source->SetEpsilon(nan); break;
       case NaNTranslation: source->SetGeneratorsTranslation(0, 0, nan); break;
+      case NaNSelectedLocation:
+        source->SetSelectedGenerator(0);
+        source->SetSelectedGeneratorLocation(nan, 0, 0);
+        break;
+      case InfiniteAimedTip:
+        source->SetSelectedGenerator(0);
+        source->AimSelectedGeneratorOn();
+        source->SetSelectedGeneratorTip(0, std::numeric_limits<double>::infinity(), 0);
+        break;
       // 8e27 points (their count overflows vtkIdType): refused before anything is allocated
       case HugeDimensions: source->SetDimensions(2000000000, 2000000000, 2000000000); break;
       // finite Origin and Spacing whose last grid point is not: 1.7e308 + 20 * 1e306
@@ -401,19 +431,57 @@ TEST(DipoleFieldSource, GeneratorsTranslationMovesEveryGenerator)
   placed->AddGenerator(-0.7, -0.4, 0.1, 0, 1, 0, 0.35);
   placed->AddGenerator(1.3, -0.4, 0.1, 1, 0, 0, 0.35);
   placed->Update();
-  for (const char* name : ArrayNames)
+  expectEqualArrays(moved->GetOutput(), placed->GetOutput(), 1e-13);
+}
+
+// The line widget's row: at SelectedGeneratorLocation (not moved by GeneratorsTranslation) and
+// aimed at SelectedGeneratorTip, it gives the field and the Generators port of a list whose row
+// is written out there (translated back), with the direction tip - location.
+TEST(DipoleFieldSource, TheSelectedGeneratorIsAtTheLinesStartAndAimedAtItsEnd)
+{
+  const double translation[3] = { 0.3, -0.4, 0.1 };
+  const double location[3] = { 0.6, 0.5, 0.0 };
+  const double tip[3] = { 0.2, 1.5, 0.5 };
+  vtkNew<vtkDipoleFieldSource> selected, written;
+  for (vtkDipoleFieldSource* source : { selected.Get(), written.Get() })
   {
-    vtkDataArray* a = moved->GetOutput()->GetPointData()->GetArray(name);
-    vtkDataArray* b = placed->GetOutput()->GetPointData()->GetArray(name);
-    ASSERT_EQ(a->GetNumberOfTuples(), b->GetNumberOfTuples());
-    for (vtkIdType id = 0; id < a->GetNumberOfTuples(); ++id)
-    {
-      for (int c = 0; c < a->GetNumberOfComponents(); ++c)
-      {
-        EXPECT_NEAR(a->GetComponent(id, c), b->GetComponent(id, c), 1e-13) << name;
-      }
-    }
+    source->RemoveAllGenerators();
+    source->SetGeneratorsTranslation(translation);
+    source->AddGenerator(-1, 0, 0, 0, 1, 0, 0.35);
   }
+  selected->AddGenerator(1, 0, 0, 1, 0, 0, 0.35);
+  selected->SetSelectedGenerator(1);
+  selected->SetSelectedGeneratorLocation(location);
+  selected->AimSelectedGeneratorOn();
+  selected->SetSelectedGeneratorTip(tip);
+  written->AddGenerator(location[0] - translation[0], location[1] - translation[1],
+    location[2] - translation[2], tip[0] - location[0], tip[1] - location[1], tip[2] - location[2],
+    0.35);
+  selected->Update();
+  written->Update();
+  expectEqualArrays(selected->GetOutput(), written->GetOutput(), 1e-13);
+  // The Generators port: the selected row at the line's start, along the line.
+  auto* glyphs = vtkPolyData::SafeDownCast(selected->GetOutputDataObject(1));
+  ASSERT_EQ(glyphs->GetNumberOfPoints(), 2);
+  double point[3];
+  glyphs->GetPoint(1, point);
+  vtkDataArray* direction = glyphs->GetPointData()->GetArray("Direction");
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_EQ(point[c], location[c]);
+    EXPECT_EQ(direction->GetComponent(1, c), tip[c] - location[c]);
+  }
+  // Without the aim the table's direction stays; the list itself is unchanged either way.
+  selected->AimSelectedGeneratorOff();
+  selected->Update();
+  glyphs = vtkPolyData::SafeDownCast(selected->GetOutputDataObject(1));
+  direction = glyphs->GetPointData()->GetArray("Direction");
+  EXPECT_EQ(direction->GetComponent(1, 0), 1.0);
+  EXPECT_EQ(direction->GetComponent(1, 1), 0.0);
+  double values[9];
+  ASSERT_TRUE(selected->GetGenerator(1, values));
+  EXPECT_EQ(values[0], 1.0);
+  EXPECT_EQ(values[3], 1.0);
 }
 
 // The README's DipolePotential, phi(p) = s sum_i w_i (v_i . (p - x_i)) / (|p - x_i|^2 + eps),
