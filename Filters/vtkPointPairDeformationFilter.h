@@ -207,9 +207,9 @@ public:
 
   ///@{
   /// The far-field approximation of B (cga::PointPairField::setTolerance): 0 (default) sums every
-  /// generator at every point; t > 0 sums far generators by a tree with B within t A(p) of the
-  /// direct sum at each point, A(p) = sum_i |w_i G_i|_max / (Falloff |p - x_i|^2 + Epsilon)
-  /// (README, "Many generators"). Values above 0.01 are used as 0.01; NaN or negative is an
+  /// generator at every point; t > 0 sums far generators by a tree that keeps each image's error,
+  /// to first order, within t times the field's displacement scale (README, "Many generators";
+  /// the bound is enforced at every point). Values above 1 are used as 1; NaN or negative is an
   /// error and gives an empty output. Fields of fewer than 10,000 generators always sum directly (the measured crossover).
   vtkSetMacro(Tolerance, double);
   vtkGetMacro(Tolerance, double);

@@ -153,8 +153,8 @@ public:
 
   ///@{
   /// Method (a)'s far-field approximation of B (cga::PointPairField::setTolerance): 0 (default)
-  /// is the direct sum; t > 0 keeps B within t A(p) of it, A(p) = sum_i |w_i G_i|_max / d_i^2.
-  /// Values above 0.01 are used as 0.01; NaN or negative is an error (empty output). Method (b)
+  /// is the direct sum; t > 0 keeps each displacement's error, to first order, within t times the
+  /// field's displacement scale. Values above 1 are used as 1; NaN or negative is an error (empty output). Method (b)
   /// stays exact. Fewer than 10,000 generators always sum directly.
   vtkSetMacro(Tolerance, double);
   vtkGetMacro(Tolerance, double);

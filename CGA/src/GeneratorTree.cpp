@@ -1,6 +1,7 @@
 #include "GeneratorTree.h"
 
 #include "cga/Compact.h"
+#include "cga/PointPairs.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,24 +17,21 @@ constexpr int L = kernel::kLanes;
 constexpr int kStride = kernel::kGeneratorStride;
 constexpr int kComponents = Bivector::Count;
 
-// The degree-P remainder bound times the share factor (1+q)^2 (GeneratorTree.h).
-double openingBound(int degree, double q)
+// The first-order motion bound of g in the frame of its node (GeneratorTree.h): with g's parts
+// there, translation C (e_i^ni), rotation E (e_i^e_j), dilation d (no^ni) and transversion A
+// (e_i^no), v_p(g) = 2 C' for C' the translation part of g moved to p, and with y = p - center
+//   C' = C - E y - d y + (1/2)|y|^2 A - (A.y) y  (docs/conventions.md section 2 item 12, t = -y),
+// |E y + d y| <= sqrt(|E|^2 + d^2) |y| (E y is orthogonal to y), |(1/2)|y|^2 A - (A.y) y| = |y|^2 |A|/2:
+//   |v_p(g)| <= 2 |C| + 2 sqrt(|E|^2 + d^2) |y| + |A| |y|^2.
+void addMotion(const Bivector& g, double* motion)
 {
-  const double p = static_cast<double>(degree);
-  return std::pow(q, p + 1.0) * ((p + 2.0) - (p + 1.0) * q) / ((1.0 - q) * (1.0 - q)) *
-    (1.0 + q) * (1.0 + q);
-}
-
-// The largest q with openingBound(degree, q) <= tolerance (the bound grows with q on [0, 1)).
-double largestOpening(int degree, double tolerance)
-{
-  double low = 0.0, high = 1.0;
-  for (int i = 0; i < 80; ++i)
-  {
-    const double mid = 0.5 * (low + high);
-    (openingBound(degree, mid) <= tolerance ? low : high) = mid;
-  }
-  return low;
+  const double* c = g.c.data();
+  motion[0] += 2.0 * std::sqrt(c[Bivector::E1NI] * c[Bivector::E1NI] + c[Bivector::E2NI] * c[Bivector::E2NI] +
+                               c[Bivector::E3NI] * c[Bivector::E3NI]);
+  motion[1] += 2.0 * std::sqrt(c[Bivector::E12] * c[Bivector::E12] + c[Bivector::E13] * c[Bivector::E13] +
+                               c[Bivector::E23] * c[Bivector::E23] + c[Bivector::NONI] * c[Bivector::NONI]);
+  motion[2] += std::sqrt(c[Bivector::E1NO] * c[Bivector::E1NO] + c[Bivector::E2NO] * c[Bivector::E2NO] +
+                         c[Bivector::E3NO] * c[Bivector::E3NO]);
 }
 
 double binomial(int n, int k)
@@ -73,14 +71,10 @@ GeneratorTree::GeneratorTree(const double* generators,
   : Falloff(falloff)
   , Epsilon(epsilon)
 {
-  // The largest degree: each use of a node takes the least degree its q needs (degreeFor), so a
-  // higher one costs only where it lets a larger node be used.
+  // The largest degree: each use of a node takes the least degree its budget allows (degreeFor),
+  // so a higher one costs only where it lets a larger node be used.
   this->Degree = kMaxDegree;
-  this->QLimit = largestOpening(this->Degree, tolerance);
-  for (int p = 0; p <= this->Degree; ++p)
-  {
-    this->DegreeLimit[p] = p == this->Degree ? this->QLimit : largestOpening(p, tolerance);
-  }
+  this->QLimit = kLargestOpening;
   const int P = this->Degree;
   // Monomials in graded order, each one power above a lower one.
   this->MonomialIndex.assign(static_cast<std::size_t>((P + 1) * (P + 1) * (P + 1)), -1);
@@ -195,7 +189,100 @@ GeneratorTree::GeneratorTree(const double* generators,
   {
     this->computeMoments(0);
   }
+  this->computeBudgets(tolerance);
   this->chooseCells();
+}
+
+// Each node's motion bound (its leaves' generators moved to the node's center; a parent's from
+// its children's, |p - c_child| <= l + |c - c_child|), the displacement scale V, and each node's
+// share of the budget t V: t V mass / (the root's mass).
+void GeneratorTree::computeBudgets(double tolerance)
+{
+  if (this->Nodes.empty())
+  {
+    return;
+  }
+  std::vector<double> masses(this->Nodes.size(), 0.0);
+  for (std::size_t index = this->Nodes.size(); index-- > 0;) // children (later in preorder) first
+  {
+    Node& node = this->Nodes[index];
+    if (node.children[0] < 0)
+    {
+      for (std::size_t i = node.first; i < node.first + node.count; ++i)
+      {
+        const double* g = this->Generators.data() + i * kStride;
+        Bivector b;
+        std::copy_n(g + 3, kComponents, b.c.data());
+        masses[index] += b.maxAbs();
+        addMotion(translatedBivector(b, { -node.center[0], -node.center[1], -node.center[2] }),
+                  node.motion);
+      }
+      continue;
+    }
+    for (int child : node.children)
+    {
+      const Node& c = this->Nodes[static_cast<std::size_t>(child)];
+      const double dx = c.center[0] - node.center[0], dy = c.center[1] - node.center[1],
+                   dz = c.center[2] - node.center[2];
+      const double delta = std::sqrt(dx * dx + dy * dy + dz * dz);
+      node.motion[0] += c.motion[0] + c.motion[1] * delta + c.motion[2] * delta * delta;
+      node.motion[1] += c.motion[1] + 2.0 * c.motion[2] * delta;
+      node.motion[2] += c.motion[2];
+      masses[index] += masses[static_cast<std::size_t>(child)];
+    }
+  }
+  // V: the direct sum's first-order displacement at the sample points.
+  const std::size_t count = this->Nodes[0].count;
+  const std::size_t sampleFrom = std::max<std::size_t>(1, count / kSampleShare);
+  double scale = 0.0;
+  for (const Node& node : this->Nodes)
+  {
+    if (node.count < sampleFrom)
+    {
+      continue;
+    }
+    Bivector b;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      const double* g = this->Generators.data() + i * kStride;
+      const double dx = node.center[0] - g[0], dy = node.center[1] - g[1], dz = node.center[2] - g[2];
+      const double factor = 1.0 / (this->Falloff * (dx * dx + dy * dy + dz * dz) + this->Epsilon);
+      for (int c = 0; c < kComponents; ++c)
+      {
+        b.c[static_cast<std::size_t>(c)] += factor * g[3 + c];
+      }
+    }
+    const Vec3 velocity = firstOrderMotion(b, { node.center[0], node.center[1], node.center[2] });
+    scale = std::max(scale, norm(velocity));
+  }
+  this->DisplacementScale = scale;
+  // Overflow (huge weights) or no displacement at the samples: every node is opened (NaN or 0).
+  const double factor = tolerance * scale / masses[0];
+  const bool usable = std::isfinite(factor) && factor > 0.0;
+  for (std::size_t index = 0; index < this->Nodes.size(); ++index)
+  {
+    this->Nodes[index].share = usable ? factor * masses[index] : 0.0;
+  }
+}
+
+int GeneratorTree::degreeFor(const Node& node, double q, double D, double reach) const
+{
+  if (!(q <= this->QLimit))
+  {
+    return -1;
+  }
+  const double motion = node.motion[0] + (node.motion[1] + node.motion[2] * reach) * reach;
+  // R_p(q) motion <= share D, with R_p(q) = q^(p+1) ((p+2) - (p+1) q)/(1-q)^2.
+  const double allowed = node.share * D * (1.0 - q) * (1.0 - q);
+  double power = q;
+  for (int p = 0; p <= this->Degree; ++p, power *= q)
+  {
+    if (power * ((p + 2.0) - (p + 1.0) * q) * motion <= allowed)
+    {
+      return p;
+    }
+  }
+  return -1;
 }
 
 // The target cells' lattice: leaves about kLeafShare of the widest cell usable at any distance
@@ -399,13 +486,18 @@ void GeneratorTree::addNear(const int* starts, std::size_t count, const double* 
       }
       const double dx = center[0] - node.center[0], dy = center[1] - node.center[1],
                    dz = center[2] - node.center[2];
-      const double nearest = std::max(0.0, std::sqrt(dx * dx + dy * dy + dz * dz) - radius);
+      const double distance = std::sqrt(dx * dx + dy * dy + dz * dz);
+      const double nearest = std::max(0.0, distance - radius);
       const double q = node.radius > 0.0
         ? node.radius * std::sqrt(this->Falloff / (this->Falloff * nearest * nearest + this->Epsilon))
         : 0.0;
-      if (q <= this->QLimit)
+      // Every point is within `radius` of `center`: at least `nearest` and at most
+      // distance + radius from the node's center.
+      const int degree = this->degreeFor(node, q, this->Falloff * nearest * nearest + this->Epsilon,
+                                         distance + radius);
+      if (degree >= 0)
       {
-        this->addMultipole(node, this->Moments.data() + node.moments, this->degreeFor(q), p, sums);
+        this->addMultipole(node, this->Moments.data() + node.moments, degree, p, sums);
       }
       else if (node.children[0] < 0)
       {

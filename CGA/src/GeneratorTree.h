@@ -7,11 +7,14 @@
 // For a point p, d = p - c, D = k |d|^2 + eps, kappa = k/D, u = sqrt(kappa) d, q = rho sqrt(kappa):
 //   1/(k |d - y|^2 + eps) = (1/D) sum_j D_j,  |D_j| <= (j + 1) q^j (Chebyshev U_j with |arg| <= 1),
 // so the degree-p truncation errs by at most (1/D) R_p(q), R_p(q) = q^(p+1) ((p+2) - (p+1) q)/(1-q)^2,
-// per generator. A node is used at the least degree p with R_p(q)(1+q)^2 <= tolerance (q at the
-// nearest possible distance): its error is then at most tolerance times its own share of
-// A(p) = sum_i |g_i|_max / (k |p - x_i|^2 + eps), and the total at most tolerance A(p). Nodes that
-// fail are opened; leaves are summed directly. The points' side (GeneratorTreeCells.cpp) uses
-// the same bound with the radius of a cube of points added to rho: the cube's local expansion.
+// per generator. The budget is the image's: to first order a change dB of B(p) moves the image
+// by s v_p(dB), v_p(h) = 2 x (the translation part of h moved to p), and
+// |v_p(g_i)| <= m0 + m1 |p - c| + m2 |p - c|^2 with g_i's parts in the node's frame (addMotion).
+// A node is used at the least degree p with R_p(q)/D (m0 + m1 l + m2 l^2) <= t V mass/totalMass
+// (l the farthest |p - c|, V the field's displacement scale per unit strength, mass the node's
+// sum of |g_i|_max): the used nodes' shares add up to at most t V at every point. Nodes that fail
+// are opened; leaves are summed directly. The points' side (GeneratorTreeCells.cpp) uses the same
+// test with the radius of a cube of points added to rho: the cube's local expansion.
 #pragma once
 
 #include "PointPairKernel.h"
@@ -62,10 +65,14 @@ public:
   double leafSide() const { return this->LeafSide; }
   int levels() const { return this->Levels; }
 
-  /// The moments' degree P (each use takes the least degree its q needs), and the largest q a
-  /// node is used at (at degree P).
+  /// The moments' degree P (each use takes the least degree its budget allows), and the largest
+  /// q a node is used at.
   int degree() const { return this->Degree; }
   double openingLimit() const { return this->QLimit; }
+  /// V: the field's displacement scale per unit strength, the largest first-order displacement
+  /// |v_p(B(p))| of the direct sum at the sample points (the centers of the nodes of at least
+  /// M/kSampleShare generators). The budget of every point is tolerance * V.
+  double displacementScale() const { return this->DisplacementScale; }
   /// Bytes held (the permuted generators, the nodes, the moments): O(M).
   std::size_t bytes() const;
 
@@ -76,6 +83,12 @@ public:
   static constexpr std::size_t kLeafSize = 32;
   /// A leaf cell's width over that of the widest cell usable at any distance.
   static constexpr double kLeafShare = 0.5;
+  /// The largest q a node is used at (the series converges for q < 1; its terms' bound grows
+  /// like (j + 1) q^j).
+  static constexpr double kLargestOpening = 0.5;
+  /// The displacement scale's sample points: the centers of the nodes of at least M/kSampleShare
+  /// generators (at most 2 kSampleShare of them).
+  static constexpr std::size_t kSampleShare = 64;
 
 private:
   struct Node
@@ -85,6 +98,11 @@ private:
     std::size_t first = 0, count = 0;
     int children[2] = { -1, -1 };
     long moments = -1; // offset in Moments, or -1: the node is summed directly
+    // sum_i |v_p(g_i)| <= motion[0] + motion[1] l + motion[2] l^2 for |p - center| <= l
+    // (addMotion in GeneratorTree.cpp), and the node's share of the budget, t V mass/totalMass
+    // with mass = sum_i |g_i|_max (0: the node is used only where it is exact, q = 0).
+    double motion[3] = { 0.0, 0.0, 0.0 };
+    double share = 0.0;
   };
   // One term of e_b(u) = sum coefficient u^a (Taylor coefficient of the kernel for moment b).
   struct Term
@@ -121,18 +139,12 @@ private:
   double Falloff, Epsilon;
   int Degree = 0;
   double QLimit = 0.0;
-  // DegreeLimit[p]: the largest q at which degree p meets the tolerance (p <= Degree), so that a
-  // node used at a smaller q is expanded to the least degree that suffices.
-  double DegreeLimit[kMaxDegree + 1] = {};
-  int degreeFor(double q) const
-  {
-    int p = 0;
-    while (p < this->Degree && q > this->DegreeLimit[p])
-    {
-      ++p;
-    }
-    return p;
-  }
+  double DisplacementScale = 0.0;
+  // The degree a node is used at, -1 where it is not usable: the least p <= Degree with
+  // R_p(q) (m0 + m1 l + m2 l^2) <= share D (nodes at q <= QLimit only). A NaN budget (overflow
+  // far away or with huge weights) opens the node.
+  int degreeFor(const Node& node, double q, double D, double reach) const;
+  void computeBudgets(double tolerance);
   std::vector<double> Factorial, InverseFactorial; // beta! = beta_0! beta_1! beta_2! per monomial
   std::vector<std::size_t> ShiftRuns; // ShiftTerms of alpha: [ShiftRuns[alpha], ShiftRuns[alpha + 1])
   std::vector<std::size_t> TermsOfDegree; // Terms[0, TermsOfDegree[p]) make e_beta for |beta| <= p

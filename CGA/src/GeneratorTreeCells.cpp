@@ -228,13 +228,15 @@ void GeneratorTree::evaluateCell(CellWork& work, int level, std::size_t first, s
     const double dx = center[0] - node.center[0], dy = center[1] - node.center[1],
                  dz = center[2] - node.center[2];
     const double distance = std::sqrt(dx * dx + dy * dy + dz * dz);
+    // A point of the cell is at most distance + radius from the node's center.
+    const double reach = distance + radius;
     if (node.moments >= 0)
     {
-      const double q = (node.radius + radius) *
-        std::sqrt(this->Falloff / (this->Falloff * distance * distance + this->Epsilon));
-      if (q <= this->QLimit)
+      const double D = this->Falloff * distance * distance + this->Epsilon;
+      const int degree = this->degreeFor(node, (node.radius + radius) * std::sqrt(this->Falloff / D), D, reach);
+      if (degree >= 0)
       {
-        this->addSourceToLocal(node, center, radius, this->degreeFor(q), local);
+        this->addSourceToLocal(node, center, radius, degree, local);
         hasLocal = true;
         continue;
       }
@@ -242,9 +244,9 @@ void GeneratorTree::evaluateCell(CellWork& work, int level, std::size_t first, s
     // Left whole for the cells below (or the leaf's points one by one) while the cell is the
     // larger of the two, or the node may be usable at the cell's nearest point; else opened.
     const double nearest = std::max(0.0, distance - radius);
+    const double nearestD = this->Falloff * nearest * nearest + this->Epsilon;
     const bool usableBelow = node.moments >= 0 &&
-      node.radius * std::sqrt(this->Falloff / (this->Falloff * nearest * nearest + this->Epsilon)) <=
-        this->QLimit;
+      this->degreeFor(node, node.radius * std::sqrt(this->Falloff / nearestD), nearestD, reach) >= 0;
     if (leaf || node.children[0] < 0 || node.moments < 0 || usableBelow || node.radius <= radius)
     {
       left.push_back(index);

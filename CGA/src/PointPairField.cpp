@@ -256,6 +256,11 @@ int PointPairField::treeDegree() const
   return this->Tree ? this->Tree->degree() : 0;
 }
 
+double PointPairField::treeDisplacementScale() const
+{
+  return this->Tree ? this->Tree->displacementScale() : 0.0;
+}
+
 Bivector PointPairField::generatorAt(Vec3 p) const
 {
   const Vec3 relative = p - this->Center;

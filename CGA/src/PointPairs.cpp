@@ -31,6 +31,12 @@ Bivector translatedBivector(const Bivector& b, Vec3 d)
   return (t * Even::fromBivector(b) * reverse(t)).bivector;
 }
 
+Vec3 firstOrderMotion(const Bivector& b, Vec3 p)
+{
+  const Bivector at = translatedBivector(b, -1.0 * p);
+  return { 2.0 * at[Bivector::E1NI], 2.0 * at[Bivector::E2NI], 2.0 * at[Bivector::E3NI] };
+}
+
 Bivector weightedSum(const Bivector* bivectors, const double* weights, std::size_t count)
 {
   Bivector sum;

@@ -160,12 +160,16 @@ public:
   Vec3 center() const { return this->Center; }
 
   /// The far-field approximation of B(p) (docs/conventions.md section 3 item 14): with a
-  /// tolerance t > 0, every B(p) that generatorAt, map and mapPoints compute is within
-  ///   t * A(p),  A(p) = sum_i |w_i G_i|_max / (k |p - x_i|^2 + eps),
-  /// of the direct sum in each component (|.|_max: the largest component), by a tree over the
-  /// generators whose remainder bound is enforced at every point, and local expansions about
-  /// cubes of a fixed lattice holding the points of a mapPoints call (so B(p) depends on p alone,
-  /// not on the call: map() of one point gives mapPoints' bits, but pays for a whole column of
+  /// tolerance t > 0, B(p) is summed by a tree over the generators whose error is bounded at
+  /// every point in the image's terms: to first order in the error dB of B(p), the image under
+  /// strength s moves by s firstOrderMotion(dB, p) (PointPairs.h), and the tree keeps
+  ///   |firstOrderMotion(B_tree(p) - B(p), p)| <= t V,
+  /// V = treeDisplacementScale(), the field's displacement scale per unit strength (the largest
+  /// first-order displacement |firstOrderMotion(B(x), x)| of the direct sum over sample points x
+  /// spread over the generators): the image errs by at most t times the displacement scale s V,
+  /// to first order, whatever s. generatorAt, map and mapPoints use it; local expansions about
+  /// cubes of a fixed lattice holding the points of a mapPoints call make B(p) depend on p alone,
+  /// not on the call (map() of one point gives mapPoints' bits, but pays for a whole column of
   /// cubes, and mapPoints should get many points at once). 0 (the default) is the
   /// direct sum. A tolerance above maximumTolerance() is used as maximumTolerance(). Returns false,
   /// changing nothing, for a NaN or negative tolerance. Fields of fewer than `minimumGenerators`
@@ -174,11 +178,13 @@ public:
   /// (treeBytes()).
   bool setTolerance(double tolerance, std::size_t minimumGenerators = treeMinimumGenerators());
   double tolerance() const { return this->Tolerance; }
-  static constexpr double maximumTolerance() { return 1e-2; }
+  static constexpr double maximumTolerance() { return 1.0; }
   static constexpr std::size_t treeMinimumGenerators() { return 10000; }
-  /// Bytes the tree holds (0 without one), and its expansion degree (0 without one).
+  /// Bytes the tree holds (0 without one), its expansion degree (0 without one), and V, the
+  /// displacement scale per unit strength its budget is relative to (0 without one).
   std::size_t treeBytes() const;
   int treeDegree() const;
+  double treeDisplacementScale() const;
 
   /// B(p).
   Bivector generatorAt(Vec3 p) const;

@@ -17,6 +17,11 @@ Bivector nullPointPairCompact(Vec3 location, Vec3 direction);
 /// b's largest component times |d|^2).
 Bivector translatedBivector(const Bivector& b, Vec3 d);
 
+/// The first-order motion of p under the bivector b: d/ds of fn(K up(p) ~K), K = exp(-s b), at
+/// s = 0. It is twice the translation part (e_i^ni) of b moved to p (translatedBivector(b, -p)):
+/// b's other parts leave p in place there (docs/conventions.md section 3 item 14).
+Vec3 firstOrderMotion(const Bivector& b, Vec3 p);
+
 /// sum_i weights[i] * bivectors[i].
 Bivector weightedSum(const Bivector* bivectors, const double* weights, std::size_t count);
 
