@@ -80,6 +80,40 @@ double scaledColumns(const double* jacobian, double columns[3][3])
 // Squared lengths in this range are computed and square-rooted without overflow or underflow.
 constexpr double SafeLow = 1e-280, SafeHigh = 1e280;
 
+// out = image scaled to the length of n, directly, when both squared lengths are in the safe
+// range (the common case); false otherwise (then the caller scales apart).
+bool withLengthOf(const double image[3], const double n[3], double out[3])
+{
+  const double n2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+  const double image2 = image[0] * image[0] + image[1] * image[1] + image[2] * image[2];
+  if (!(n2 > SafeLow && n2 < SafeHigh && image2 > SafeLow && image2 < SafeHigh))
+  {
+    return false;
+  }
+  const double factor = std::sqrt(n2 / image2);
+  for (int i = 0; i < 3; ++i)
+  {
+    out[i] = image[i] * factor;
+  }
+  return true;
+}
+
+// out = image scaled to length `size` through length(), which neither overflows nor underflows;
+// false when image is 0 or not finite.
+bool withLength(const double image[3], double size, double out[3])
+{
+  const double imageLength = length(image);
+  if (!(imageLength > 0.0) || !std::isfinite(imageLength))
+  {
+    return false;
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    out[i] = image[i] / imageLength * size;
+  }
+  return true;
+}
+
 // n' = |n| cof(J) n / |cof(J) n|; false when cof(J) n = 0 (n' then untouched).
 bool transformNormal(const double* jacobian, const double n[3], double out[3])
 {
@@ -97,15 +131,8 @@ bool transformNormal(const double* jacobian, const double n[3], double out[3])
     {
       image[i] = n[0] * c23[i] + n[1] * c31[i] + n[2] * c12[i];
     }
-    const double n2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-    const double image2 = image[0] * image[0] + image[1] * image[1] + image[2] * image[2];
-    if (n2 > SafeLow && n2 < SafeHigh && image2 > SafeLow && image2 < SafeHigh)
+    if (withLengthOf(image, n, out))
     {
-      const double factor = std::sqrt(n2 / image2);
-      for (int i = 0; i < 3; ++i)
-      {
-        out[i] = image[i] * factor;
-      }
       return true;
     }
   }
@@ -132,16 +159,7 @@ bool transformNormal(const double* jacobian, const double n[3], double out[3])
   {
     image[i] = m[0] * c23[i] + m[1] * c31[i] + m[2] * c12[i];
   }
-  const double imageLength = length(image);
-  if (!(imageLength > 0.0) || !std::isfinite(imageLength))
-  {
-    return false;
-  }
-  for (int i = 0; i < 3; ++i)
-  {
-    out[i] = image[i] / imageLength * size;
-  }
-  return true;
+  return withLength(image, size, out);
 }
 
 // Two unit tangents with t1 x t2 = n for a unit n, without a branch on n's direction (Duff et al.,
@@ -165,15 +183,8 @@ bool normalFromTangentImages(const double a[3], const double b[3], const double 
 {
   double image[3];
   cross(a, b, image);
-  const double n2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-  const double image2 = image[0] * image[0] + image[1] * image[1] + image[2] * image[2];
-  if (n2 > SafeLow && n2 < SafeHigh && image2 > SafeLow && image2 < SafeHigh)
+  if (withLengthOf(image, n, out))
   {
-    const double factor = std::sqrt(n2 / image2);
-    for (int i = 0; i < 3; ++i)
-    {
-      out[i] = image[i] * factor;
-    }
     return true;
   }
   // Otherwise from a and b each scaled to largest entry 1 (the same direction), which neither
@@ -192,16 +203,7 @@ bool normalFromTangentImages(const double a[3], const double b[3], const double 
   const double scaledA[3] = { a[0] / sizeA, a[1] / sizeA, a[2] / sizeA };
   const double scaledB[3] = { b[0] / sizeB, b[1] / sizeB, b[2] / sizeB };
   cross(scaledA, scaledB, image);
-  const double imageLength = length(image);
-  if (!(imageLength > 0.0) || !std::isfinite(imageLength))
-  {
-    return false;
-  }
-  for (int i = 0; i < 3; ++i)
-  {
-    out[i] = image[i] / imageLength * size;
-  }
-  return true;
+  return withLength(image, size, out);
 }
 
 // v' = J v; false when it is not finite.
