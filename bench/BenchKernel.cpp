@@ -14,6 +14,26 @@ namespace
 {
 using namespace boostedbench;
 
+// Times map(first, last), a batch map of the points first ... last - 1 that returns how many it
+// left unchanged, over `count` points on `threads` threads, after checking once that it moves
+// every point.
+template <typename Map>
+void timeBatchMap(benchmark::State& state, int threads, std::size_t count, const Map& map)
+{
+  if (map(0, count) != 0)
+  {
+    state.SkipWithError("some points were left unchanged: not the path to time");
+    return;
+  }
+  for (auto _ : state)
+  {
+    runOnThreads(threads, count, [&](std::size_t first, std::size_t last) { map(first, last); });
+    benchmark::ClobberMemory();
+  }
+  state.SetLabel(cga::mapPointsInstructionSet());
+  reportPoints(state, count);
+}
+
 void timeKernel(benchmark::State& state, cga::ExponentialRule rule, int generators, int threads,
   vtkStructuredGrid* mesh)
 {
@@ -21,53 +41,33 @@ void timeKernel(benchmark::State& state, cga::ExponentialRule rule, int generato
   const cga::PointPairField field(benchmarkGenerators(generators), kFalloff, kEpsilon);
   const double* in = meshPoints(mesh);
   std::vector<double> out(3 * count);
-  if (field.mapPoints(in, out.data(), count, kStrength, rule) != 0)
-  {
-    state.SkipWithError("some points were left unchanged: not the path to time");
-    return;
-  }
-  for (auto _ : state)
-  {
-    runOnThreads(threads, count, [&](std::size_t first, std::size_t last) {
+  timeBatchMap(state, threads, count, [&](std::size_t first, std::size_t last) {
+    const std::size_t unchanged =
       field.mapPoints(in + 3 * first, out.data() + 3 * first, last - first, kStrength, rule);
-    });
     benchmark::DoNotOptimize(out.data());
-    benchmark::ClobberMemory();
-  }
-  state.SetLabel(cga::mapPointsInstructionSet());
-  reportPoints(state, count);
+    return unchanged;
+  });
 }
 
 void KernelJacobian(benchmark::State& state, cga::ExponentialRule rule)
 {
-  const int threads = static_cast<int>(state.range(1));
   vtkStructuredGrid* mesh = benchmarkMesh();
   const auto count = static_cast<std::size_t>(mesh->GetNumberOfPoints());
   const cga::PointPairField field(
     benchmarkGenerators(static_cast<int>(state.range(0))), kFalloff, kEpsilon);
   const double* in = meshPoints(mesh);
   std::vector<double> out(3 * count), jacobians(9 * count);
-  if (field.mapPointsWithJacobians(in, out.data(), jacobians.data(), count, kStrength, rule) != 0)
-  {
-    state.SkipWithError("some points were left unchanged: not the path to time");
-    return;
-  }
-  for (auto _ : state)
-  {
-    runOnThreads(threads, count, [&](std::size_t first, std::size_t last) {
-      field.mapPointsWithJacobians(in + 3 * first, out.data() + 3 * first,
-        jacobians.data() + 9 * first, last - first, kStrength, rule);
+  timeBatchMap(state, static_cast<int>(state.range(1)), count,
+    [&](std::size_t first, std::size_t last) {
+      const std::size_t unchanged = field.mapPointsWithJacobians(in + 3 * first,
+        out.data() + 3 * first, jacobians.data() + 9 * first, last - first, kStrength, rule);
+      benchmark::DoNotOptimize(jacobians.data());
+      return unchanged;
     });
-    benchmark::DoNotOptimize(jacobians.data());
-    benchmark::ClobberMemory();
-  }
-  state.SetLabel(cga::mapPointsInstructionSet());
-  reportPoints(state, count);
 }
 
 void KernelDirectional(benchmark::State& state, cga::ExponentialRule rule)
 {
-  const int threads = static_cast<int>(state.range(1));
   vtkStructuredGrid* mesh = benchmarkMesh();
   const auto count = static_cast<std::size_t>(mesh->GetNumberOfPoints());
   const cga::PointPairField field(
@@ -80,23 +80,14 @@ void KernelDirectional(benchmark::State& state, cga::ExponentialRule rule)
     const double t[6] = { 1.0, 0.0, 0.0, 0.0, 0.8, -0.6 };
     std::copy(t, t + 6, directions.begin() + 6 * i);
   }
-  if (field.mapPointsWithDirectionalDerivatives(
-        in, directions.data(), out.data(), derivatives.data(), count, kStrength, rule) != 0)
-  {
-    state.SkipWithError("some points were left unchanged: not the path to time");
-    return;
-  }
-  for (auto _ : state)
-  {
-    runOnThreads(threads, count, [&](std::size_t first, std::size_t last) {
-      field.mapPointsWithDirectionalDerivatives(in + 3 * first, directions.data() + 6 * first,
-        out.data() + 3 * first, derivatives.data() + 6 * first, last - first, kStrength, rule);
+  timeBatchMap(state, static_cast<int>(state.range(1)), count,
+    [&](std::size_t first, std::size_t last) {
+      const std::size_t unchanged = field.mapPointsWithDirectionalDerivatives(in + 3 * first,
+        directions.data() + 6 * first, out.data() + 3 * first, derivatives.data() + 6 * first,
+        last - first, kStrength, rule);
+      benchmark::DoNotOptimize(derivatives.data());
+      return unchanged;
     });
-    benchmark::DoNotOptimize(derivatives.data());
-    benchmark::ClobberMemory();
-  }
-  state.SetLabel(cga::mapPointsInstructionSet());
-  reportPoints(state, count);
 }
 
 void Kernel(benchmark::State& state, cga::ExponentialRule rule)
