@@ -132,10 +132,14 @@ struct DeformWorker
 
   // mapChunk with J: the batch map with Jacobians takes doubles, so float points are converted
   // (exactly) and the images rounded to Out as mapPoints rounds them, BufferedPoints at a time.
+  // When the only output is one normals array, J along the normal's two tangents suffices
+  // (mapPointsWithDirectionalDerivatives: two tangents through the map instead of three).
   template <typename In>
   void mapChunkWithJacobians(const In* in, vtkIdType first, vtkIdType count)
   {
     double points[3 * BufferedPoints], images[3 * BufferedPoints], jacobians[9 * BufferedPoints];
+    double tangents[6 * BufferedPoints];
+    const bool oneNormal = this->Derivatives->OnlyOneNormal();
     for (vtkIdType done = 0; done < count; done += BufferedPoints)
     {
       const vtkIdType n = std::min(BufferedPoints, count - done);
@@ -149,8 +153,18 @@ struct DeformWorker
       {
         std::copy(chunk, chunk + 3 * n, points);
       }
-      const std::size_t withoutJacobian = this->Field->mapPointsWithJacobians(asDoubles, images,
-        jacobians, static_cast<std::size_t>(n), this->Strength, this->Rule);
+      std::size_t withoutJacobian = 0;
+      if (oneNormal)
+      {
+        this->Derivatives->Tangents(first + done, n, tangents);
+        withoutJacobian = this->Field->mapPointsWithDirectionalDerivatives(asDoubles, tangents,
+          images, jacobians, static_cast<std::size_t>(n), this->Strength, this->Rule);
+      }
+      else
+      {
+        withoutJacobian = this->Field->mapPointsWithJacobians(asDoubles, images, jacobians,
+          static_cast<std::size_t>(n), this->Strength, this->Rule);
+      }
       std::size_t unchanged = withoutJacobian;
       Out* out = this->OutPoints + 3 * (first + done);
       // A point whose J is not finite (huge weights) is left in place by the batch map with
@@ -168,7 +182,14 @@ struct DeformWorker
         std::transform(images, images + 3 * n, out, [](double x) { return static_cast<Out>(x); });
       }
       this->finishChunk(chunk, first + done, n, unchanged);
-      this->Derivatives->Write(first + done, n, jacobians);
+      if (oneNormal)
+      {
+        this->Derivatives->WriteNormal(first + done, n, tangents, jacobians);
+      }
+      else
+      {
+        this->Derivatives->Write(first + done, n, jacobians);
+      }
     }
   }
 

@@ -36,7 +36,10 @@
  * active point normals (TransformNormals, on by default) and the point arrays named in
  * NormalArrays become n' = |n| cof(J) n / |cof(J) n| (the direction of J^-T n, the input's
  * length), those named in VectorArrays J v; ConformalScale and ConformalityDefect add the point
- * arrays |det J|^(1/3) and 1 - sigma_min / sigma_max. Other arrays pass unchanged; cell normals
+ * arrays |det J|^(1/3) and 1 - sigma_min / sigma_max. When one normals array is all that is
+ * asked, J is taken along two tangents of each normal only
+ * (cga::PointPairField::mapPointsWithDirectionalDerivatives: cof(J) n = J t1 x J t2 for
+ * t1 x t2 = n), the same normal for less work. Other arrays pass unchanged; cell normals
  * are dropped (they would be wrong once the points moved), and so are the point normals when
  * TransformNormals is off.
  * vtkImageData and vtkRectilinearGrid inputs give a vtkStructuredGrid, as vtkWarpVector does.

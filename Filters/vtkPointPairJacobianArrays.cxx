@@ -80,6 +80,40 @@ double scaledColumns(const double* jacobian, double columns[3][3])
 // Squared lengths in this range are computed and square-rooted without overflow or underflow.
 constexpr double SafeLow = 1e-280, SafeHigh = 1e280;
 
+// out = image scaled to the length of n, directly, when both squared lengths are in the safe
+// range (the common case); false otherwise (then the caller scales apart).
+bool withLengthOf(const double image[3], const double n[3], double out[3])
+{
+  const double n2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+  const double image2 = image[0] * image[0] + image[1] * image[1] + image[2] * image[2];
+  if (!(n2 > SafeLow && n2 < SafeHigh && image2 > SafeLow && image2 < SafeHigh))
+  {
+    return false;
+  }
+  const double factor = std::sqrt(n2 / image2);
+  for (int i = 0; i < 3; ++i)
+  {
+    out[i] = image[i] * factor;
+  }
+  return true;
+}
+
+// out = image scaled to length `size` through length(), which neither overflows nor underflows;
+// false when image is 0 or not finite.
+bool withLength(const double image[3], double size, double out[3])
+{
+  const double imageLength = length(image);
+  if (!(imageLength > 0.0) || !std::isfinite(imageLength))
+  {
+    return false;
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    out[i] = image[i] / imageLength * size;
+  }
+  return true;
+}
+
 // n' = |n| cof(J) n / |cof(J) n|; false when cof(J) n = 0 (n' then untouched).
 bool transformNormal(const double* jacobian, const double n[3], double out[3])
 {
@@ -97,15 +131,8 @@ bool transformNormal(const double* jacobian, const double n[3], double out[3])
     {
       image[i] = n[0] * c23[i] + n[1] * c31[i] + n[2] * c12[i];
     }
-    const double n2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-    const double image2 = image[0] * image[0] + image[1] * image[1] + image[2] * image[2];
-    if (n2 > SafeLow && n2 < SafeHigh && image2 > SafeLow && image2 < SafeHigh)
+    if (withLengthOf(image, n, out))
     {
-      const double factor = std::sqrt(n2 / image2);
-      for (int i = 0; i < 3; ++i)
-      {
-        out[i] = image[i] * factor;
-      }
       return true;
     }
   }
@@ -132,16 +159,51 @@ bool transformNormal(const double* jacobian, const double n[3], double out[3])
   {
     image[i] = m[0] * c23[i] + m[1] * c31[i] + m[2] * c12[i];
   }
-  const double imageLength = length(image);
-  if (!(imageLength > 0.0) || !std::isfinite(imageLength))
+  return withLength(image, size, out);
+}
+
+// Two unit tangents with t1 x t2 = n for a unit n, without a branch on n's direction (Duff et al.,
+// "Building an orthonormal basis, revisited", JCGT 6(1), 2017).
+void tangentsOf(const double n[3], double t1[3], double t2[3])
+{
+  const double sign = std::copysign(1.0, n[2]);
+  const double a = -1.0 / (sign + n[2]);
+  const double b = n[0] * n[1] * a;
+  t1[0] = 1.0 + sign * n[0] * n[0] * a;
+  t1[1] = sign * b;
+  t1[2] = -sign * n[0];
+  t2[0] = b;
+  t2[1] = sign + n[1] * n[1] * a;
+  t2[2] = -n[1];
+}
+
+// n' = |n| (a x b) / |a x b| for the images a = J t1, b = J t2 of the tangents of n (tangentsOf):
+// the direction of cof(J) n, as transformNormal; false when a x b = 0 (n' then untouched).
+bool normalFromTangentImages(const double a[3], const double b[3], const double n[3], double out[3])
+{
+  double image[3];
+  cross(a, b, image);
+  if (withLengthOf(image, n, out))
+  {
+    return true;
+  }
+  // Otherwise from a and b each scaled to largest entry 1 (the same direction), which neither
+  // overflow nor underflow.
+  const double size = length(n);
+  const double sizeA = largestEntry<3>(a), sizeB = largestEntry<3>(b);
+  if (size == 0.0)
+  {
+    out[0] = out[1] = out[2] = 0.0;
+    return true;
+  }
+  if (!(sizeA > 0.0) || !(sizeB > 0.0))
   {
     return false;
   }
-  for (int i = 0; i < 3; ++i)
-  {
-    out[i] = image[i] / imageLength * size;
-  }
-  return true;
+  const double scaledA[3] = { a[0] / sizeA, a[1] / sizeA, a[2] / sizeA };
+  const double scaledB[3] = { b[0] / sizeB, b[1] / sizeB, b[2] / sizeB };
+  cross(scaledA, scaledB, image);
+  return withLength(image, size, out);
 }
 
 // v' = J v; false when it is not finite.
@@ -207,26 +269,32 @@ vtkSmartPointer<vtkDataArray> scalarArray(const char* name, int type, vtkIdType 
   return output;
 }
 
-// Reads tuple i of an input array: in place for float and double AOS arrays, through
-// vtkDataArray's API for any other.
+// Reads tuple i of an input array: in place for float and double AOS arrays (their values found
+// once), through vtkDataArray's API for any other.
 struct TupleReader
 {
   explicit TupleReader(vtkDataArray* array)
     : Array(array)
-    , Floats(vtkAOSDataArrayTemplate<float>::FastDownCast(array))
-    , Doubles(vtkAOSDataArrayTemplate<double>::FastDownCast(array))
   {
+    if (auto* floats = vtkAOSDataArrayTemplate<float>::FastDownCast(array))
+    {
+      this->Floats = floats->GetPointer(0);
+    }
+    else if (auto* doubles = vtkAOSDataArrayTemplate<double>::FastDownCast(array))
+    {
+      this->Doubles = doubles->GetPointer(0);
+    }
   }
   void operator()(vtkIdType i, double v[3]) const
   {
     if (this->Doubles)
     {
-      const double* p = this->Doubles->GetPointer(3 * i);
+      const double* p = this->Doubles + 3 * i;
       v[0] = p[0], v[1] = p[1], v[2] = p[2];
     }
     else if (this->Floats)
     {
-      const float* p = this->Floats->GetPointer(3 * i);
+      const float* p = this->Floats + 3 * i;
       v[0] = p[0], v[1] = p[1], v[2] = p[2];
     }
     else
@@ -235,27 +303,41 @@ struct TupleReader
     }
   }
   vtkDataArray* Array;
-  vtkAOSDataArrayTemplate<float>* Floats;
-  vtkAOSDataArrayTemplate<double>* Doubles;
+  const float* Floats = nullptr;
+  const double* Doubles = nullptr;
 };
 
-// Writes n values of tuple i of an AOS float or double array.
+// Writes N values of tuple i of an AOS float or double array (the output arrays: outputFor,
+// scalarArray), its values found once.
 template <int N>
-void writeTuple(vtkDataArray* array, vtkIdType i, const double* values)
+struct TupleWriter
 {
-  if (auto* doubles = vtkAOSDataArrayTemplate<double>::FastDownCast(array))
+  explicit TupleWriter(vtkDataArray* array)
   {
-    std::copy(values, values + N, doubles->GetPointer(N * i));
-  }
-  else
-  {
-    float* out = vtkAOSDataArrayTemplate<float>::FastDownCast(array)->GetPointer(N * i);
-    for (int c = 0; c < N; ++c)
+    if (auto* doubles = vtkAOSDataArrayTemplate<double>::FastDownCast(array))
     {
-      out[c] = static_cast<float>(values[c]);
+      this->Doubles = doubles->GetPointer(0);
+    }
+    else
+    {
+      this->Floats = vtkAOSDataArrayTemplate<float>::FastDownCast(array)->GetPointer(0);
     }
   }
-}
+  void operator()(vtkIdType i, const double* values) const
+  {
+    if (this->Doubles)
+    {
+      std::copy(values, values + N, this->Doubles + N * i);
+      return;
+    }
+    for (int c = 0; c < N; ++c)
+    {
+      this->Floats[N * i + c] = static_cast<float>(values[c]);
+    }
+  }
+  double* Doubles = nullptr;
+  float* Floats = nullptr;
+};
 
 bool fitsIn(vtkDataArray* array, const double v[3])
 {
@@ -367,6 +449,7 @@ void vtkPointPairJacobianArrays::Write(vtkIdType first, vtkIdType count, const d
   for (const Transformed& t : this->Arrays)
   {
     const TupleReader read(t.Input);
+    const TupleWriter<3> write(t.Output);
     for (vtkIdType i = 0; i < count; ++i)
     {
       double v[3], out[3];
@@ -387,24 +470,83 @@ void vtkPointPairJacobianArrays::Write(vtkIdType first, vtkIdType count, const d
         done = transformVector(jacobian, v, out) && fitsIn(t.Output, out);
         overflowed += done ? 0 : 1;
       }
-      writeTuple<3>(t.Output, first + i, done ? out : v);
+      write(first + i, done ? out : v);
     }
   }
-  for (vtkIdType i = 0; this->Scale && i < count; ++i)
+  if (this->Scale)
   {
-    const double scale = conformalScale(jacobians + 9 * i);
-    scaleBeyondFloat += this->Scale->GetDataType() == VTK_FLOAT && scale > FLT_MAX ? 1 : 0;
-    writeTuple<1>(this->Scale, first + i, &scale);
+    const TupleWriter<1> write(this->Scale);
+    const bool isFloat = this->Scale->GetDataType() == VTK_FLOAT;
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      const double scale = conformalScale(jacobians + 9 * i);
+      scaleBeyondFloat += isFloat && scale > FLT_MAX ? 1 : 0;
+      write(first + i, &scale);
+    }
   }
-  for (vtkIdType i = 0; this->Defect && i < count; ++i)
+  if (this->Defect)
   {
-    const double defect = conformalityDefect(jacobians + 9 * i);
-    writeTuple<1>(this->Defect, first + i, &defect);
+    const TupleWriter<1> write(this->Defect);
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      const double defect = conformalityDefect(jacobians + 9 * i);
+      write(first + i, &defect);
+    }
   }
   this->NonFinite += nonFinite;
   this->Collapsed += collapsed;
   this->Overflowed += overflowed;
   this->ScaleBeyondFloat += scaleBeyondFloat;
+}
+
+void vtkPointPairJacobianArrays::Tangents(vtkIdType first, vtkIdType count, double* tangents) const
+{
+  const TupleReader read(this->Arrays[0].Input);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    double n[3];
+    read(first + i, n);
+    double* t = tangents + 6 * i;
+    const double size = length(n);
+    if (!(size > 0.0) || !std::isfinite(size))
+    {
+      std::fill(t, t + 6, 0.0); // (the normal passes unchanged: WriteNormal)
+      continue;
+    }
+    const double unit[3] = { n[0] / size, n[1] / size, n[2] / size };
+    tangentsOf(unit, t, t + 3);
+  }
+}
+
+void vtkPointPairJacobianArrays::WriteNormal(
+  vtkIdType first, vtkIdType count, const double* tangents, const double* tangentImages)
+{
+  const Transformed& t = this->Arrays[0];
+  const TupleReader read(t.Input);
+  const TupleWriter<3> write(t.Output);
+  vtkIdType nonFinite = 0, collapsed = 0;
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    double n[3], out[3];
+    read(first + i, n);
+    const double* a = tangentImages + 6 * i;
+    const double* b = a + 3;
+    bool done = false;
+    if (!std::isfinite(n[0]) || !std::isfinite(n[1]) || !std::isfinite(n[2]))
+    {
+      ++nonFinite;
+    }
+    else if (!std::equal(a, a + 6, tangents + 6 * i))
+    {
+      done = normalFromTangentImages(a, b, n, out);
+      collapsed += done ? 0 : 1;
+    }
+    // (J fixes both tangents, e.g. J = I where a point is left in place: n' = n exactly, without
+    // the rounding of t1 x t2; also for n = 0, whose tangents are 0)
+    write(first + i, done ? out : n);
+  }
+  this->NonFinite += nonFinite;
+  this->Collapsed += collapsed;
 }
 
 void vtkPointPairJacobianArrays::AddTo(vtkPointData* output) const

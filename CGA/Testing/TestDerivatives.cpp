@@ -296,6 +296,79 @@ TEST(Derivatives, ImagesAreTheBitsOfMapAndTheBatchOfThePointwiseForm)
   }
 }
 
+// The batch derivatives along two directions per point (two tangents through the map) against
+// J t from the Jacobians (three tangents), on every instruction set: the images to the bit, J t to
+// rounding. Directions of any size, the last block partial, a NaN point (its directions back).
+TEST(Derivatives, DirectionalDerivativesAreTheJacobianAlongTheDirections)
+{
+  Random random(5);
+  const std::string active = mapPointsInstructionSet();
+  double worst = 0.0;
+  for (const Case& c : cases())
+  {
+    const PointPairField field(c.generators.data(), c.generators.size(), c.falloff, c.epsilon);
+    for (const ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
+    {
+      constexpr int count = 21; // not a multiple of the block size
+      std::vector<double> points, directions;
+      for (int i = 0; i < count; ++i)
+      {
+        const Vec3 p = random.vec3(2.0);
+        points.insert(points.end(), { i == 9 ? std::nan("") : p.x, p.y, p.z });
+        for (int k = 0; k < 2; ++k)
+        {
+          const Vec3 t = random.vec3(1.0) * std::pow(10.0, random.uniform(-3.0, 3.0));
+          directions.insert(directions.end(), { t.x, t.y, t.z });
+        }
+      }
+      for (const std::string& isa : mapPointsInstructionSets())
+      {
+        ASSERT_TRUE(useMapPointsInstructionSet(isa));
+        std::vector<double> images(3 * count), jacobians(9 * count), viaJacobians(3 * count),
+          derivatives(6 * count);
+        EXPECT_EQ(1u, field.mapPointsWithJacobians(
+          points.data(), viaJacobians.data(), jacobians.data(), count, c.strength, rule));
+        EXPECT_EQ(1u, field.mapPointsWithDirectionalDerivatives(points.data(), directions.data(),
+          images.data(), derivatives.data(), count, c.strength, rule));
+        EXPECT_EQ(0, std::memcmp(images.data(), viaJacobians.data(), 8 * images.size())) << isa;
+        for (int i = 0; i < count; ++i)
+        {
+          const double* j = jacobians.data() + 9 * i;
+          for (int k = 0; k < 2; ++k)
+          {
+            const double* t = directions.data() + 6 * i + 3 * k;
+            const double* got = derivatives.data() + 6 * i + 3 * k;
+            if (i == 9)
+            {
+              EXPECT_EQ(0, std::memcmp(t, got, 3 * sizeof(double))) << isa;
+              continue;
+            }
+            const double size = std::max(1.0, largestEntry(Jacobian{ j[0], j[1], j[2], j[3],
+              j[4], j[5], j[6], j[7], j[8] })) * std::max({ std::fabs(t[0]), std::fabs(t[1]),
+              std::fabs(t[2]) });
+            for (int r = 0; r < 3; ++r)
+            {
+              const double expected = j[3 * r] * t[0] + j[3 * r + 1] * t[1] + j[3 * r + 2] * t[2];
+              const double error = std::fabs(got[r] - expected) / size;
+              worst = std::max(worst, error);
+              EXPECT_LT(error, 1e-12) << isa << " point " << i;
+            }
+          }
+        }
+      }
+      ASSERT_TRUE(useMapPointsInstructionSet(active));
+    }
+  }
+  // No generators: the points and the directions themselves.
+  const PointPairField empty(static_cast<const GeneratorParameters*>(nullptr), 0, 1.0, 0.5);
+  const double in[3] = { 1, 2, 3 }, t[6] = { 1, 0, 0, 0, 2, 0 };
+  double out[3], d[6];
+  EXPECT_EQ(0u, empty.mapPointsWithDirectionalDerivatives(in, t, out, d, 1, 1.0, ExponentialRule::Exact));
+  EXPECT_EQ(0, std::memcmp(in, out, sizeof in));
+  EXPECT_EQ(0, std::memcmp(t, d, sizeof t));
+  RecordProperty("worstRelativeError", std::to_string(worst));
+}
+
 TEST(Derivatives, NearAGeneratorTheJacobianMatchesTheReference)
 {
   // A lone point pair with a small epsilon: B is nilpotent and large next to it (the Exact rule

@@ -5,6 +5,7 @@
 #include "cga/PointSandwich.h"
 
 #include "GeneratorTree.h"
+#include "PointBlocks.h"
 #include "PointPairKernelDispatch.h"
 #include "PointMapCore.h"
 
@@ -306,7 +307,7 @@ bool PointPairField::map(Vec3 p, double strength, ExponentialRule rule, Vec3& ou
     return true;
   }
   // core::mapPoint for one point: the block kernel instantiates the same template for its lanes.
-  // Relative to the center, as the block kernel's lanes (mapPointsInBlocks); the image is p plus
+  // Relative to the center, as the block kernel's lanes (PointBlocks.h); the image is p plus
   // the relative displacement, so that a point the map leaves in place comes back to the bit.
   const Vec3 c = this->Center;
   const double xyz[3] = { p.x - c.x, p.y - c.y, p.z - c.z };
@@ -323,40 +324,10 @@ bool PointPairField::map(Vec3 p, double strength, ExponentialRule rule, Vec3& ou
 
 namespace
 {
+// mapPoints' blocks (PointBlocks.h). With a tree, B(p) of each block comes from it and the kernel
+// maps with the given B.
 template <typename In, typename Out>
-void copyPoint(const In* in, Out* out)
-{
-  out[0] = static_cast<Out>(in[0]);
-  out[1] = static_cast<Out>(in[1]);
-  out[2] = static_cast<Out>(in[2]);
-}
-
-bool finitePoint(double x, double y, double z)
-{
-  return std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
-}
-
-// Without generators or at strength 0 every finite point stays where it is.
-template <typename In, typename Out>
-std::size_t copyPoints(const In* in, Out* out, std::size_t count)
-{
-  std::size_t unchanged = 0;
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    if (!finitePoint(in[3 * i], in[3 * i + 1], in[3 * i + 2]))
-    {
-      ++unchanged;
-    }
-    copyPoint(in + 3 * i, out + 3 * i);
-  }
-  return unchanged;
-}
-
-// The points relative to the field's center c (as map()): each lane holds p - c, each image
-// comes back as p + (image - (p - c)), p itself where the map leaves it in place.
-// With a tree, B(p) of each block comes from it and the kernel maps with the given B.
-template <typename In, typename Out>
-std::size_t mapPointsInBlocks(const kernel::FieldArgs& args,
+std::size_t mapPointsByKernel(const kernel::FieldArgs& args,
                               const detail::GeneratorTree* tree,
                               Vec3 c,
                               const In* in,
@@ -366,11 +337,7 @@ std::size_t mapPointsInBlocks(const kernel::FieldArgs& args,
   constexpr int L = kernel::kLanes;
   const kernel::MapBlock mapBlock = kernel::activeMapBlock();
   const kernel::MapBlockBy mapBlockBy = kernel::activeMapBlockBy();
-  std::size_t unchanged = 0;
-  alignas(64) double xyz[3 * L];
-  alignas(64) double image[3 * L];
   alignas(64) double bivectors[Bivector::Count * L];
-  std::uint8_t mapped[L];
   // With a tree, B of every point of the call first (the tree's target cells span the call).
   std::vector<double> treeBivectors;
   if (tree)
@@ -385,51 +352,24 @@ std::size_t mapPointsInBlocks(const kernel::FieldArgs& args,
     treeBivectors.resize(Bivector::Count * count);
     tree->evaluatePoints(relative.data(), count, treeBivectors.data());
   }
-  for (std::size_t first = 0; first < count; first += L)
-  {
-    const int n = static_cast<int>(std::min<std::size_t>(L, count - first));
-    for (int l = 0; l < L; ++l)
-    {
-      // The last block repeats its last point in the unused lanes.
-      const In* p = in + 3 * (first + std::min(l, n - 1));
-      xyz[l] = static_cast<double>(p[0]) - c.x;
-      xyz[L + l] = static_cast<double>(p[1]) - c.y;
-      xyz[2 * L + l] = static_cast<double>(p[2]) - c.z;
-    }
-    if (tree)
-    {
-      for (int l = 0; l < L; ++l)
-      {
-        const double* b = treeBivectors.data() + Bivector::Count * (first + std::min(l, n - 1));
-        for (int k = 0; k < Bivector::Count; ++k)
-        {
-          bivectors[k * L + l] = b[k] * -args.strength; // the exponent, as mapBlock's
-        }
-      }
-      mapBlockBy(args, bivectors, xyz, image, mapped);
-    }
-    else
+  const auto mapLanes = [&](std::size_t first, int n, const double* xyz, double* image,
+                          std::uint8_t* mapped) {
+    if (!tree)
     {
       mapBlock(args, xyz, image, mapped);
+      return;
     }
-    for (int l = 0; l < n; ++l)
+    for (int l = 0; l < L; ++l)
     {
-      Out* o = out + 3 * (first + l);
-      const In* p = in + 3 * (first + l);
-      if (mapped[l])
+      const double* b = treeBivectors.data() + Bivector::Count * (first + std::min(l, n - 1));
+      for (int k = 0; k < Bivector::Count; ++k)
       {
-        o[0] = static_cast<Out>(static_cast<double>(p[0]) + (image[l] - xyz[l]));
-        o[1] = static_cast<Out>(static_cast<double>(p[1]) + (image[L + l] - xyz[L + l]));
-        o[2] = static_cast<Out>(static_cast<double>(p[2]) + (image[2 * L + l] - xyz[2 * L + l]));
-      }
-      else
-      {
-        copyPoint(p, o);
-        ++unchanged;
+        bivectors[k * L + l] = b[k] * -args.strength; // the exponent, as mapBlock's
       }
     }
-  }
-  return unchanged;
+    mapBlockBy(args, bivectors, xyz, image, mapped);
+  };
+  return mapPointsInBlocks(c, in, out, count, mapLanes, [](std::size_t, int, bool) {});
 }
 
 } // namespace
@@ -440,9 +380,9 @@ std::size_t PointPairField::mapPointsOf(
 {
   if (this->Count == 0 || strength == 0.0)
   {
-    return copyPoints(in, out, count);
+    return copyPoints(in, out, count, [](std::size_t, bool) {});
   }
-  return mapPointsInBlocks(
+  return mapPointsByKernel(
     this->args(strength, rule), this->Tree.get(), this->Center, in, out, count);
 }
 

@@ -3,6 +3,7 @@
 #include "cga/PointPairField.h"
 
 #include "DualNumber.h"
+#include "PointBlocks.h"
 #include "PointMapCore.h"
 #include "PointPairKernel.h"
 #include "PointPairKernelDispatch.h"
@@ -87,71 +88,110 @@ bool PointPairField::mapWithJacobian(
   return true;
 }
 
+namespace
+{
+/// Whether the n doubles of lane l of a component-major block are finite.
+bool finiteLane(const double* block, int n, int l)
+{
+  for (int e = 0; e < n; ++e)
+  {
+    if (!std::isfinite(block[e * kernel::kLanes + l]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+} // namespace
+
 std::size_t PointPairField::mapPointsWithJacobians(const double* in, double* out, double* jacobians,
   std::size_t count, double strength, ExponentialRule rule) const
 {
   constexpr int L = kernel::kLanes;
   if (this->Count == 0 || strength == 0.0)
   {
-    std::size_t unchanged = 0;
-    for (std::size_t i = 0; i < count; ++i)
-    {
-      const double* p = in + 3 * i;
-      unchanged += std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) ? 0 : 1;
-      std::copy(p, p + 3, out + 3 * i);
-      writeIdentity(jacobians + 9 * i);
-    }
-    return unchanged;
+    return copyPoints(in, out, count,
+      [jacobians](std::size_t i, bool) { writeIdentity(jacobians + 9 * i); });
   }
   const kernel::FieldArgs args = this->args(strength, rule);
   const kernel::MapBlockJacobian mapBlock = kernel::activeMapBlockJacobian();
-  const Vec3 c = this->Center;
-  std::size_t unchanged = 0;
-  alignas(64) double xyz[3 * L], image[3 * L], jacobian[9 * L];
-  std::uint8_t mapped[L];
-  for (std::size_t first = 0; first < count; first += L)
-  {
-    const int n = static_cast<int>(std::min<std::size_t>(L, count - first));
+  alignas(64) double jacobian[9 * L];
+  const auto mapLanes = [&](std::size_t, int, const double* xyz, double* image,
+                          std::uint8_t* mapped) {
+    mapBlock(args, xyz, image, jacobian, mapped);
     for (int l = 0; l < L; ++l)
     {
-      // The last block repeats its last point in the unused lanes (as mapPoints).
-      const double* p = in + 3 * (first + std::min(l, n - 1));
-      xyz[l] = p[0] - c.x;
-      xyz[L + l] = p[1] - c.y;
-      xyz[2 * L + l] = p[2] - c.z;
+      mapped[l] = mapped[l] && finiteLane(jacobian, 9, l);
     }
-    mapBlock(args, xyz, image, jacobian, mapped);
-    for (int l = 0; l < n; ++l)
+  };
+  const auto writeJacobian = [&](std::size_t i, int l, bool mapped) {
+    double* j = jacobians + 9 * i;
+    if (!mapped)
     {
-      const double* p = in + 3 * (first + l);
-      double* o = out + 3 * (first + l);
-      double* j = jacobians + 9 * (first + l);
-      bool finite = mapped[l] != 0;
-      for (int e = 0; e < 9 && finite; ++e)
+      writeIdentity(j);
+      return;
+    }
+    for (int e = 0; e < 9; ++e)
+    {
+      j[e] = jacobian[e * L + l];
+    }
+  };
+  return mapPointsInBlocks(this->Center, in, out, count, mapLanes, writeJacobian);
+}
+
+std::size_t PointPairField::mapPointsWithDirectionalDerivatives(const double* in,
+  const double* directions, double* out, double* derivatives, std::size_t count, double strength,
+  ExponentialRule rule) const
+{
+  constexpr int L = kernel::kLanes, N = kernel::kDirections;
+  // Per point N directions of 3 components: t_k's component i at directions[3 N point + 3 k + i].
+  constexpr int kPerPoint = 3 * N;
+  const auto copyDirections = [directions, derivatives](std::size_t i) {
+    std::copy(directions + kPerPoint * i, directions + kPerPoint * (i + 1),
+      derivatives + kPerPoint * i);
+  };
+  if (this->Count == 0 || strength == 0.0)
+  {
+    return copyPoints(in, out, count, [&](std::size_t i, bool) { copyDirections(i); });
+  }
+  const kernel::FieldArgs args = this->args(strength, rule);
+  const kernel::MapBlockDirectional mapBlock = kernel::activeMapBlockDirectional();
+  alignas(64) double seeds[kPerPoint * L], along[kPerPoint * L];
+  const auto mapLanes = [&](std::size_t first, int n, const double* xyz, double* image,
+                          std::uint8_t* mapped) {
+    for (int l = 0; l < L; ++l)
+    {
+      const double* t = directions + kPerPoint * (first + std::min(l, n - 1));
+      for (int k = 0; k < N; ++k)
       {
-        finite = std::isfinite(jacobian[e * L + l]);
-      }
-      if (!finite)
-      {
-        for (int k = 0; k < 3; ++k)
+        for (int i = 0; i < 3; ++i)
         {
-          o[k] = p[k]; // (in may be out: then each coordinate onto itself)
+          seeds[(N * i + k) * L + l] = t[3 * k + i]; // the kernel's layout
         }
-        writeIdentity(j);
-        ++unchanged;
-        continue;
-      }
-      const double x = p[0], y = p[1], z = p[2];
-      o[0] = x + (image[l] - xyz[l]);
-      o[1] = y + (image[L + l] - xyz[L + l]);
-      o[2] = z + (image[2 * L + l] - xyz[2 * L + l]);
-      for (int e = 0; e < 9; ++e)
-      {
-        j[e] = jacobian[e * L + l];
       }
     }
-  }
-  return unchanged;
+    mapBlock(args, xyz, seeds, image, along, mapped);
+    for (int l = 0; l < L; ++l)
+    {
+      mapped[l] = mapped[l] && finiteLane(along, kPerPoint, l);
+    }
+  };
+  const auto writeDerivatives = [&](std::size_t i, int l, bool mapped) {
+    if (!mapped)
+    {
+      copyDirections(i);
+      return;
+    }
+    double* d = derivatives + kPerPoint * i;
+    for (int k = 0; k < N; ++k)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        d[3 * k + c] = along[(N * c + k) * L + l];
+      }
+    }
+  };
+  return mapPointsInBlocks(this->Center, in, out, count, mapLanes, writeDerivatives);
 }
 
 /// map() of p with d out / d b (byExponent[10 j + k] = d out_j / d b_k) for the exponent

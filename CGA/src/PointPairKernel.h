@@ -65,11 +65,27 @@ using MapBlockJacobian = void (*)(const FieldArgs& args,
                                   double* jacobian,
                                   std::uint8_t* mapped);
 
+/// Directions per lane of MapBlockDirectional.
+constexpr int kDirections = 2;
+
+/// mapBlock and the derivatives along kDirections given directions per lane (forward mode with
+/// kDirections tangents instead of 3: what the transformed normal needs, cof(J) n = J t1 x J t2
+/// for t1 x t2 = n). directions holds component i of direction k of lane l at
+/// directions[(kDirections i + k) * kLanes + l]; derivatives receives J t_k in the same layout.
+using MapBlockDirectional = void (*)(const FieldArgs& args,
+                                     const double* xyz,
+                                     const double* directions,
+                                     double* image,
+                                     double* derivatives,
+                                     std::uint8_t* mapped);
+
 namespace baseline
 {
 void mapBlock(const FieldArgs&, const double*, double*, std::uint8_t*);
 void mapBlockBy(const FieldArgs&, double*, const double*, double*, std::uint8_t*);
 void mapBlockJacobian(const FieldArgs&, const double*, double*, double*, std::uint8_t*);
+void mapBlockDirectional(
+  const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
 }
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
 namespace avx2
@@ -77,12 +93,16 @@ namespace avx2
 void mapBlock(const FieldArgs&, const double*, double*, std::uint8_t*);
 void mapBlockBy(const FieldArgs&, double*, const double*, double*, std::uint8_t*);
 void mapBlockJacobian(const FieldArgs&, const double*, double*, double*, std::uint8_t*);
+void mapBlockDirectional(
+  const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
 }
 namespace avx512
 {
 void mapBlock(const FieldArgs&, const double*, double*, std::uint8_t*);
 void mapBlockBy(const FieldArgs&, double*, const double*, double*, std::uint8_t*);
 void mapBlockJacobian(const FieldArgs&, const double*, double*, double*, std::uint8_t*);
+void mapBlockDirectional(
+  const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
 }
 #endif
 } // namespace kernel

@@ -18,6 +18,7 @@ struct Candidate
   MapBlock block;
   MapBlockBy blockBy;
   MapBlockJacobian blockJacobian;
+  MapBlockDirectional blockDirectional;
   bool (*supported)();
 };
 
@@ -41,10 +42,13 @@ bool hasAvx512()
 
 // Narrowest first.
 const Candidate kCandidates[] = {
-  { "baseline", &baseline::mapBlock, &baseline::mapBlockBy, &baseline::mapBlockJacobian, &always },
+  { "baseline", &baseline::mapBlock, &baseline::mapBlockBy, &baseline::mapBlockJacobian,
+    &baseline::mapBlockDirectional, &always },
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
-  { "avx2", &avx2::mapBlock, &avx2::mapBlockBy, &avx2::mapBlockJacobian, &hasAvx2 },
-  { "avx512", &avx512::mapBlock, &avx512::mapBlockBy, &avx512::mapBlockJacobian, &hasAvx512 },
+  { "avx2", &avx2::mapBlock, &avx2::mapBlockBy, &avx2::mapBlockJacobian,
+    &avx2::mapBlockDirectional, &hasAvx2 },
+  { "avx512", &avx512::mapBlock, &avx512::mapBlockBy, &avx512::mapBlockJacobian,
+    &avx512::mapBlockDirectional, &hasAvx512 },
 #endif
 };
 constexpr int kCandidateCount = sizeof(kCandidates) / sizeof(kCandidates[0]);
@@ -102,6 +106,11 @@ MapBlockBy activeMapBlockBy()
 MapBlockJacobian activeMapBlockJacobian()
 {
   return kCandidates[choice().load(std::memory_order_relaxed)].blockJacobian;
+}
+
+MapBlockDirectional activeMapBlockDirectional()
+{
+  return kCandidates[choice().load(std::memory_order_relaxed)].blockDirectional;
 }
 
 std::vector<std::string> availableInstructionSets()

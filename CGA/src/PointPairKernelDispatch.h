@@ -13,6 +13,7 @@ namespace kernel
 MapBlock activeMapBlock();
 MapBlockBy activeMapBlockBy();
 MapBlockJacobian activeMapBlockJacobian();
+MapBlockDirectional activeMapBlockDirectional();
 std::vector<std::string> availableInstructionSets();
 std::string activeInstructionSet();
 bool useInstructionSet(const std::string& name);

@@ -321,31 +321,62 @@ void mapBlockBy(const FieldArgs& args, double* bivectors, const double* xyz, dou
     mapped[l] = ok[l] ? 1 : 0;
   }
 }
-void mapBlockJacobian(const FieldArgs& args, const double* xyz, double* image, double* jacobian,
-  std::uint8_t* mapped)
+namespace
 {
-  using Tangent = core::Dual<LaneVector, 3>;
+/// core::mapPoint on N tangents per lane: seeds[(N i + k) * L + l] is component i of tangent k of
+/// lane l (the unit vectors e_k when seeds is null: then tangent k is d / d p_k), and
+/// derivatives[(N i + k) * L + l] receives d image_i along tangent k (for the unit tangents
+/// d image_i / d p_k: J row-major).
+template <int N>
+void mapBlockTangents(const FieldArgs& args, const double* xyz, const double* seeds, double* image,
+  double* derivatives, std::uint8_t* mapped)
+{
+  using Tangent = core::Dual<LaneVector, N>;
   Tangent p[3], out[3];
   for (int i = 0; i < 3; ++i)
   {
     LaneVector value;
     fromLanes(xyz + i * L, value);
-    p[i] = core::variable<LaneVector, 3>(value, i);
+    p[i] = core::constant<LaneVector, N>(value);
+    for (int k = 0; k < N; ++k)
+    {
+      if (seeds)
+      {
+        fromLanes(seeds + (N * i + k) * L, p[i].d[k]);
+      }
+      else if (k == i)
+      {
+        p[i].d[k] = core::splat<LaneVector>(1.0);
+      }
+    }
   }
   bool ok[L];
   core::mapPoint(args, p, out, ok);
   for (int i = 0; i < 3; ++i)
   {
     toLanes(out[i].v, image + i * L);
-    for (int j = 0; j < 3; ++j)
+    for (int k = 0; k < N; ++k)
     {
-      toLanes(out[i].d[j], jacobian + (3 * i + j) * L);
+      toLanes(out[i].d[k], derivatives + (N * i + k) * L);
     }
   }
   for (int l = 0; l < L; ++l)
   {
     mapped[l] = ok[l] ? 1 : 0;
   }
+}
+} // namespace
+
+void mapBlockJacobian(const FieldArgs& args, const double* xyz, double* image, double* jacobian,
+  std::uint8_t* mapped)
+{
+  mapBlockTangents<3>(args, xyz, nullptr, image, jacobian, mapped);
+}
+
+void mapBlockDirectional(const FieldArgs& args, const double* xyz, const double* directions,
+  double* image, double* derivatives, std::uint8_t* mapped)
+{
+  mapBlockTangents<kDirections>(args, xyz, directions, image, derivatives, mapped);
 }
 } // namespace BOOSTED_KERNEL_ISA
 } // namespace kernel

@@ -236,6 +236,17 @@ public:
   std::size_t mapPointsWithJacobians(const double* in, double* out, double* jacobians,
     std::size_t count, double strength, ExponentialRule rule) const;
 
+  /// mapPointsWithJacobians along two given directions per point instead of the whole J: for
+  /// each point, directions holds t1 then t2 (6 doubles: t1.x, t1.y, t1.z, t2.x, ...) and
+  /// derivatives receives J t1 then J t2 in the same layout, forward mode with two tangents
+  /// instead of three: what a normal needs, since cof(J) n = (J t1) x (J t2) for t1 x t2 = n
+  /// (vtkPointPairDeformationFilter's normals). The images and unchanged points are
+  /// mapPointsWithJacobians' (an unchanged point gets its directions back: J = I). No heap
+  /// allocation; threads are the caller's.
+  std::size_t mapPointsWithDirectionalDerivatives(const double* in, const double* directions,
+    double* out, double* derivatives, std::size_t count, double strength,
+    ExponentialRule rule) const;
+
   /// map() and d out / d B: how the image moves per unit change of each of the ten components
   /// (Compact.h order) of B(p) (generatorAt(p), in space, before the factor -strength):
   /// byBivector[10 j + c] = d out_j / d B_c. For a parameter theta of the generators,

@@ -27,6 +27,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <iostream>
 #include <limits>
@@ -156,6 +157,24 @@ double angleBetween(Vec3 a, Vec3 b)
   return std::atan2(cga::norm(cga::cross(a, b)), cga::dot(a, b));
 }
 
+// The unit normal of the image of the plane normal to n: J^-T n solved by vtkMath (Gaussian
+// elimination: not the filter's cofactors or tangents), turned where det J < 0 (there the normal
+// follows the mapped cells' winding: cof(J) n = det(J) J^-T n).
+Vec3 normalBySolve(double j[3][3], Vec3 n)
+{
+  double jt[3][3];
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      jt[r][c] = j[c][r];
+    }
+  }
+  double x[3] = { n.x, n.y, n.z };
+  vtkMath::LinearSolve3x3(jt, x, x);
+  return cga::normalized(Vec3{ x[0], x[1], x[2] }) * (vtkMath::Determinant3x3(j) < 0.0 ? -1.0 : 1.0);
+}
+
 // Normals as J^-T n, solved by vtkMath (Gaussian elimination: not the filter's cofactors), turned
 // where det J < 0, and
 // vectors as J v, with J from finite differences of the map, for every kind and both rules.
@@ -188,25 +207,19 @@ TEST(PointPairDeformationDerivatives, NormalsAndVectorsMatchFiniteDifferencesOfT
       int folded = 0;
       for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
       {
-        double j[3][3], jt[3][3];
+        double j[3][3];
         finiteDifferenceJacobian(setup, pointOf(data, i), 1e-3, j);
         double size = 0.0;
         for (int r = 0; r < 3; ++r)
         {
           for (int c = 0; c < 3; ++c)
           {
-            jt[r][c] = j[c][r];
             size = std::max(size, std::fabs(j[r][c]));
           }
         }
         const Vec3 n = tupleOf(data->GetPointData()->GetNormals(), i);
-        double x[3] = { n.x, n.y, n.z };
-        vtkMath::LinearSolve3x3(jt, x, x);
-        // Where the map folds (det J < 0) the normal follows the mapped cells' winding:
-        // cof(J) n = det(J) J^-T n.
-        const double det = vtkMath::Determinant3x3(j);
-        folded += det < 0.0 ? 1 : 0;
-        const Vec3 expected = cga::normalized(Vec3{ x[0], x[1], x[2] }) * (det < 0.0 ? -1.0 : 1.0);
+        folded += vtkMath::Determinant3x3(j) < 0.0 ? 1 : 0;
+        const Vec3 expected = normalBySolve(j, n);
         const Vec3 got = tupleOf(normals, i);
         EXPECT_NEAR(cga::norm(got), 1.0, 1e-14);
         worstAngle = std::max(worstAngle, angleBetween(got, expected));
@@ -223,6 +236,77 @@ TEST(PointPairDeformationDerivatives, NormalsAndVectorsMatchFiniteDifferencesOfT
                 << ": largest normal angle " << worstAngle << " rad, largest relative J v error "
                 << worstVector << " (" << folded << " of 200 points where the map folds)\n";
     }
+  }
+}
+
+// When the normals are the only output the filter computes J along two tangents of each normal
+// (mapPointsWithDirectionalDerivatives) instead of J: the normals must be those of the cofactor
+// form (the filter with ConformalScale as well, which takes J) to rounding, and match finite
+// differences of the map as those do. Normals of any length and direction (n_z of both signs,
+// +-z exactly, where the tangent construction switches), a zero and a NaN normal, a NaN point.
+TEST(PointPairDeformationDerivatives, NormalsAloneFromTwoTangentsEqualTheCofactorNormals)
+{
+  Random random(136);
+  for (const int rule : { Exact, Paper })
+  {
+    FieldSetup setup;
+    setup.generators = mixedGenerators(random, 6, 0.4);
+    setup.rule = rule;
+    auto data = cloud(random, 203);
+    vtkDataArray* input = data->GetPointData()->GetNormals();
+    for (vtkIdType i = 0; i < 203; ++i)
+    {
+      const double length = std::pow(10.0, random.uniform(-3.0, 3.0));
+      const Vec3 n = tupleOf(input, i) * length;
+      input->SetTuple3(i, n.x, n.y, n.z);
+    }
+    input->SetTuple3(0, 0.0, 0.0, 1.0);
+    input->SetTuple3(1, 0.0, 0.0, -2.0);
+    input->SetTuple3(2, 0.0, 0.0, 0.0);
+    input->SetTuple3(3, std::nan(""), 0.0, 1.0);
+    data->GetPoints()->SetPoint(4, std::nan(""), 0.0, 0.0);
+    vtkSmartPointer<vtkPointSet> outputs[2];
+    for (const bool withScale : { false, true })
+    {
+      vtkNew<vtkPointPairDeformationFilter> filter;
+      EventCounter events(filter);
+      filter->SetInputData(data);
+      configure(filter, setup);
+      filter->SetComputeConformalScale(withScale);
+      filter->Update();
+      ASSERT_EQ(events.errors, 0) << events.lastError;
+      outputs[withScale] = filter->GetOutput();
+    }
+    EXPECT_TRUE(outputBytes(outputs[0]) == outputBytes(outputs[1]));
+    vtkDataArray* twoTangents = outputs[0]->GetPointData()->GetNormals();
+    vtkDataArray* cofactor = outputs[1]->GetPointData()->GetNormals();
+    ASSERT_NE(twoTangents, nullptr);
+    ASSERT_NE(cofactor, nullptr);
+    double worstAngle = 0.0, worstLength = 0.0, worstDifference = 0.0;
+    for (vtkIdType i = 0; i < 203; ++i)
+    {
+      const Vec3 n = tupleOf(input, i), got = tupleOf(twoTangents, i);
+      if (i == 2 || i == 3 || i == 4) // zero normal, NaN normal, NaN point: unchanged
+      {
+        EXPECT_EQ(0, std::memcmp(&n, &got, sizeof n)) << i;
+        continue;
+      }
+      const Vec3 expected = tupleOf(cofactor, i);
+      const double angle = angleBetween(got, expected);
+      const double length = std::fabs(cga::norm(got) / cga::norm(n) - 1.0);
+      EXPECT_LE(angle, 1e-12) << i;
+      EXPECT_LE(length, 1e-14) << i;
+      worstAngle = std::max(worstAngle, angle);
+      worstLength = std::max(worstLength, length);
+      double j[3][3];
+      finiteDifferenceJacobian(setup, pointOf(data, i), 1e-3, j);
+      const double difference = angleBetween(got, normalBySolve(j, n));
+      EXPECT_LE(difference, 1e-8) << i;
+      worstDifference = std::max(worstDifference, difference);
+    }
+    std::cout << "rule " << rule << ": two tangents against the cofactor form: largest angle "
+              << worstAngle << " rad, largest relative length error " << worstLength
+              << "; against finite differences: " << worstDifference << " rad\n";
   }
 }
 
@@ -272,22 +356,23 @@ TEST(PointPairDeformationDerivatives, ImagesAreTheSameBitForBitWithDerivatives)
                type == VTK_FLOAT ? vtkAlgorithm::DOUBLE_PRECISION : vtkAlgorithm::SINGLE_PRECISION })
         {
           setup.rule = rule;
-          std::string images[2];
-          for (const bool derivatives : { false, true })
+          // 0: no derivative; 1: the normals alone (two tangents); 2: and ConformalScale (J).
+          std::string images[3];
+          for (const int derivatives : { 0, 1, 2 })
           {
             vtkNew<vtkPointPairDeformationFilter> filter;
             EventCounter events(filter);
             filter->SetInputData(data);
             configure(filter, setup);
             filter->SetOutputPointsPrecision(precision);
-            filter->SetTransformNormals(derivatives);
-            filter->SetComputeConformalScale(derivatives);
+            filter->SetTransformNormals(derivatives > 0);
+            filter->SetComputeConformalScale(derivatives == 2);
             filter->Update();
             EXPECT_EQ(events.errors, 0) << events.lastError;
-            EXPECT_EQ(filter->GetOutput()->GetPointData()->GetNormals() != nullptr, derivatives);
+            EXPECT_EQ(filter->GetOutput()->GetPointData()->GetNormals() != nullptr, derivatives > 0);
             images[derivatives] = outputBytes(filter->GetOutput());
           }
-          EXPECT_TRUE(images[0] == images[1])
+          EXPECT_TRUE(images[0] == images[1] && images[0] == images[2])
             << (type == VTK_FLOAT ? "float" : "double") << (soa ? " SOA" : " AOS") << ", rule "
             << rule << ", precision " << precision;
         }
@@ -610,25 +695,31 @@ TEST(PointPairDeformationDerivatives, WhereTheDerivativeOverflowsTheImageIsStill
   vtkNew<vtkPolyData> data;
   data->SetPoints(points);
   data->GetPointData()->SetNormals(normals);
-  std::string images[2];
-  for (const bool derivatives : { false, true })
+  // 0: no derivative; 1: the normals alone (two tangents: J t1 = t1, J t2 = (G, 1, 0) at the far
+  // point, the same normal); 2: and ConformalScale (J).
+  std::string images[3];
+  for (const int derivatives : { 0, 1, 2 })
   {
     vtkNew<vtkPointPairDeformationFilter> filter;
     EventCounter events(filter);
     filter->SetInputData(data);
     configure(filter, setup);
-    filter->SetTransformNormals(derivatives);
-    filter->SetComputeConformalScale(derivatives);
+    filter->SetTransformNormals(derivatives > 0);
+    filter->SetComputeConformalScale(derivatives == 2);
     filter->Update();
     EXPECT_EQ(events.errors, 0) << events.lastError;
     images[derivatives] = outputBytes(filter->GetOutput());
     EXPECT_GT(filter->GetOutput()->GetPoint(0)[0], 1e308);
-    if (derivatives)
+    if (derivatives > 0)
     {
       EXPECT_EQ(events.warnings, 1);
       EXPECT_NE(events.lastWarning.find("overflows at 1 of 2 points"), std::string::npos)
         << events.lastWarning;
-      EXPECT_EQ(filter->GetOutput()->GetPointData()->GetArray("ConformalScale")->GetComponent(0, 0), 1.0);
+      if (derivatives == 2)
+      {
+        EXPECT_EQ(
+          filter->GetOutput()->GetPointData()->GetArray("ConformalScale")->GetComponent(0, 0), 1.0);
+      }
       EXPECT_EQ(filter->GetOutput()->GetPointData()->GetNormals()->GetComponent(0, 2), 1.0);
       // At the far point J = I + e1 g^T, g = (0, G, 0), G = -2 w 30 / 900.01^2 = -1.1e304:
       // cof(J) n = n - g n_x = (0.6, -0.6 G, 0.8), whose squared length (4e607) overflows: the
@@ -638,6 +729,6 @@ TEST(PointPairDeformationDerivatives, WhereTheDerivativeOverflowsTheImageIsStill
       EXPECT_LE(std::fabs(n.x) + std::fabs(n.z), 1e-300);
     }
   }
-  EXPECT_TRUE(images[0] == images[1]);
+  EXPECT_TRUE(images[0] == images[1] && images[0] == images[2]);
 }
 } // namespace

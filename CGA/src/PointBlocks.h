@@ -1,0 +1,94 @@
+// Internal: the one block loop of PointPairField's batch maps (mapPoints, mapPointsWithJacobians,
+// mapPointsWithDirectionalDerivatives): kernel::kLanes points at a time, relative to the field's
+// center c (as map()), each image written back as p + (image - (p - c)), so that a point the map
+// leaves in place comes back to the bit.
+//
+// Internal linkage only (see PointMapCore.h).
+#pragma once
+
+#include "PointPairKernel.h"
+
+#include "cga/Vec3.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+namespace cga
+{
+namespace
+{
+/// Copies `count` points, xyz interleaved, from `in` to `out` (which may be `in`): the map without
+/// generators or at strength 0. finishPoint(index, finite) is called for each. Returns the count
+/// of points not finite.
+template <typename In, typename Out, typename FinishPoint>
+std::size_t copyPoints(const In* in, Out* out, std::size_t count, FinishPoint&& finishPoint)
+{
+  std::size_t unchanged = 0;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const In* p = in + 3 * i;
+    const bool finite = std::isfinite(static_cast<double>(p[0])) &&
+      std::isfinite(static_cast<double>(p[1])) && std::isfinite(static_cast<double>(p[2]));
+    unchanged += finite ? 0 : 1;
+    Out* o = out + 3 * i;
+    o[0] = static_cast<Out>(p[0]);
+    o[1] = static_cast<Out>(p[1]);
+    o[2] = static_cast<Out>(p[2]);
+    finishPoint(i, finite);
+  }
+  return unchanged;
+}
+
+/// Maps `count` points, xyz interleaved, from `in` to `out` (which may be `in`). For each block,
+/// mapLanes(first, n, xyz, image, mapped) maps the block's lanes (the points first ... first + n - 1
+/// relative to c in xyz, component-major; the unused lanes of the last block repeat its last
+/// point) into image and sets mapped[l] for each lane whose image (and whatever else it computes)
+/// is usable; then each point is written, its image or itself (counted) where not mapped, and
+/// finishPoint(index, lane, mapped) is called for it. Returns the count of points not mapped.
+template <typename In, typename Out, typename MapLanes, typename FinishPoint>
+std::size_t mapPointsInBlocks(Vec3 c, const In* in, Out* out, std::size_t count,
+  MapLanes&& mapLanes, FinishPoint&& finishPoint)
+{
+  constexpr int L = kernel::kLanes;
+  std::size_t unchanged = 0;
+  alignas(64) double xyz[3 * L];
+  alignas(64) double image[3 * L];
+  std::uint8_t mapped[L];
+  for (std::size_t first = 0; first < count; first += L)
+  {
+    const int n = static_cast<int>(std::min<std::size_t>(L, count - first));
+    for (int l = 0; l < L; ++l)
+    {
+      const In* p = in + 3 * (first + std::min(l, n - 1));
+      xyz[l] = static_cast<double>(p[0]) - c.x;
+      xyz[L + l] = static_cast<double>(p[1]) - c.y;
+      xyz[2 * L + l] = static_cast<double>(p[2]) - c.z;
+    }
+    mapLanes(first, n, xyz, image, mapped);
+    for (int l = 0; l < n; ++l)
+    {
+      Out* o = out + 3 * (first + l);
+      const In* p = in + 3 * (first + l);
+      if (mapped[l])
+      {
+        o[0] = static_cast<Out>(static_cast<double>(p[0]) + (image[l] - xyz[l]));
+        o[1] = static_cast<Out>(static_cast<double>(p[1]) + (image[L + l] - xyz[L + l]));
+        o[2] = static_cast<Out>(static_cast<double>(p[2]) + (image[2 * L + l] - xyz[2 * L + l]));
+      }
+      else
+      {
+        // (in may be out: then each coordinate onto itself)
+        o[0] = static_cast<Out>(p[0]);
+        o[1] = static_cast<Out>(p[1]);
+        o[2] = static_cast<Out>(p[2]);
+        ++unchanged;
+      }
+      finishPoint(first + l, l, mapped[l] != 0);
+    }
+  }
+  return unchanged;
+}
+} // namespace
+} // namespace cga
