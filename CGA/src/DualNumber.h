@@ -253,6 +253,13 @@ inline void laneSinCos(const Dual<T, N>& x, Dual<T, N>& sine, Dual<T, N>& cosine
   cosine = chain(x, c, -s);
 }
 
+/// The value without its tangents (LaneMath.h's valueOf).
+template <typename T, int N>
+inline T valueOf(const Dual<T, N>& x)
+{
+  return x.v;
+}
+
 /// Whether a number type carries tangents.
 template <typename T>
 constexpr bool kHasTangents = false;

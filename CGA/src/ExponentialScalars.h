@@ -187,12 +187,14 @@ inline ExactCoefficients<T> exactCoefficients(const T& m, const T& l1, const T& 
   return k;
 }
 
-// Whether expExact takes the power series in B^2 = s + W (both squares of B at most 1 in size).
-inline bool exactUsesSeries(double m, double l1, double l2)
+// Per lane, whether expExact takes the power series in B^2 = s + W (both squares of B at most 1
+// in size), for the scale m of B and the plane squares l1, l2 of B/m.
+template <typename T>
+inline Mask<T> exactUsesSeries(const T& m, const T& l1, const T& l2)
 {
-  const double largest = __builtin_fabs(l1) < __builtin_fabs(l2) ? __builtin_fabs(l2)
-                                                                  : __builtin_fabs(l1);
-  return largest == 0.0 || m * largest * m <= 1.0;
+  const T a1 = magnitude(l1), a2 = magnitude(l2);
+  const T largest = select(lessThan(a1, a2), a2, a1);
+  return maskOr(equalTo(largest, T{}), lessEqual((m * largest) * m, splat<T>(1.0)));
 }
 
 // The power series of expExact: exp(B) = a0 + a4 W + b0 B + b4 <W B>_2 with B^2k = ak + bk W,

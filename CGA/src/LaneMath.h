@@ -113,6 +113,12 @@ inline double magnitude(double x)
   return __builtin_fabs(x);
 }
 
+/// The value of a number (a Dual's without its tangents: DualNumber.h; the lane vector's is itself).
+inline double valueOf(double x)
+{
+  return x;
+}
+
 /// A number type's value c on every lane.
 template <typename T>
 inline T splat(double c)
