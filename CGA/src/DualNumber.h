@@ -253,11 +253,11 @@ inline void laneSinCos(const Dual<T, N>& x, Dual<T, N>& sine, Dual<T, N>& cosine
   cosine = chain(x, c, -s);
 }
 
-/// The value without its tangents (LaneMath.h's valueOf).
+/// The value without its tangents (LaneMath.h's valueOf; of a nested Dual, the innermost value).
 template <typename T, int N>
-inline T valueOf(const Dual<T, N>& x)
+inline auto valueOf(const Dual<T, N>& x)
 {
-  return x.v;
+  return valueOf(x.v);
 }
 
 /// Whether a number type carries tangents.

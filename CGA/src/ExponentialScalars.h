@@ -83,9 +83,12 @@ inline void planeSeries(const T& m, const T& lh, T& c, T& sHat)
 {
   // l = m^2 lh = +-x^2, from m and lh (no overflow where the series is taken: m (m |lh|) = x^2 <
   // 1e-4), not from x: a Dual's tangents of x = m sqrt|lh| are lost where lh = 0, those of l not.
+  // Products by the reciprocals, not divisions (a division costs several multiplications; the
+  // reciprocals' rounding, half an ulp of each factor, is below the series' own).
   const T l = m * (m * lh);
-  c = 1.0 + l / 2.0 * (1.0 + l / 12.0 * (1.0 + l / 30.0 * (1.0 + l / 56.0)));
-  sHat = m * (1.0 + l / 6.0 * (1.0 + l / 20.0 * (1.0 + l / 42.0 * (1.0 + l / 72.0))));
+  c = 1.0 + l * 0.5 * (1.0 + l * (1.0 / 12.0) * (1.0 + l * (1.0 / 30.0) * (1.0 + l * (1.0 / 56.0))));
+  sHat = m * (1.0 + l * (1.0 / 6.0) *
+    (1.0 + l * (1.0 / 20.0) * (1.0 + l * (1.0 / 42.0) * (1.0 + l * (1.0 / 72.0)))));
 }
 
 template <typename T>

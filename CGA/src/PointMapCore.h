@@ -149,8 +149,8 @@ BOOSTED_CORE_INLINE void fieldBivector(const kernel::FieldArgs& args, const T* p
   }
 }
 
-/// The largest component m of B and, per lane, whether it is finite, zero, or both finite and
-/// non-zero (usable as a scale).
+/// The scale m of B: the power of two 2^e with 2^e <= |B|_max < 2^(e+1), and per lane whether
+/// |B|_max is finite, zero, or both finite and non-zero (usable: m is a scale).
 template <typename T>
 struct Scale
 {
@@ -170,19 +170,22 @@ BOOSTED_CORE_INLINE T nanWhereNotFinite(const Scale<T>& scale, const T& value)
   return select(scale.finite, value, splat<T>(__builtin_nan("")));
 }
 
-/// The scale m of B, and u = B / m where m is non-zero and finite (B where it is not).
+/// The scale m of B, and u = B / m where m is non-zero and finite (B where it is not): m a power
+/// of two, so that u is B exactly (1/m is exact: one division, not one per component), its
+/// components below 2 in size.
 template <typename T>
 BOOSTED_CORE_INLINE void unitScaled(const T* b, Scale<T>& scale, T* u)
 {
   using V = ValueOf<T>;
-  scale.m = maxAbs(b);
-  scale.finite = finiteLanes(scale.m);
-  scale.zero = equalTo(scale.m, V{});
+  const V largest = maxAbs(b);
+  scale.finite = finiteLanes(largest);
+  scale.zero = equalTo(largest, V{});
   scale.usable = maskAnd(scale.finite, maskNot(scale.zero));
-  const T d = asNumber<T>(scale.usableOrOne());
+  scale.m = binaryFloor(largest);
+  const T inverse = asNumber<T>(1.0 / scale.usableOrOne());
   for (int c = 0; c < kBivector; ++c)
   {
-    u[c] = b[c] / d;
+    u[c] = b[c] * inverse;
   }
 }
 
@@ -455,9 +458,10 @@ BOOSTED_CORE_INLINE Mask<T> normalizeLanes(const T* p, const T* r, T* image)
 {
   using V = ValueOf<T>;
   const T alpha = r[NO];
+  const T inverse = 1.0 / alpha; // one division; the products add half an ulp
   for (int i = 0; i < 3; ++i)
   {
-    image[i] = r[E1 + i] / alpha;
+    image[i] = r[E1 + i] * inverse;
   }
   const V a = valueOf(alpha);
   Mask<V> mapped = maskAnd(maskNot(equalTo(a, V{})), finiteLanes(a));
@@ -506,50 +510,33 @@ BOOSTED_CORE_INLINE void translateBivector(const T* b, const T* t, T* out)
   out[NONI] = d - at;
 }
 
-/// 2^k for an integer |k| <= 1022, exactly.
-inline double powerOfTwo(int k)
-{
-  const unsigned long long bits = static_cast<unsigned long long>(k + 1023) << 52;
-  double x;
-  __builtin_memcpy(&x, &bits, sizeof x);
-  return x;
-}
-
-/// The binary exponent of a finite x > 0 (that of its leading bit; subnormals count as -1023).
-inline int binaryExponent(double x)
-{
-  unsigned long long bits;
-  __builtin_memcpy(&bits, &x, sizeof bits);
-  return static_cast<int>((bits >> 52) & 0x7ff) - 1023;
-}
-
-inline double larger(double a, double b)
-{
-  return a < b ? b : a;
-}
-
 /// Balances B about the origin by the dilation x -> 2^k x, which scales the e_i^no components by
 /// 2^-k and the e_i^ni ones by 2^k (exactly: powers of two), with k making both about the same
 /// size. Returns 2^-k per lane: exp of the balanced B maps 2^k x to 2^k x', so x' = 2^-k times
 /// its image. Where one of the two parts is zero or B is not finite, k = 0.
 template <typename T>
-BOOSTED_CORE_INLINE LaneArray<T> balanceByDilation(T* b)
+BOOSTED_CORE_INLINE ValueOf<T> balanceByDilation(T* b)
 {
-  constexpr int L = kLanesOf<T>;
-  const LaneArray<T> a1(b[E1NO]), a2(b[E2NO]), a3(b[E3NO]), c1(b[E1NI]), c2(b[E2NI]), c3(b[E3NI]);
-  LaneArray<T> up, down;
-  for (int l = 0; l < L; ++l)
-  {
-    // (a NaN part gives NaN or a smaller value: either way the lane is NaN and k does not matter)
-    const double a = larger(__builtin_fabs(a1.v[l]), larger(__builtin_fabs(a2.v[l]), __builtin_fabs(a3.v[l])));
-    const double c = larger(__builtin_fabs(c1.v[l]), larger(__builtin_fabs(c2.v[l]), __builtin_fabs(c3.v[l])));
-    const bool usable = a > 0.0 && c > 0.0 && a < __builtin_inf() && c < __builtin_inf();
-    const int half = usable ? (binaryExponent(a) - binaryExponent(c)) / 2 : 0;
-    const int k = half < -1022 ? -1022 : (half > 1022 ? 1022 : half);
-    up.v[l] = powerOfTwo(k);
-    down.v[l] = powerOfTwo(-k);
-  }
-  const T upValue = up.value(), downValue = down.value();
+  using V = ValueOf<T>;
+  const auto largest = [](const V& x, const V& y, const V& z) {
+    const V ax = magnitude(x), ay = magnitude(y), az = magnitude(z);
+    const V ayz = select(lessThan(ay, az), az, ay);
+    return select(lessThan(ax, ayz), ayz, ax);
+  };
+  // (a NaN part gives NaN or a smaller value: either way the lane is NaN and k does not matter)
+  const V a = largest(valueOf(b[E1NO]), valueOf(b[E2NO]), valueOf(b[E3NO]));
+  const V c = largest(valueOf(b[E1NI]), valueOf(b[E2NI]), valueOf(b[E3NI]));
+  const Mask<V> usable = maskAnd(maskAnd(lessThan(V{}, a), lessThan(V{}, c)),
+    maskAnd(finiteLanes(a), finiteLanes(c)));
+  // k = half the difference of the exponents, rounded to the nearest integer (adding and taking
+  // away 1.5 2^52 rounds a number below 2^51 in size to an integer), within +-1022.
+  const V difference = binaryExponentOf(a) - binaryExponentOf(c);
+  const V rounding = splat<V>(0x1.8p52);
+  V k = select(usable, (0.5 * difference + rounding) - rounding, V{});
+  k = select(lessThan(k, splat<V>(-1022.0)), splat<V>(-1022.0), k);
+  k = select(lessThan(splat<V>(1022.0), k), splat<V>(1022.0), k);
+  const V up = powerOfTwoOf(k), down = powerOfTwoOf(-k);
+  const T upValue = asNumber<T>(up), downValue = asNumber<T>(down);
   for (const int i : { E1NO, E2NO, E3NO })
   {
     b[i] = downValue * b[i];
@@ -574,7 +561,7 @@ Mask<T> exactImageAroundPoint(const T* p, const T* b, T* image)
   const T t[3] = { -p[0], -p[1], -p[2] };
   T moved[kBivector];
   translateBivector(b, t, moved);
-  const LaneArray<T> down = balanceByDilation(moved);
+  const ValueOf<T> down = balanceByDilation(moved);
   UnitBivector<T> unit;
   unitBivector(moved, unit);
   // Where B is a 2-blade (W = 0: a lone point pair, generators at one place) exp(B) = c + sHat B
@@ -615,7 +602,7 @@ Mask<T> exactImageAroundPoint(const T* p, const T* b, T* image)
   const T zero[3] = {};
   T offset[3];
   Mask<T> mapped = normalizeLanes(zero, r, offset);
-  const T scale = down.value();
+  const T scale = asNumber<T>(down);
   for (int i = 0; i < 3; ++i)
   {
     image[i] = p[i] + scale * offset[i];

@@ -182,6 +182,43 @@ BOOSTED_LANE_INLINE LaneVector valueOf(const LaneVector& x)
   return x;
 }
 
+// LaneMath.h's binaryFloor on every lane.
+BOOSTED_LANE_INLINE LaneVector binaryFloor(LaneVector x)
+{
+  const NativeMask exponent = NativeMask{} + 0x7ff0000000000000LL;
+  const NativeMask smallest = NativeMask{} + 0x0010000000000000LL;
+  for (int i = 0; i < kParts; ++i)
+  {
+    const NativeMask bits = (NativeMask)x.part[i] & exponent;
+    x.part[i] = (NativeVector)(bits == 0 ? smallest : bits);
+  }
+  return x;
+}
+
+// LaneMath.h's binaryExponentOf and powerOfTwoOf on every lane, without integer conversions: an
+// integer n in [0, 2^52) is the double 2^52 + n less 2^52, whose low bits hold n.
+BOOSTED_LANE_INLINE LaneVector binaryExponentOf(LaneVector x)
+{
+  const NativeMask field = NativeMask{} + 0x7ff;
+  const NativeMask twoTo52 = NativeMask{} + 0x4330000000000000LL;
+  for (int i = 0; i < kParts; ++i)
+  {
+    const NativeMask e = ((NativeMask)x.part[i] >> 52) & field;
+    x.part[i] = (NativeVector)(e | twoTo52) - (0x1p52 + 1023.0);
+  }
+  return x;
+}
+
+BOOSTED_LANE_INLINE LaneVector powerOfTwoOf(LaneVector k)
+{
+  for (int i = 0; i < kParts; ++i)
+  {
+    const NativeVector biased = k.part[i] + (0x1p52 + 1023.0); // 2^52 + k + 1023, exactly
+    k.part[i] = (NativeVector)((NativeMask)biased << 52);
+  }
+  return k;
+}
+
 // The lane access PointMapCore.h finds by argument-dependent lookup.
 BOOSTED_LANE_INLINE void toLanes(const LaneVector& v, double* lanes)
 {
