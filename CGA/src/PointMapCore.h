@@ -458,10 +458,9 @@ BOOSTED_CORE_INLINE Mask<T> normalizeLanes(const T* p, const T* r, T* image)
 {
   using V = ValueOf<T>;
   const T alpha = r[NO];
-  const T inverse = 1.0 / alpha; // one division; the products add half an ulp
   for (int i = 0; i < 3; ++i)
   {
-    image[i] = r[E1 + i] * inverse;
+    image[i] = r[E1 + i] / alpha;
   }
   const V a = valueOf(alpha);
   Mask<V> mapped = maskAnd(maskNot(equalTo(a, V{})), finiteLanes(a));
