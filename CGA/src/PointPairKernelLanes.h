@@ -197,13 +197,16 @@ BOOSTED_LANE_INLINE LaneVector binaryFloor(LaneVector x)
 
 // LaneMath.h's binaryExponentOf and powerOfTwoOf on every lane, without integer conversions: an
 // integer n in [0, 2^52) is the double 2^52 + n less 2^52, whose low bits hold n.
+// (Shifts on unsigned lanes: no sign bit to shift into.)
+typedef unsigned long long NativeBits __attribute__((vector_size(BOOSTED_KERNEL_VECTOR_BYTES)));
+
 BOOSTED_LANE_INLINE LaneVector binaryExponentOf(LaneVector x)
 {
-  const NativeMask field = NativeMask{} + 0x7ff;
-  const NativeMask twoTo52 = NativeMask{} + 0x4330000000000000LL;
+  const NativeBits field = NativeBits{} + 0x7ffULL;
+  const NativeBits twoTo52 = NativeBits{} + 0x4330000000000000ULL;
   for (int i = 0; i < kParts; ++i)
   {
-    const NativeMask e = ((NativeMask)x.part[i] >> 52) & field;
+    const NativeBits e = ((NativeBits)x.part[i] >> 52) & field;
     x.part[i] = (NativeVector)(e | twoTo52) - (0x1p52 + 1023.0);
   }
   return x;
@@ -214,7 +217,7 @@ BOOSTED_LANE_INLINE LaneVector powerOfTwoOf(LaneVector k)
   for (int i = 0; i < kParts; ++i)
   {
     const NativeVector biased = k.part[i] + (0x1p52 + 1023.0); // 2^52 + k + 1023, exactly
-    k.part[i] = (NativeVector)((NativeMask)biased << 52);
+    k.part[i] = (NativeVector)((NativeBits)biased << 52);
   }
   return k;
 }
