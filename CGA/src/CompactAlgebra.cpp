@@ -1,44 +1,13 @@
 #include "cga/CompactAlgebra.h"
 
 #include "CompactLayout.h"
+#include "BoostProducts.h"
 #include "PointMapCore.h"
-#include "SparseProduct.h"
 
 namespace cga
 {
 using detail::EvenArray;
 using detail::SparseProduct;
-
-namespace
-{
-// The products of the exponentials and of the sandwich, each built once (detail::boostTables).
-struct BoostProducts
-{
-  SparseProduct wedge{ Bivector::kBlades, Bivector::kBlades, Quadvector::kBlades };
-  SparseProduct quadvectorSquare{ Quadvector::kBlades, Quadvector::kBlades, detail::kScalarBlade };
-  SparseProduct rightContraction{ Quadvector::kBlades, Bivector::kBlades, Bivector::kBlades };
-  SparseProduct evenTimesVector{ detail::kEvenBlades, ConformalVector::kBlades, detail::kOddBlades };
-  SparseProduct oddTimesEvenToVector{ detail::kOddBlades, detail::kEvenBlades,
-                                      ConformalVector::kBlades };
-  SparseProduct evenTimesOrigin{ detail::kEvenBlades,
-                                 std::array<unsigned, 1>{ ConformalVector::kBlades[ConformalVector::NO] },
-                                 detail::kOddBlades };
-  detail::BoostTables tables{ wedge.terms(),           quadvectorSquare.terms(),
-                              rightContraction.terms(), evenTimesVector.terms(),
-                              oddTimesEvenToVector.terms(), evenTimesOrigin.terms() };
-};
-
-const BoostProducts& boostProducts()
-{
-  static const BoostProducts products;
-  return products;
-}
-} // namespace
-
-const detail::BoostTables& detail::boostTables()
-{
-  return boostProducts().tables;
-}
 
 Even reverse(const Even& k)
 {
@@ -73,21 +42,21 @@ double scalarSquare(const Bivector& b)
 double scalarSquare(const Quadvector& q)
 {
   double r = 0.0;
-  detail::applyTerms(boostProducts().tables.quadvectorSquare, 1, q.c.data(), q.c.data(), &r);
+  detail::kQuadvectorSquare.apply(q.c.data(), q.c.data(), &r);
   return r;
 }
 
 Quadvector wedge(const Bivector& a, const Bivector& b)
 {
   Quadvector r;
-  boostProducts().wedge.apply(a.c.data(), b.c.data(), r.c.data());
+  detail::kWedge.apply(a.c.data(), b.c.data(), r.c.data());
   return r;
 }
 
 Bivector rightContraction(const Quadvector& q, const Bivector& b)
 {
   Bivector r;
-  boostProducts().rightContraction.apply(q.c.data(), b.c.data(), r.c.data());
+  detail::kRightContraction.apply(q.c.data(), b.c.data(), r.c.data());
   return r;
 }
 

@@ -262,6 +262,13 @@ BOOSTED_DUAL_INLINE void laneSinCos(const Dual<T, N>& x, Dual<T, N>& sine, Dual<
   cosine = chain(x, c, -s);
 }
 
+/// The value without its tangents (LaneMath.h's valueOf; of a nested Dual, the innermost value).
+template <typename T, int N>
+inline auto valueOf(const Dual<T, N>& x)
+{
+  return valueOf(x.v);
+}
+
 /// Whether a number type carries tangents.
 template <typename T>
 constexpr bool kHasTangents = false;

@@ -44,8 +44,7 @@ Even expPaper(const Bivector& b, ExpScaling scaling)
 Even expExact(const Bivector& b, ExpScaling scaling)
 {
   detail::EvenArray k;
-  core::exactExponential(
-    detail::boostTables(), b.c.data(), scaling == ExpScaling::AvoidOverflow, k.data());
+  core::exactExponential(b.c.data(), scaling == ExpScaling::AvoidOverflow, k.data());
   return detail::unpack(k);
 }
 

@@ -4,7 +4,6 @@
 #include "PointMapCore.h"
 #include "PointPairKernel.h"
 #include "PointPairKernelDispatch.h"
-#include "ProductTerms.h"
 #include "SurfaceJetDual.h"
 
 #include <algorithm>
@@ -23,9 +22,8 @@ std::size_t mapPointsByExponentials(const Bivector* b,
   constexpr int L = kernel::kLanes;
   constexpr int kBivector = Bivector::Count;
   const kernel::MapBlockBy mapBlockBy = kernel::activeMapBlockBy();
-  kernel::FieldArgs args; // no field: only the rule and its tables are read
+  kernel::FieldArgs args; // no field: only the rule is read
   args.exactRule = rule == ExponentialRule::Exact;
-  args.tables = &detail::boostTables();
   std::size_t unmapped = 0;
   alignas(64) double bivectors[kBivector * L];
   alignas(64) double xyz[3 * L];
@@ -70,9 +68,8 @@ using core::secondOf;
 bool mapJetByExponential(
   const SurfaceJet* bivector, const SurfaceJet* point, ExponentialRule rule, SurfaceJet* image)
 {
-  kernel::FieldArgs args; // no field: only the rule and its tables are read
+  kernel::FieldArgs args; // no field: only the rule is read
   args.exactRule = rule == ExponentialRule::Exact;
-  args.tables = &detail::boostTables();
   Second b[Bivector::Count], p[3], out[3];
   for (int c = 0; c < Bivector::Count; ++c)
   {

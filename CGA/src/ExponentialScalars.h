@@ -83,9 +83,12 @@ inline void planeSeries(const T& m, const T& lh, T& c, T& sHat)
 {
   // l = m^2 lh = +-x^2, from m and lh (no overflow where the series is taken: m (m |lh|) = x^2 <
   // 1e-4), not from x: a Dual's tangents of x = m sqrt|lh| are lost where lh = 0, those of l not.
+  // Products by the reciprocals, not divisions (a division costs several multiplications; the
+  // reciprocals' rounding, half an ulp of each factor, is below the series' own).
   const T l = m * (m * lh);
-  c = 1.0 + l / 2.0 * (1.0 + l / 12.0 * (1.0 + l / 30.0 * (1.0 + l / 56.0)));
-  sHat = m * (1.0 + l / 6.0 * (1.0 + l / 20.0 * (1.0 + l / 42.0 * (1.0 + l / 72.0))));
+  c = 1.0 + l * 0.5 * (1.0 + l * (1.0 / 12.0) * (1.0 + l * (1.0 / 30.0) * (1.0 + l * (1.0 / 56.0))));
+  sHat = m * (1.0 + l * (1.0 / 6.0) *
+    (1.0 + l * (1.0 / 20.0) * (1.0 + l * (1.0 / 42.0) * (1.0 + l * (1.0 / 72.0)))));
 }
 
 template <typename T>
@@ -187,12 +190,14 @@ inline ExactCoefficients<T> exactCoefficients(const T& m, const T& l1, const T& 
   return k;
 }
 
-// Whether expExact takes the power series in B^2 = s + W (both squares of B at most 1 in size).
-inline bool exactUsesSeries(double m, double l1, double l2)
+// Per lane, whether expExact takes the power series in B^2 = s + W (both squares of B at most 1
+// in size), for the scale m of B and the plane squares l1, l2 of B/m.
+template <typename T>
+inline Mask<T> exactUsesSeries(const T& m, const T& l1, const T& l2)
 {
-  const double largest = __builtin_fabs(l1) < __builtin_fabs(l2) ? __builtin_fabs(l2)
-                                                                  : __builtin_fabs(l1);
-  return largest == 0.0 || m * largest * m <= 1.0;
+  const T a1 = magnitude(l1), a2 = magnitude(l2);
+  const T largest = select(lessThan(a1, a2), a2, a1);
+  return maskOr(equalTo(largest, T{}), lessEqual((m * largest) * m, splat<T>(1.0)));
 }
 
 // The power series of expExact: exp(B) = a0 + a4 W + b0 B + b4 <W B>_2 with B^2k = ak + bk W,

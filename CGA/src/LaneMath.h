@@ -113,6 +113,43 @@ inline double magnitude(double x)
   return __builtin_fabs(x);
 }
 
+/// The value of a number (a Dual's without its tangents: DualNumber.h; the lane vector's is itself).
+inline double valueOf(double x)
+{
+  return x;
+}
+
+/// The power of two 2^e with 2^e <= x < 2^(e+1) for a normal x > 0 (its exponent bits alone),
+/// 2^-1022 for a subnormal x. (Infinite and NaN x give infinity: callers select them away.)
+inline double binaryFloor(double x)
+{
+  unsigned long long bits;
+  __builtin_memcpy(&bits, &x, sizeof bits);
+  bits &= 0x7ff0000000000000ULL;
+  bits = bits == 0 ? 0x0010000000000000ULL : bits;
+  double r;
+  __builtin_memcpy(&r, &bits, sizeof r);
+  return r;
+}
+
+/// The exponent field of x less its bias, as a number: e with 2^e <= |x| < 2^(e+1) for a normal x,
+/// -1023 for a subnormal x or 0.
+inline double binaryExponentOf(double x)
+{
+  unsigned long long bits;
+  __builtin_memcpy(&bits, &x, sizeof bits);
+  return static_cast<double>(static_cast<int>((bits >> 52) & 0x7ff) - 1023);
+}
+
+/// 2^k for an integral k with |k| <= 1022, exactly.
+inline double powerOfTwoOf(double k)
+{
+  const unsigned long long bits = static_cast<unsigned long long>(static_cast<int>(k) + 1023) << 52;
+  double r;
+  __builtin_memcpy(&r, &bits, sizeof r);
+  return r;
+}
+
 /// A number type's value c on every lane.
 template <typename T>
 inline T splat(double c)

@@ -22,10 +22,13 @@
 #include "DualNumber.h"
 #include "ExponentialScalars.h"
 #include "LaneMath.h"
+#include "BoostProducts.h"
 #include "PointPairKernel.h"
-#include "ProductTerms.h"
 
 #include "cga/Compact.h" // for the component enumerators only: nothing of it is called here
+
+#include <type_traits>
+#include <utility>
 
 // The small pieces the kernel's hot path calls are inlined whatever the compiler's size budget
 // (a call passes the lane vectors through memory).
@@ -60,38 +63,61 @@ BOOSTED_CORE_INLINE T scalarSquare(const T* b)
     2.0 * (b[E1NO] * b[E1NI] + b[E2NO] * b[E2NI] + b[E3NO] * b[E3NI]) + b[NONI] * b[NONI];
 }
 
-/// Largest absolute component, NaN when one is NaN (Coefficients::maxAbs).
+/// The value type of T: T itself, or a Dual's value without its tangents (DualNumber.h), on which
+/// the per-lane decisions (scales, branches, flags) are made.
 template <typename T>
-BOOSTED_CORE_INLINE LaneArray<T> maxAbs(const T* b)
+using ValueOf = decltype(valueOf(std::declval<const T&>()));
+
+/// A value as a T (for a Dual: a constant).
+template <typename T, typename V>
+BOOSTED_CORE_INLINE T asNumber(const V& v)
 {
-  constexpr int L = kLanesOf<T>;
-  alignas(64) double lanes[kBivector][L];
+  if constexpr (std::is_same<T, V>::value)
+  {
+    return v;
+  }
+  else
+  {
+    const LaneArray<V> lanes(v);
+    T x;
+    fromLanes(lanes.v, x);
+    return x;
+  }
+}
+
+/// Per lane, whether x is finite (|x| < inf: NaN is not).
+template <typename V>
+BOOSTED_CORE_INLINE Mask<V> finiteLanes(const V& x)
+{
+  return lessThan(magnitude(x), splat<V>(__builtin_inf()));
+}
+
+/// The per-lane flags of a mask as bools.
+template <typename V>
+BOOSTED_CORE_INLINE void toFlags(const Mask<V>& mask, bool* flags)
+{
+  const LaneArray<V> lanes(select(mask, splat<V>(1.0), V{}));
+  for (int l = 0; l < kLanesOf<V>; ++l)
+  {
+    flags[l] = lanes.v[l] != 0.0;
+  }
+}
+
+/// Largest absolute component, NaN when one is NaN (Coefficients::maxAbs), in vector compares and
+/// blends: the running maximum and a NaN flag apart (a NaN component never wins a comparison).
+template <typename T>
+BOOSTED_CORE_INLINE ValueOf<T> maxAbs(const T* b)
+{
+  using V = ValueOf<T>;
+  V m = V{};
+  Mask<V> nan = lessThan(m, m); // no lane
   for (int c = 0; c < kBivector; ++c)
   {
-    toLanes(b[c], lanes[c]);
+    const V a = magnitude(valueOf(b[c]));
+    m = select(lessThan(m, a), a, m);
+    nan = maskOr(nan, maskNot(equalTo(a, a)));
   }
-  // The running maximum and a NaN flag, kept apart so that the loop vectorizes.
-  LaneArray<T> m;
-  bool nan[L];
-  for (int l = 0; l < L; ++l)
-  {
-    m.v[l] = 0.0;
-    nan[l] = false;
-  }
-  for (int c = 0; c < kBivector; ++c)
-  {
-    for (int l = 0; l < L; ++l)
-    {
-      const double a = __builtin_fabs(lanes[c][l]);
-      m.v[l] = a > m.v[l] ? a : m.v[l];
-      nan[l] = nan[l] | (a != a);
-    }
-  }
-  for (int l = 0; l < L; ++l)
-  {
-    m.v[l] = nan[l] ? __builtin_nan("") : m.v[l];
-  }
-  return m;
+  return select(nan, splat<V>(__builtin_nan("")), m);
 }
 
 /// b = -strength B(p), B(p) = sum_i w_i G_i / (k |p - x_i|^2 + eps) (PointPairField::generatorAt
@@ -123,14 +149,16 @@ BOOSTED_CORE_INLINE void fieldBivector(const kernel::FieldArgs& args, const T* p
   }
 }
 
-/// Per lane, whether the largest component m of B is finite, and whether it is zero.
+/// The scale m of B: the power of two 2^e with 2^e <= |B|_max < 2^(e+1), and per lane whether
+/// |B|_max is finite, zero, or both finite and non-zero (usable: m is a scale).
 template <typename T>
 struct Scale
 {
-  LaneArray<T> m;
-  bool finite[kLanesOf<T>], zero[kLanesOf<T>];
+  ValueOf<T> m;
+  Mask<T> finite, zero, usable;
 
-  bool usable(int l) const { return finite[l] && !zero[l]; }
+  /// m where it is usable, 1 elsewhere.
+  ValueOf<T> usableOrOne() const { return select(usable, m, splat<ValueOf<T>>(1.0)); }
 };
 
 /// NaN where B is not finite, value elsewhere: a selection on T itself, so that a Dual
@@ -139,26 +167,25 @@ struct Scale
 template <typename T>
 BOOSTED_CORE_INLINE T nanWhereNotFinite(const Scale<T>& scale, const T& value)
 {
-  const Mask<T> finite = lessThan(scale.m.value(), splat<T>(__builtin_inf())); // NaN: false
-  return select(finite, value, splat<T>(__builtin_nan("")));
+  return select(scale.finite, value, splat<T>(__builtin_nan("")));
 }
 
-/// The scale m of B, and u = B / m where m is non-zero and finite (B where it is not).
+/// The scale m of B, and u = B / m where m is non-zero and finite (B where it is not): m a power
+/// of two, so that u is B exactly (1/m is exact: one division, not one per component), its
+/// components below 2 in size.
 template <typename T>
 BOOSTED_CORE_INLINE void unitScaled(const T* b, Scale<T>& scale, T* u)
 {
-  scale.m = maxAbs(b);
-  LaneArray<T> divisor;
-  for (int l = 0; l < kLanesOf<T>; ++l)
-  {
-    scale.finite[l] = __builtin_isfinite(scale.m.v[l]);
-    scale.zero[l] = scale.m.v[l] == 0.0;
-    divisor.v[l] = scale.usable(l) ? scale.m.v[l] : 1.0;
-  }
-  const T d = divisor.value();
+  using V = ValueOf<T>;
+  const V largest = maxAbs(b);
+  scale.finite = finiteLanes(largest);
+  scale.zero = equalTo(largest, V{});
+  scale.usable = maskAnd(scale.finite, maskNot(scale.zero));
+  scale.m = binaryFloor(largest);
+  const T inverse = asNumber<T>(1.0 / scale.usableOrOne());
   for (int c = 0; c < kBivector; ++c)
   {
-    u[c] = b[c] / d;
+    u[c] = b[c] * inverse;
   }
 }
 
@@ -168,13 +195,8 @@ BOOSTED_CORE_INLINE void unitScaled(const T* b, Scale<T>& scale, T* u)
 template <typename T>
 BOOSTED_CORE_INLINE void bladeExponential(const Scale<T>& scale, const T& s, bool divideByCosh, T* u, T& c)
 {
-  constexpr int L = kLanesOf<T>;
-  LaneArray<T> m = scale.m;
-  for (int l = 0; l < L; ++l)
-  {
-    m.v[l] = scale.usable(l) ? m.v[l] : 1.0;
-  }
-  const detail::PlaneFunctions<T> f = detail::planeFunctions(m.value(), s, divideByCosh);
+  const detail::PlaneFunctions<T> f =
+    detail::planeFunctions(asNumber<T>(scale.usableOrOne()), s, divideByCosh);
   c = nanWhereNotFinite(scale, f.c);
   const T factor = nanWhereNotFinite(scale, f.sHat);
   for (int i = 0; i < kBivector; ++i)
@@ -210,13 +232,12 @@ BOOSTED_CORE_INLINE T dropRounding(const T& q, const T& terms)
 /// rounding of its terms. For a nilpotent B (a lone point pair) they are all rounding: dropping
 /// them keeps exp(B) = 1 + B, instead of a closed form in the square roots of noise times m^2.
 template <typename T>
-BOOSTED_CORE_INLINE void unitInvariants(
-  const detail::BoostTables& tables, const T* u, T* w, T& w2, T& s, bool dropNoise)
+BOOSTED_CORE_INLINE void unitInvariants(const T* u, T* w, T& w2, T& s, bool dropNoise)
 {
   if (!dropNoise)
   {
-    detail::applyTerms(tables.wedge, kQuadvector, u, u, w);
-    detail::applyTerms(tables.quadvectorSquare, 1, w, w, &w2);
+    detail::applyProduct<detail::kWedge>(u, u, w);
+    detail::applyProduct<detail::kQuadvectorSquare>(w, w, &w2);
     s = scalarSquare(u);
     return;
   }
@@ -225,15 +246,15 @@ BOOSTED_CORE_INLINE void unitInvariants(
   {
     absU[c] = magnitude(u[c]);
   }
-  detail::applyTerms(tables.wedge, kQuadvector, u, u, w);
-  detail::applyTermMagnitudes(tables.wedge, kQuadvector, absU, absU, wTerms);
+  detail::applyProduct<detail::kWedge>(u, u, w);
+  detail::applyProductMagnitudes<detail::kWedge>(absU, absU, wTerms);
   for (int c = 0; c < kQuadvector; ++c)
   {
     w[c] = dropRounding(w[c], wTerms[c]);
     absW[c] = magnitude(w[c]);
   }
-  detail::applyTerms(tables.quadvectorSquare, 1, w, w, &w2);
-  detail::applyTermMagnitudes(tables.quadvectorSquare, 1, absW, absW, &w2Terms);
+  detail::applyProduct<detail::kQuadvectorSquare>(w, w, &w2);
+  detail::applyProductMagnitudes<detail::kQuadvectorSquare>(absW, absW, &w2Terms);
   w2 = dropRounding(w2, w2Terms);
   const T sTerms = absU[E12] * absU[E12] + absU[E13] * absU[E13] + absU[E23] * absU[E23] +
     2.0 * (absU[E1NO] * absU[E1NI] + absU[E2NO] * absU[E2NI] + absU[E3NO] * absU[E3NI]) +
@@ -252,11 +273,10 @@ struct UnitBivector
 /// dropNoise: unitInvariants drops the invariants that are rounding (needed where B may be
 /// nilpotent; the map's field frame, taken only where B is far from nilpotent, skips it).
 template <typename T>
-BOOSTED_CORE_INLINE void unitBivector(
-  const detail::BoostTables& tables, const T* b, UnitBivector<T>& v, bool dropNoise = true)
+BOOSTED_CORE_INLINE void unitBivector(const T* b, UnitBivector<T>& v, bool dropNoise = true)
 {
   unitScaled(b, v.scale, v.u);
-  unitInvariants(tables, v.u, v.w, v.w2, v.s, dropNoise);
+  unitInvariants(v.u, v.w, v.w2, v.s, dropNoise);
 }
 
 /// exp(B) = a0 + a4 W + b0 B + b4 <W B>_2 from the power series in B^2 = s + W
@@ -291,37 +311,27 @@ void seriesExponential(const T* b, const T& m, const T& su, const T* wUnit, cons
 /// The Exact rule (expExact) into k (detail::pack order): the power series where both squares of B
 /// are at most 1 in size, else the closed form in u = B/m; NaN where B is not finite.
 template <typename T>
-void exactExponential(
-  const detail::BoostTables& tables, const T* b, const UnitBivector<T>& unit, bool divideByCosh, T* k)
+void exactExponential(const T* b, const UnitBivector<T>& unit, bool divideByCosh, T* k)
 {
-  constexpr int L = kLanesOf<T>;
+  using V = ValueOf<T>;
   const Scale<T>& scale = unit.scale;
   const T* u = unit.u;
   const T* w = unit.w;
   const T& w2 = unit.w2;
   const T& su = unit.s;
-  const LaneArray<T>& m = scale.m;
   T wu[kBivector];
-  detail::applyTerms(tables.rightContraction, kBivector, w, u, wu);
+  detail::applyProduct<detail::kRightContraction>(w, u, wu);
   T l1Value, l2Value;
   detail::planeSquares(su, w2, l1Value, l2Value);
-  const LaneArray<T> l1(l1Value), l2(l2Value);
-  LaneArray<T> mUsable;
-  bool useSeries[L], closed[L];
-  bool anySeries = false, anyClosed = false, allSeries = true, allClosed = true;
-  for (int l = 0; l < L; ++l)
-  {
-    // B = 0 takes the series with m = 1: exp(0) = 1, and a Dual gets the tangents of exp at 0.
-    useSeries[l] = (scale.usable(l) && detail::exactUsesSeries(m.v[l], l1.v[l], l2.v[l])) ||
-      (scale.finite[l] && scale.zero[l]);
-    closed[l] = scale.usable(l) && !useSeries[l];
-    mUsable.v[l] = scale.usable(l) ? m.v[l] : 1.0;
-    anySeries = anySeries || useSeries[l];
-    anyClosed = anyClosed || closed[l];
-    allSeries = allSeries && useSeries[l];
-    allClosed = allClosed && closed[l];
-  }
-  const T mValue = mUsable.value();
+  const V m = scale.usableOrOne();
+  // B = 0 takes the series with m = 1: exp(0) = 1, and a Dual gets the tangents of exp at 0.
+  const Mask<V> useSeries = maskOr(
+    maskAnd(scale.usable, detail::exactUsesSeries(m, valueOf(l1Value), valueOf(l2Value))),
+    maskAnd(scale.finite, scale.zero));
+  const Mask<V> closed = maskAnd(scale.usable, maskNot(useSeries));
+  const bool anySeries = anyLane(useSeries), anyClosed = anyLane(closed);
+  const bool allSeries = allLanes(useSeries), allClosed = allLanes(closed);
+  const T mValue = asNumber<T>(m);
   T fromSeries[kEven] = {};
   if (anySeries)
   {
@@ -355,25 +365,18 @@ void exactExponential(
     return;
   }
   // Each lane takes one of the two, or NaN (selections on T: see nanWhereNotFinite).
-  LaneArray<T> seriesFlags;
-  for (int l = 0; l < L; ++l)
-  {
-    seriesFlags.v[l] = useSeries[l] ? 1.0 : 0.0;
-  }
-  const Mask<T> seriesLanes = equalTo(seriesFlags.value(), splat<T>(1.0));
   for (int i = 0; i < kEven; ++i)
   {
-    k[i] = nanWhereNotFinite(scale, select(seriesLanes, fromSeries[i], fromClosed[i]));
+    k[i] = nanWhereNotFinite(scale, select(useSeries, fromSeries[i], fromClosed[i]));
   }
 }
 
 template <typename T>
-void exactExponential(
-  const detail::BoostTables& tables, const T* b, bool divideByCosh, T* k, bool dropNoise = true)
+void exactExponential(const T* b, bool divideByCosh, T* k, bool dropNoise = true)
 {
   UnitBivector<T> unit;
-  unitBivector(tables, b, unit, dropNoise);
-  exactExponential(tables, b, unit, divideByCosh, k);
+  unitBivector(b, unit, dropNoise);
+  exactExponential(b, unit, divideByCosh, k);
 }
 
 /// up(p) = no + p + |p|^2/2 ni (ConformalVector::point).
@@ -422,21 +425,21 @@ BOOSTED_CORE_INLINE void sandwichScalarBivector(const T& c, const T* b, const T*
 /// <K X ~K>_1 for a full even K (detail::pack order) as two sparse products: the odd element
 /// K X, then only the grade-1 part of (K X) ~K.
 template <typename T>
-void sandwichEven(const detail::BoostTables& tables, const T* k, const T* x, T* r)
+void sandwichEven(const T* k, const T* x, T* r)
 {
   T reversed[kEven], odd[kOdd];
   for (int s = 0; s < kEven; ++s)
   {
     reversed[s] = (s >= 1 && s <= kBivector) ? -1.0 * k[s] : k[s];
   }
-  detail::applyTerms(tables.evenTimesVector, kOdd, k, x, odd);
-  detail::applyTerms(tables.oddTimesEvenToVector, kVector, odd, reversed, r);
+  detail::applyProduct<detail::kEvenTimesVector>(k, x, odd);
+  detail::applyProduct<detail::kOddTimesEvenToVector>(odd, reversed, r);
 }
 
 /// <K no ~K>_1 for a full even K: sandwichEven of the origin, with only the terms of K X that
-/// no contributes (BoostTables::evenTimesOrigin).
+/// no contributes (detail::kEvenTimesOrigin).
 template <typename T>
-void sandwichOrigin(const detail::BoostTables& tables, const T* k, T* r)
+void sandwichOrigin(const T* k, T* r)
 {
   T reversed[kEven], odd[kOdd];
   for (int s = 0; s < kEven; ++s)
@@ -444,28 +447,35 @@ void sandwichOrigin(const detail::BoostTables& tables, const T* k, T* r)
     reversed[s] = (s >= 1 && s <= kBivector) ? -1.0 * k[s] : k[s];
   }
   const T one[1] = { splat<T>(1.0) };
-  detail::applyTerms(tables.evenTimesOrigin, kOdd, k, one, odd);
-  detail::applyTerms(tables.oddTimesEvenToVector, kVector, odd, reversed, r);
+  detail::applyProduct<detail::kEvenTimesOrigin>(k, one, odd);
+  detail::applyProduct<detail::kOddTimesEvenToVector>(odd, reversed, r);
 }
 
-/// fn(r): the Euclidean point r_e / r_no, and whether it is mapped (normalizePoint: the weight is
-/// non-zero, the point and p are finite).
+/// fn(r): the Euclidean point r_e / r_no, and per lane whether it is mapped (normalizePoint: the
+/// weight is non-zero, the point and p are finite).
 template <typename T>
-BOOSTED_CORE_INLINE void normalize(const T* p, const T* r, T* image, bool* mapped)
+BOOSTED_CORE_INLINE Mask<T> normalizeLanes(const T* p, const T* r, T* image)
 {
+  using V = ValueOf<T>;
   const T alpha = r[NO];
   for (int i = 0; i < 3; ++i)
   {
     image[i] = r[E1 + i] / alpha;
   }
-  const LaneArray<T> a(alpha), x(image[0]), y(image[1]), z(image[2]);
-  const LaneArray<T> px(p[0]), py(p[1]), pz(p[2]);
-  for (int l = 0; l < kLanesOf<T>; ++l)
+  const V a = valueOf(alpha);
+  Mask<V> mapped = maskAnd(maskNot(equalTo(a, V{})), finiteLanes(a));
+  for (int i = 0; i < 3; ++i)
   {
-    mapped[l] = a.v[l] != 0.0 && __builtin_isfinite(a.v[l]) && __builtin_isfinite(x.v[l]) &&
-      __builtin_isfinite(y.v[l]) && __builtin_isfinite(z.v[l]) && __builtin_isfinite(px.v[l]) &&
-      __builtin_isfinite(py.v[l]) && __builtin_isfinite(pz.v[l]);
+    mapped = maskAnd(mapped, maskAnd(finiteLanes(valueOf(image[i])), finiteLanes(valueOf(p[i]))));
   }
+  return mapped;
+}
+
+/// normalizeLanes with the flags as bools.
+template <typename T>
+BOOSTED_CORE_INLINE void normalize(const T* p, const T* r, T* image, bool* mapped)
+{
+  toFlags<ValueOf<T>>(normalizeLanes(p, r, image), mapped);
 }
 
 /// T(t) B ~T(t) for the translator T(t) = 1 - t ni/2: with B = E + A_i e_i^no + C_i e_i^ni + d no^ni
@@ -499,50 +509,33 @@ BOOSTED_CORE_INLINE void translateBivector(const T* b, const T* t, T* out)
   out[NONI] = d - at;
 }
 
-/// 2^k for an integer |k| <= 1022, exactly.
-inline double powerOfTwo(int k)
-{
-  const unsigned long long bits = static_cast<unsigned long long>(k + 1023) << 52;
-  double x;
-  __builtin_memcpy(&x, &bits, sizeof x);
-  return x;
-}
-
-/// The binary exponent of a finite x > 0 (that of its leading bit; subnormals count as -1023).
-inline int binaryExponent(double x)
-{
-  unsigned long long bits;
-  __builtin_memcpy(&bits, &x, sizeof bits);
-  return static_cast<int>((bits >> 52) & 0x7ff) - 1023;
-}
-
-inline double larger(double a, double b)
-{
-  return a < b ? b : a;
-}
-
 /// Balances B about the origin by the dilation x -> 2^k x, which scales the e_i^no components by
 /// 2^-k and the e_i^ni ones by 2^k (exactly: powers of two), with k making both about the same
 /// size. Returns 2^-k per lane: exp of the balanced B maps 2^k x to 2^k x', so x' = 2^-k times
 /// its image. Where one of the two parts is zero or B is not finite, k = 0.
 template <typename T>
-BOOSTED_CORE_INLINE LaneArray<T> balanceByDilation(T* b)
+BOOSTED_CORE_INLINE ValueOf<T> balanceByDilation(T* b)
 {
-  constexpr int L = kLanesOf<T>;
-  const LaneArray<T> a1(b[E1NO]), a2(b[E2NO]), a3(b[E3NO]), c1(b[E1NI]), c2(b[E2NI]), c3(b[E3NI]);
-  LaneArray<T> up, down;
-  for (int l = 0; l < L; ++l)
-  {
-    // (a NaN part gives NaN or a smaller value: either way the lane is NaN and k does not matter)
-    const double a = larger(__builtin_fabs(a1.v[l]), larger(__builtin_fabs(a2.v[l]), __builtin_fabs(a3.v[l])));
-    const double c = larger(__builtin_fabs(c1.v[l]), larger(__builtin_fabs(c2.v[l]), __builtin_fabs(c3.v[l])));
-    const bool usable = a > 0.0 && c > 0.0 && a < __builtin_inf() && c < __builtin_inf();
-    const int half = usable ? (binaryExponent(a) - binaryExponent(c)) / 2 : 0;
-    const int k = half < -1022 ? -1022 : (half > 1022 ? 1022 : half);
-    up.v[l] = powerOfTwo(k);
-    down.v[l] = powerOfTwo(-k);
-  }
-  const T upValue = up.value(), downValue = down.value();
+  using V = ValueOf<T>;
+  const auto largest = [](const V& x, const V& y, const V& z) {
+    const V ax = magnitude(x), ay = magnitude(y), az = magnitude(z);
+    const V ayz = select(lessThan(ay, az), az, ay);
+    return select(lessThan(ax, ayz), ayz, ax);
+  };
+  // (a NaN part gives NaN or a smaller value: either way the lane is NaN and k does not matter)
+  const V a = largest(valueOf(b[E1NO]), valueOf(b[E2NO]), valueOf(b[E3NO]));
+  const V c = largest(valueOf(b[E1NI]), valueOf(b[E2NI]), valueOf(b[E3NI]));
+  const Mask<V> usable = maskAnd(maskAnd(lessThan(V{}, a), lessThan(V{}, c)),
+    maskAnd(finiteLanes(a), finiteLanes(c)));
+  // k = half the difference of the exponents, rounded to the nearest integer (adding and taking
+  // away 1.5 2^52 rounds a number below 2^51 in size to an integer), within +-1022.
+  const V difference = binaryExponentOf(a) - binaryExponentOf(c);
+  const V rounding = splat<V>(0x1.8p52);
+  V k = select(usable, (0.5 * difference + rounding) - rounding, V{});
+  k = select(lessThan(k, splat<V>(-1022.0)), splat<V>(-1022.0), k);
+  k = select(lessThan(splat<V>(1022.0), k), splat<V>(1022.0), k);
+  const V up = powerOfTwoOf(k), down = powerOfTwoOf(-k);
+  const T upValue = asNumber<T>(up), downValue = asNumber<T>(down);
   for (const int i : { E1NO, E2NO, E3NO })
   {
     b[i] = downValue * b[i];
@@ -562,15 +555,14 @@ constexpr double kNearlyNilpotent = 1e-4;
 /// p, for a nearly nilpotent B: there the closed form of exp(B) in the field's frame would cancel
 /// terms of size |B|^2 / sqrt|l| (docs/conventions.md section 2 item 12).
 template <typename T>
-void exactImageAroundPoint(const kernel::FieldArgs& args, const T* p, const T* b, T* image, bool* mapped)
+Mask<T> exactImageAroundPoint(const T* p, const T* b, T* image)
 {
-  const detail::BoostTables& tables = *args.tables;
   const T t[3] = { -p[0], -p[1], -p[2] };
   T moved[kBivector];
   translateBivector(b, t, moved);
-  const LaneArray<T> down = balanceByDilation(moved);
+  const ValueOf<T> down = balanceByDilation(moved);
   UnitBivector<T> unit;
-  unitBivector(tables, moved, unit);
+  unitBivector(moved, unit);
   // Where B is a 2-blade (W = 0: a lone point pair, generators at one place) exp(B) = c + sHat B
   // and its sandwich has a closed form; elsewhere the full even K. A block computes the one its
   // lanes need, both only where they differ, and each lane takes its own (the bits of map()).
@@ -599,8 +591,8 @@ void exactImageAroundPoint(const kernel::FieldArgs& args, const T* p, const T* b
   if (full)
   {
     T k[kEven];
-    exactExponential(tables, moved, unit, true, k);
-    sandwichOrigin(tables, k, r);
+    exactExponential(moved, unit, true, k);
+    sandwichOrigin(k, r);
   }
   for (int i = 0; i < kVector; ++i)
   {
@@ -608,18 +600,14 @@ void exactImageAroundPoint(const kernel::FieldArgs& args, const T* p, const T* b
   }
   const T zero[3] = {};
   T offset[3];
-  normalize(zero, r, offset, mapped);
-  const T scale = down.value();
+  Mask<T> mapped = normalizeLanes(zero, r, offset);
+  const T scale = asNumber<T>(down);
   for (int i = 0; i < 3; ++i)
   {
     image[i] = p[i] + scale * offset[i];
+    mapped = maskAnd(mapped, finiteLanes(valueOf(p[i])));
   }
-  const LaneArray<T> px(p[0]), py(p[1]), pz(p[2]);
-  for (int l = 0; l < kLanesOf<T>; ++l)
-  {
-    mapped[l] = mapped[l] && __builtin_isfinite(px.v[l]) && __builtin_isfinite(py.v[l]) &&
-      __builtin_isfinite(pz.v[l]);
-  }
+  return mapped;
 }
 
 /// The map p -> fn(<K up(p) ~K>_1), K = exp(b) by the rule of args, on every lane, for a given
@@ -643,25 +631,25 @@ void mapPointBy(const kernel::FieldArgs& args, T* b, const T* p, T* image, bool*
   // The plane squares of B itself against kNearlyNilpotent m^2 (no division by m: a rough test).
   // The larger one in size is at least |s|/2 (s = l1 + l2; planeSquares keeps that after
   // rounding), so where every lane has |s|/2 above the threshold W need not be formed.
-  const T m = maxAbs(b).value();
+  const T m = asNumber<T>(maxAbs(b));
   const T threshold = (kNearlyNilpotent * m) * m;
   const T s = scalarSquare(b);
   Mask<T> aroundPoint = lessThan(0.5 * magnitude(s), threshold);
   if (anyLane(aroundPoint))
   {
     T w[kQuadvector], w2, l1, l2;
-    detail::applyTerms(args.tables->wedge, kQuadvector, b, b, w);
-    detail::applyTerms(args.tables->quadvectorSquare, 1, w, w, &w2);
+    detail::applyProduct<detail::kWedge>(b, b, w);
+    detail::applyProduct<detail::kQuadvectorSquare>(w, w, &w2);
     detail::planeSquares(s, w2, l1, l2);
     const T largest = select(lessThan(magnitude(l1), magnitude(l2)), magnitude(l2), magnitude(l1));
     aroundPoint = lessThan(largest, threshold);
   }
   const bool anyAround = anyLane(aroundPoint), allAround = allLanes(aroundPoint);
   T around[3];
-  bool aroundMapped[kLanesOf<T>];
+  Mask<T> aroundMapped = aroundPoint;
   if (anyAround)
   {
-    exactImageAroundPoint(args, p, b, around, aroundMapped);
+    aroundMapped = exactImageAroundPoint(p, b, around);
   }
   if (allAround)
   {
@@ -669,28 +657,22 @@ void mapPointBy(const kernel::FieldArgs& args, T* b, const T* p, T* image, bool*
     {
       image[i] = around[i];
     }
-    for (int l = 0; l < kLanesOf<T>; ++l)
-    {
-      mapped[l] = aroundMapped[l];
-    }
+    toFlags<ValueOf<T>>(aroundMapped, mapped);
     return;
   }
   T k[kEven];
-  exactExponential(*args.tables, b, true, k, false);
-  sandwichEven(*args.tables, k, x, r);
-  normalize(p, r, image, mapped);
+  exactExponential(b, true, k, false);
+  sandwichEven(k, x, r);
+  Mask<T> fieldMapped = normalizeLanes(p, r, image);
   if (anyAround)
   {
     for (int i = 0; i < 3; ++i)
     {
       image[i] = select(aroundPoint, around[i], image[i]);
     }
-    const LaneArray<T> laneOf(select(aroundPoint, splat<T>(1.0), T{}));
-    for (int l = 0; l < kLanesOf<T>; ++l)
-    {
-      mapped[l] = laneOf.v[l] != 0.0 ? aroundMapped[l] : mapped[l];
-    }
+    fieldMapped = maskOr(maskAnd(aroundPoint, aroundMapped), maskAnd(maskNot(aroundPoint), fieldMapped));
   }
+  toFlags<ValueOf<T>>(fieldMapped, mapped);
 }
 
 /// The map p -> fn(<K up(p) ~K>_1), K = exp(-strength B(p)) by the rule of args, on every lane.

@@ -227,7 +227,6 @@ kernel::FieldArgs PointPairField::args(double strength, ExponentialRule rule) co
   args.epsilon = this->Epsilon;
   args.strength = strength;
   args.exactRule = rule == ExponentialRule::Exact;
-  args.tables = &detail::boostTables();
   return args;
 }
 

@@ -11,8 +11,6 @@
 // an inline function of a shared header, which the linker could then hand to baseline code.
 #pragma once
 
-#include "ProductTerms.h"
-
 #include <cstddef>
 #include <cstdint>
 
@@ -37,7 +35,6 @@ struct FieldArgs
   double epsilon = 1e-2;
   double strength = 1.0;
   bool exactRule = false;
-  const detail::BoostTables* tables = nullptr; // the products of the Exact rule
 };
 
 /// Maps kLanes points: xyz holds x[kLanes], y[kLanes], z[kLanes]; image receives the images in

@@ -35,6 +35,10 @@ constexpr int kParts = L * static_cast<int>(sizeof(double)) / BOOSTED_KERNEL_VEC
 static_assert(kParts >= 1 && kParts * BOOSTED_KERNEL_VECTOR_BYTES == L * sizeof(double),
               "lanes must fill whole registers");
 
+// The lane operations are always inlined: GCC's size budget left some of them out of line in the
+// long functions of PointMapCore.h, and an out-of-line call passes its lane vectors through memory.
+#define BOOSTED_LANE_INLINE inline __attribute__((always_inline))
+
 typedef long long NativeMask __attribute__((vector_size(BOOSTED_KERNEL_VECTOR_BYTES)));
 
 // Per-lane flags as the vector compares give them: all bits set or clear.
@@ -51,7 +55,7 @@ struct LaneVector
 };
 
 #define BOOSTED_LANE_OPERATOR(op)                                                                \
-  inline LaneVector operator op(LaneVector a, const LaneVector& b)                               \
+  BOOSTED_LANE_INLINE LaneVector operator op(LaneVector a, const LaneVector& b)                  \
   {                                                                                              \
     for (int i = 0; i < kParts; ++i)                                                             \
     {                                                                                            \
@@ -59,7 +63,7 @@ struct LaneVector
     }                                                                                            \
     return a;                                                                                    \
   }                                                                                              \
-  inline LaneVector operator op(LaneVector a, double b)                                          \
+  BOOSTED_LANE_INLINE LaneVector operator op(LaneVector a, double b)                             \
   {                                                                                              \
     for (int i = 0; i < kParts; ++i)                                                             \
     {                                                                                            \
@@ -67,7 +71,7 @@ struct LaneVector
     }                                                                                            \
     return a;                                                                                    \
   }                                                                                              \
-  inline LaneVector operator op(double a, LaneVector b)                                          \
+  BOOSTED_LANE_INLINE LaneVector operator op(double a, LaneVector b)                             \
   {                                                                                              \
     for (int i = 0; i < kParts; ++i)                                                             \
     {                                                                                            \
@@ -81,7 +85,7 @@ BOOSTED_LANE_OPERATOR(*)
 BOOSTED_LANE_OPERATOR(/)
 #undef BOOSTED_LANE_OPERATOR
 
-inline LaneVector operator-(LaneVector a)
+BOOSTED_LANE_INLINE LaneVector operator-(LaneVector a)
 {
   for (int i = 0; i < kParts; ++i)
   {
@@ -92,7 +96,7 @@ inline LaneVector operator-(LaneVector a)
 
 // The comparisons, mask logic and selection of LaneMath.h, lane by lane in vector instructions.
 #define BOOSTED_LANE_COMPARISON(name, op)                                                        \
-  inline LaneMask name(const LaneVector& a, const LaneVector& b)                                 \
+  BOOSTED_LANE_INLINE LaneMask name(const LaneVector& a, const LaneVector& b)                    \
   {                                                                                              \
     LaneMask m;                                                                                  \
     for (int i = 0; i < kParts; ++i)                                                             \
@@ -106,7 +110,7 @@ BOOSTED_LANE_COMPARISON(lessEqual, <=)
 BOOSTED_LANE_COMPARISON(equalTo, ==)
 #undef BOOSTED_LANE_COMPARISON
 
-inline LaneMask maskAnd(LaneMask a, const LaneMask& b)
+BOOSTED_LANE_INLINE LaneMask maskAnd(LaneMask a, const LaneMask& b)
 {
   for (int i = 0; i < kParts; ++i)
   {
@@ -115,7 +119,7 @@ inline LaneMask maskAnd(LaneMask a, const LaneMask& b)
   return a;
 }
 
-inline LaneMask maskOr(LaneMask a, const LaneMask& b)
+BOOSTED_LANE_INLINE LaneMask maskOr(LaneMask a, const LaneMask& b)
 {
   for (int i = 0; i < kParts; ++i)
   {
@@ -124,7 +128,7 @@ inline LaneMask maskOr(LaneMask a, const LaneMask& b)
   return a;
 }
 
-inline LaneMask maskNot(LaneMask a)
+BOOSTED_LANE_INLINE LaneMask maskNot(LaneMask a)
 {
   for (int i = 0; i < kParts; ++i)
   {
@@ -133,7 +137,7 @@ inline LaneMask maskNot(LaneMask a)
   return a;
 }
 
-inline bool anyLane(const LaneMask& m)
+BOOSTED_LANE_INLINE bool anyLane(const LaneMask& m)
 {
   NativeMask acc = m.part[0];
   for (int i = 1; i < kParts; ++i)
@@ -148,12 +152,12 @@ inline bool anyLane(const LaneMask& m)
   return lanes != 0;
 }
 
-inline bool allLanes(const LaneMask& m)
+BOOSTED_LANE_INLINE bool allLanes(const LaneMask& m)
 {
   return !anyLane(maskNot(m));
 }
 
-inline LaneVector select(const LaneMask& m, const LaneVector& a, const LaneVector& b)
+BOOSTED_LANE_INLINE LaneVector select(const LaneMask& m, const LaneVector& a, const LaneVector& b)
 {
   LaneVector r;
   for (int i = 0; i < kParts; ++i)
@@ -163,7 +167,7 @@ inline LaneVector select(const LaneMask& m, const LaneVector& a, const LaneVecto
   return r;
 }
 
-inline LaneVector magnitude(LaneVector x)
+BOOSTED_LANE_INLINE LaneVector magnitude(LaneVector x)
 {
   const NativeMask noSign = NativeMask{} + 0x7fffffffffffffffLL;
   for (int i = 0; i < kParts; ++i)
@@ -173,13 +177,58 @@ inline LaneVector magnitude(LaneVector x)
   return x;
 }
 
+BOOSTED_LANE_INLINE LaneVector valueOf(const LaneVector& x)
+{
+  return x;
+}
+
+// LaneMath.h's binaryFloor on every lane.
+BOOSTED_LANE_INLINE LaneVector binaryFloor(LaneVector x)
+{
+  const NativeMask exponent = NativeMask{} + 0x7ff0000000000000LL;
+  const NativeMask smallest = NativeMask{} + 0x0010000000000000LL;
+  for (int i = 0; i < kParts; ++i)
+  {
+    const NativeMask bits = (NativeMask)x.part[i] & exponent;
+    x.part[i] = (NativeVector)(bits == 0 ? smallest : bits);
+  }
+  return x;
+}
+
+// LaneMath.h's binaryExponentOf and powerOfTwoOf on every lane, without integer conversions: an
+// integer n in [0, 2^52) is the double 2^52 + n less 2^52, whose low bits hold n.
+// (Shifts on unsigned lanes: no sign bit to shift into.)
+typedef unsigned long long NativeBits __attribute__((vector_size(BOOSTED_KERNEL_VECTOR_BYTES)));
+
+BOOSTED_LANE_INLINE LaneVector binaryExponentOf(LaneVector x)
+{
+  const NativeBits field = NativeBits{} + 0x7ffULL;
+  const NativeBits twoTo52 = NativeBits{} + 0x4330000000000000ULL;
+  for (int i = 0; i < kParts; ++i)
+  {
+    const NativeBits e = ((NativeBits)x.part[i] >> 52) & field;
+    x.part[i] = (NativeVector)(e | twoTo52) - (0x1p52 + 1023.0);
+  }
+  return x;
+}
+
+BOOSTED_LANE_INLINE LaneVector powerOfTwoOf(LaneVector k)
+{
+  for (int i = 0; i < kParts; ++i)
+  {
+    const NativeVector biased = k.part[i] + (0x1p52 + 1023.0); // 2^52 + k + 1023, exactly
+    k.part[i] = (NativeVector)((NativeBits)biased << 52);
+  }
+  return k;
+}
+
 // The lane access PointMapCore.h finds by argument-dependent lookup.
-inline void toLanes(const LaneVector& v, double* lanes)
+BOOSTED_LANE_INLINE void toLanes(const LaneVector& v, double* lanes)
 {
   __builtin_memcpy(lanes, &v, sizeof v);
 }
 
-inline void fromLanes(const double* lanes, LaneVector& v)
+BOOSTED_LANE_INLINE void fromLanes(const double* lanes, LaneVector& v)
 {
   __builtin_memcpy(&v, lanes, sizeof v);
 }
@@ -190,7 +239,7 @@ inline void fromLanes(const double* lanes, LaneVector& v)
 // Sleef_cinz_*d1_u10purec that map() calls; otherwise the scalar function per lane.
 #if defined(BOOSTED_HAVE_SLEEF) && defined(BOOSTED_KERNEL_SLEEF)
 #define BOOSTED_LANE_FUNCTION(name, sleefName)                                                   \
-  inline LaneVector name(LaneVector x)                                                           \
+  BOOSTED_LANE_INLINE LaneVector name(LaneVector x)                                              \
   {                                                                                              \
     for (int i = 0; i < kParts; ++i)                                                             \
     {                                                                                            \
@@ -203,7 +252,7 @@ BOOSTED_LANE_FUNCTION(laneSinh, sinh)
 BOOSTED_LANE_FUNCTION(laneTanh, tanh)
 #undef BOOSTED_LANE_FUNCTION
 
-inline void laneSinCos(const LaneVector& x, LaneVector& sine, LaneVector& cosine)
+BOOSTED_LANE_INLINE void laneSinCos(const LaneVector& x, LaneVector& sine, LaneVector& cosine)
 {
   for (int i = 0; i < kParts; ++i)
   {
@@ -214,7 +263,7 @@ inline void laneSinCos(const LaneVector& x, LaneVector& sine, LaneVector& cosine
 }
 #else
 #define BOOSTED_LANE_FUNCTION(name)                                                              \
-  inline LaneVector name(const LaneVector& x)                                                    \
+  BOOSTED_LANE_INLINE LaneVector name(const LaneVector& x)                                       \
   {                                                                                              \
     alignas(64) double lanes[L];                                                                 \
     toLanes(x, lanes);                                                                           \
@@ -231,7 +280,7 @@ BOOSTED_LANE_FUNCTION(laneSinh)
 BOOSTED_LANE_FUNCTION(laneTanh)
 #undef BOOSTED_LANE_FUNCTION
 
-inline void laneSinCos(const LaneVector& x, LaneVector& sine, LaneVector& cosine)
+BOOSTED_LANE_INLINE void laneSinCos(const LaneVector& x, LaneVector& sine, LaneVector& cosine)
 {
   alignas(64) double lanes[L], s[L], c[L];
   toLanes(x, lanes);
@@ -246,7 +295,7 @@ inline void laneSinCos(const LaneVector& x, LaneVector& sine, LaneVector& cosine
 
 // Correctly rounded, as the scalar sqrt: the instruction set's own (BOOSTED_KERNEL_SQRT) where the
 // including file names it.
-inline LaneVector laneSqrt(LaneVector x)
+BOOSTED_LANE_INLINE LaneVector laneSqrt(LaneVector x)
 {
 #ifdef BOOSTED_KERNEL_SQRT
   for (int i = 0; i < kParts; ++i)

@@ -11,7 +11,7 @@ ConformalVector sandwichGrade1(const Even& k, const ConformalVector& x)
 {
   const detail::EvenArray kk = detail::pack(k);
   ConformalVector r;
-  core::sandwichEven(detail::boostTables(), kk.data(), x.c.data(), r.c.data());
+  core::sandwichEven(kk.data(), x.c.data(), r.c.data());
   return r;
 }
 

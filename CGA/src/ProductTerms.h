@@ -26,17 +26,6 @@ struct ProductTerms
   int size;
 };
 
-/// The products of the exponentials and of the sandwich (Exponential.cpp, PointSandwich.cpp):
-/// B ^ B, Q Q, Q _| B; K X (even times vector into odd) and <(K X) ~K>_1; K no (the terms of
-/// K X for X = no, whose one operand slot holds its coefficient). Built once (CompactAlgebra.cpp).
-struct BoostTables
-{
-  ProductTerms wedge, quadvectorSquare, rightContraction;
-  ProductTerms evenTimesVector, oddTimesEvenToVector;
-  ProductTerms evenTimesOrigin;
-};
-const BoostTables& boostTables();
-
 namespace
 {
 /// r = a b for the first `results` slots: each is the sum, from zero and in the table's order, of

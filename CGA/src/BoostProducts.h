@@ -1,0 +1,28 @@
+// Internal: the products of the exponentials and of the sandwich (PointMapCore.h), built at
+// compile time: B ^ B, Q Q, Q _| B; K X (even times vector into odd) and <(K X) ~K>_1; K no (the
+// terms of K X for X = no, whose one operand slot holds its coefficient). applyProduct<kWedge>
+// and the others evaluate them as straight-line code (SparseProduct.h).
+//
+// Internal linkage only (constexpr objects in an unnamed namespace): see ProductTerms.h.
+#pragma once
+
+#include "CompactLayout.h"
+#include "SparseProduct.h"
+
+namespace cga
+{
+namespace detail
+{
+namespace
+{
+constexpr SparseProduct kWedge{ Bivector::kBlades, Bivector::kBlades, Quadvector::kBlades };
+constexpr SparseProduct kQuadvectorSquare{ Quadvector::kBlades, Quadvector::kBlades, kScalarBlade };
+constexpr SparseProduct kRightContraction{ Quadvector::kBlades, Bivector::kBlades, Bivector::kBlades };
+constexpr SparseProduct kEvenTimesVector{ kEvenBlades, ConformalVector::kBlades, kOddBlades };
+constexpr SparseProduct kOddTimesEvenToVector{ kOddBlades, kEvenBlades, ConformalVector::kBlades };
+constexpr SparseProduct kEvenTimesOrigin{ kEvenBlades,
+                                          std::array<unsigned, 1>{ ConformalVector::kBlades[ConformalVector::NO] },
+                                          kOddBlades };
+} // namespace
+} // namespace detail
+} // namespace cga
