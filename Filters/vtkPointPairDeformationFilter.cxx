@@ -5,7 +5,6 @@
 #include "vtkBoostedBlockLoop.h"
 #include "vtkBoostedExponentialRule.h"
 #include "vtkBoostedGeneratorGlyphs.h"
-#include "vtkBoostedGeneratorPort.h"
 #include "vtkBoostedGeneratorRows.h"
 #include "vtkBoostedMemoryBudget.h"
 #include "vtkBoostedTimeSweep.h"
@@ -303,36 +302,13 @@ void deformPoints(vtkPointPairDeformationFilter* self, const cga::PointPairField
 } // namespace
 
 vtkPointPairDeformationFilter::vtkPointPairDeformationFilter()
-  : Generators(new vtkBoostedRowList(this, "Generator", vtkBoostedGeneratorRows::BlankRow()))
+  : vtkPointPairFieldAlgorithm(1) // the Generators input is port 1
 {
-  static_assert(vtkBoostedGeneratorKinds<vtkPointPairDeformationFilter>(), "");
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(2); // the deformed input, the generators
-  this->SetGeneratorDirectionArrayName("Direction");
-  this->SetGeneratorWeightArrayName("Weight");
-  this->SetGeneratorKindArrayName("Kind");
-  this->SetGeneratorPitchArrayName("Pitch");
 }
 
-vtkPointPairDeformationFilter::~vtkPointPairDeformationFilter()
-{
-  this->SetGeneratorDirectionArrayName(nullptr);
-  this->SetGeneratorWeightArrayName(nullptr);
-  this->SetGeneratorKindArrayName(nullptr);
-  this->SetGeneratorPitchArrayName(nullptr);
-}
-
-vtkBoostedGeneratorRowMethods(vtkPointPairDeformationFilter, Generators)
-
-void vtkPointPairDeformationFilter::SetGeneratorsConnection(vtkAlgorithmOutput* output)
-{
-  this->SetInputConnection(1, output);
-}
-
-void vtkPointPairDeformationFilter::SetGeneratorsData(vtkDataObject* data)
-{
-  this->SetInputData(1, data);
-}
+vtkPointPairDeformationFilter::~vtkPointPairDeformationFilter() = default;
 
 int vtkPointPairDeformationFilter::FillInputPortInformation(int port, vtkInformation* info)
 {
@@ -421,11 +397,8 @@ int vtkPointPairDeformationFilter::RequestData(
     return 0;
   }
 
-  // The clamp macros let NaN through.
-  if (!std::isfinite(this->Strength) || std::isnan(this->Falloff) || std::isnan(this->Epsilon))
+  if (!this->CheckFieldParameters())
   {
-    vtkErrorMacro(<< "Strength must be finite and Falloff and Epsilon numbers; they are "
-                  << this->Strength << ", " << this->Falloff << " and " << this->Epsilon);
     return 1; // the output stays empty
   }
   if (!(this->Tolerance >= 0.0))
@@ -456,16 +429,9 @@ int vtkPointPairDeformationFilter::RequestData(
       generators[i].direction = cga::toVec3(this->SelectedGeneratorTip) - cga::toVec3(location);
     }
   }
-  if (vtkPointSet* generatorSet = vtkPointSet::GetData(inputVector[1]))
+  if (!this->ReadGeneratorsInput(inputVector, generators))
   {
-    const vtkBoostedGeneratorPort::ArrayNames names{ this->GeneratorDirectionArrayName,
-      this->GeneratorWeightArrayName, this->UseGeneratorWeightArray, this->GeneratorKindArrayName,
-      this->GeneratorPitchArrayName };
-    if (!vtkBoostedGeneratorPort::Read(generatorSet, names, generators, problem))
-    {
-      vtkErrorMacro(<< problem);
-      return 1;
-    }
+    return 1;
   }
   cga::PointPairField field(
     generators.data(), generators.size(), this->Falloff, this->Epsilon);
@@ -630,30 +596,14 @@ bool vtkPointPairDeformationFilter::Deform(
 void vtkPointPairDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  this->Generators->Print(os, indent);
   os << indent << "SelectedGenerator: " << this->SelectedGenerator << "\n";
   os << indent << "SelectedGeneratorLocation: (" << this->SelectedGeneratorLocation[0] << ", "
      << this->SelectedGeneratorLocation[1] << ", " << this->SelectedGeneratorLocation[2] << ")\n";
   os << indent << "AimSelectedGenerator: " << this->AimSelectedGenerator << "\n";
   os << indent << "SelectedGeneratorTip: (" << this->SelectedGeneratorTip[0] << ", "
      << this->SelectedGeneratorTip[1] << ", " << this->SelectedGeneratorTip[2] << ")\n";
-  os << indent << "GeneratorDirectionArrayName: "
-     << (this->GeneratorDirectionArrayName ? this->GeneratorDirectionArrayName : "(none)") << "\n";
-  os << indent << "GeneratorWeightArrayName: "
-     << (this->GeneratorWeightArrayName ? this->GeneratorWeightArrayName : "(none)") << "\n";
-  os << indent << "GeneratorKindArrayName: "
-     << (this->GeneratorKindArrayName ? this->GeneratorKindArrayName : "(none)") << "\n";
-  os << indent << "GeneratorPitchArrayName: "
-     << (this->GeneratorPitchArrayName ? this->GeneratorPitchArrayName : "(none)") << "\n";
-  os << indent << "UseGeneratorWeightArray: " << this->UseGeneratorWeightArray << "\n";
-  os << indent << "Strength: " << this->Strength << "\n";
   os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
-  os << indent << "Falloff: " << this->Falloff << "\n";
-  os << indent << "Epsilon: " << this->Epsilon << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
-  os << indent << "ExponentialRule: " << (this->ExponentialRule == PAPER ? "PAPER" : "EXACT")
-     << "\n";
-  os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "TransformNormals: " << this->TransformNormals << "\n";
   for (auto selection : { std::make_pair("VectorArrays", this->VectorArraySelection.Get()),
          std::make_pair("NormalArrays", this->NormalArraySelection.Get()) })
