@@ -325,6 +325,21 @@ int vtkPointPairFitFilter::RequestData(
                   << targetCount << " points and no cells");
     return 1;
   }
+  if (data.Surface)
+  {
+    double targetBounds[6];
+    target->GetBounds(targetBounds);
+    const double largest = std::max(
+      { std::fabs(targetBounds[0]), std::fabs(targetBounds[1]), std::fabs(targetBounds[2]),
+        std::fabs(targetBounds[3]), std::fabs(targetBounds[4]), std::fabs(targetBounds[5]) });
+    if (largest > vtkPointPairFitSolver::LargestSurfaceCoordinate)
+    {
+      vtkErrorMacro(<< "POINT_TO_SURFACE needs a target with coordinates of magnitude at most "
+                    << vtkPointPairFitSolver::LargestSurfaceCoordinate << " (its cell locator "
+                    << "overflows beyond); the target reaches " << largest);
+      return 1;
+    }
+  }
 
   // The per-point weights: sqrt(omega_p / sum omega) scales each point's residuals.
   data.Scales.assign(count, 1.0);
@@ -538,20 +553,30 @@ int vtkPointPairFitFilter::RequestData(
   vtkNew<vtkGenericCell> cell;
   for (vtkIdType i = 0; i < count; ++i)
   {
-    double q[3], t[3], distance2 = 0.0;
+    double q[3], t[3], distance = 0.0;
     deformed->GetPoint(i, q);
     if (data.Surface)
     {
       vtkIdType cellId;
       int subId;
+      double distance2 = 0.0;
       locator->FindClosestPoint(q, t, cell, cellId, subId, distance2);
+      distance = std::sqrt(distance2);
     }
     else
     {
       target->GetPoint(i, t);
-      distance2 = vtkMath::Distance2BetweenPoints(q, t);
+      distance = std::hypot(q[0] - t[0], q[1] - t[1], q[2] - t[2]); // no overflow of squares
     }
-    residual->SetValue(i, std::sqrt(distance2));
+    if (!std::isfinite(distance))
+    {
+      // The fit's weighted cost was finite; a point of tiny weight may still be too far away.
+      vtkErrorMacro(<< "the residual of point " << i << " overflows (its image and its target "
+                    << "are near the largest double apart)");
+      output->Initialize();
+      return 1;
+    }
+    residual->SetValue(i, distance);
   }
   output->GetPointData()->AddArray(residual);
 

@@ -170,6 +170,12 @@ struct FitData
         }
         // The distance to the closest point c of the target's cells; its gradient is the unit
         // vector (p' - c) / |p' - c| (0 on the surface itself, where the distance has its kink).
+        if (std::max({ std::fabs(q[0]), std::fabs(q[1]), std::fabs(q[2]) }) >
+          vtkPointPairFitSolver::LargestSurfaceCoordinate)
+        {
+          failed = true; // beyond what the locator computes with
+          return;
+        }
         double closest[3], distance2 = 0.0;
         vtkIdType cellId;
         int subId;
@@ -412,8 +418,18 @@ bool vtkPointPairFitSolver::Solve(const vtkPointPairFitProblem& problem,
     if (!vtkBoostedSurfacesCheckAbort(problem.Filter))
     {
       error = "the initial generators send a point of the mesh to infinity (or its residual is "
-              "not finite): the fit cannot start there";
+              "not finite";
+      error += problem.Surface ? ", or its image is beyond 1e150, where the target's cell "
+                                 "locator overflows"
+                               : "";
+      error += "): the fit cannot start there";
     }
+    return false;
+  }
+  if (!std::isfinite(data.MeanSquare()))
+  {
+    error = "the squared residuals of the initial generators overflow (coordinates of the mesh, "
+            "its images or the target near the largest double): the fit cannot start there";
     return false;
   }
   const int per = fitted.perGenerator();

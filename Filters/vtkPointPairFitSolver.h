@@ -54,6 +54,11 @@ struct vtkPointPairFitResult
 
 namespace vtkPointPairFitSolver
 {
+/// The largest coordinate magnitude of the target and of the images in POINT_TO_SURFACE mode:
+/// VTK's closest-point queries multiply coordinates (squared distances, cross products), which
+/// overflow beyond about 1e154 (and then reach branches VTK asserts are dead).
+constexpr double LargestSurfaceCoordinate = 1e150;
+
 /// The squared weighted RMS residual of `generators`; false when one is not usable or a point's
 /// image or residual is not finite, or after an abort.
 bool MeanSquare(const vtkPointPairFitProblem& problem,

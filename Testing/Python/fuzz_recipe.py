@@ -47,7 +47,7 @@ NAMES = ["Direction", "Weight", "Normals", "", "missing", "x" * 300, "\u00dcn\u0
 # row is x, y, z, direction x, y, z, weight, kind, pitch; the kinds are the classes' POINT_PAIR ...
 # TRANSLATION, 0 to 4). Other values of that column are bad input, chosen with BAD_KIND_RATE.
 ROW_KINDS = {"Generator": (7, [0, 1, 2, 3, 4])}
-BAD_KIND_RATE = 0.1
+BAD_KIND_RATE = 0.04
 
 # The value regimes of a trial: most trials stay where the classes do real work, so that valid
 # outputs are checked as often as refusals.
@@ -262,6 +262,10 @@ def data_spec(rng, values, required, optional, rows_hint):
                        rng.choice(["double", "float", "int", "soa-double", "uchar"]),
                        rng.choice([0, 0, 0, 0, -1, 1, 5]) if optional else 0)
                       for _ in range(rng.randint(0, 3))]
+    if rows_hint and rng.random() < 0.75:
+        # Generators as data: mostly with the directions a class reads by default (NAMES[0]),
+        # so that the port's generators are used; the random arrays above may still spoil them.
+        spec["arrays"].insert(0, (NAMES[0], 3, "double", 0))
     spec["cell_arrays"] = rng.randint(0, 2)
     return spec
 
@@ -333,7 +337,10 @@ def mutation(rng, values, model, rows):
     types, bounds = model.setters[name]
     if all(t == "float" for t in types) and len(types) > 1 and rng.random() < 0.1:
         return ("Set" + name, [0.0] * len(types))  # a zero vector
-    return ("Set" + name, [values.value(t, bounds) for t in types])
+    arguments = [values.value(t, bounds) for t in types]
+    if name.endswith("Range") and len(types) == 2 and rng.random() < 0.85:
+        arguments.sort(key=lambda x: (math.isnan(x), x))  # mostly [min, max] (a NaN stays)
+    return ("Set" + name, arguments)
 
 
 def make_recipe(models, seed, trial):
@@ -348,18 +355,26 @@ def make_recipe(models, seed, trial):
     for port, (required, optional) in enumerate(model.ports):
         if not optional or rng.random() < 0.5:
             # A later optional port holds a few rows (generators); a later required one (the fit
-            # filter's target) is sized like the first: 40 % of the time it is the first's data
-            # (the same points: a fit to where the mesh already is), 40 % data of the first's
-            # kind and size from another seed (as many points elsewhere: a real fit), else any.
+            # filter's target) is sized like the first: 45 % of the time it is the first's data
+            # (the same points: a fit to where the mesh already is), 45 % the first's data with
+            # its points moved (fuzz_inputs: the same count and order elsewhere, a real fit),
+            # else any.
             spec = data_spec(rng, values, required, optional, port > 0 and optional)
             roll = rng.random()
-            if port > 0 and not optional and first is not None and roll < 0.8:
-                spec = dict(first, seed=spec["seed"]) if roll < 0.4 else dict(first)
+            if port > 0 and not optional and first is not None and spec is not None and roll < 0.9:
+                spec = dict(first, moved=spec["seed"]) if roll < 0.45 else dict(first)
             first = spec if port == 0 else first
             calls.append(("SetInputDataObject", [port, spec]))
     instance = model.cls()
     for row in rows:
         rows[row] = getattr(instance, "GetNumberOf%ss" % row)()
+    for row in sorted(rows):
+        # Most trials start with a few rows (a class without default rows, the fit filter, then
+        # has generators to work on).
+        if rng.random() < 0.75:
+            for _ in range(rng.randint(1, 3)):
+                rows[row] += 1
+                calls.append(("Add%s" % row, values.row(row, model.lists[row])))
     for _ in range(rng.choice([1, 1, 1, 2, 3])):
         for _ in range(rng.randint(0, 8)):
             calls.append(mutation(rng, values, model, rows))

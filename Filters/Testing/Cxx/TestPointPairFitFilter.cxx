@@ -391,6 +391,24 @@ TEST(PointPairFitFilter, BadInputGivesAClearErrorAndEmptyOutputs)
   withNaN->GetPoints()->SetPoint(3, std::nan(""), 0.0, 0.0);
   vtkNew<vtkPolyData> cloud; // points without cells
   cloud->SetPoints(target->GetPoints());
+  // Coordinates near the largest double: the mesh's points far from the generators map to
+  // themselves, and their differences from the target's square beyond it.
+  const auto scaled = [](vtkPolyData* data, double factor) {
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      data->GetPoint(i, x);
+      points->InsertNextPoint(factor * x[0], factor * x[1], factor * x[2]);
+    }
+    vtkNew<vtkPolyData> copy;
+    copy->ShallowCopy(data);
+    copy->SetPoints(points);
+    return vtkSmartPointer<vtkPolyData>(copy);
+  };
+  vtkSmartPointer<vtkPolyData> huge = scaled(mesh, 1e154), hugeTarget = scaled(mesh, -1e154);
+  vtkSmartPointer<vtkPolyData> farTarget = scaled(target, 1e151);
   struct Case
   {
     const char* what;
@@ -440,6 +458,24 @@ TEST(PointPairFitFilter, BadInputGivesAClearErrorAndEmptyOutputs)
         f->SetFalloff(0.0);
       },
       "infinity" },
+    { "squared residuals overflow",
+      [&](vtkPointPairFitFilter* f) {
+        f->SetInputData(huge);
+        f->SetTargetData(hugeTarget);
+      },
+      "overflow" },
+    { "surface beyond the locator's range",
+      [&](vtkPointPairFitFilter* f) {
+        f->SetTargetData(farTarget);
+        f->SetTargetModeToPointToSurface();
+      },
+      "at most 1e+150" },
+    { "surface mode, images beyond the locator's range",
+      [&](vtkPointPairFitFilter* f) {
+        f->SetInputData(farTarget);
+        f->SetTargetModeToPointToSurface();
+      },
+      "beyond 1e150" },
   };
   for (const Case& c : cases)
   {

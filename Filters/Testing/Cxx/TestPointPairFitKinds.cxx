@@ -22,6 +22,15 @@ double largestResidual(vtkPointPairFitFilter* fit)
   return largestResidual(vtkPolyData::SafeDownCast(fit->GetOutput()));
 }
 
+// The fit of `mesh` to `target` from the rows `start`.
+void setUp(vtkPointPairFitFilter* fit, vtkPolyData* mesh, vtkPolyData* target,
+  const std::vector<Row>& start)
+{
+  fit->SetInputData(mesh);
+  fit->SetTargetData(target);
+  addRows(fit, start);
+}
+
 double tableValue(vtkPointPairFitFilter* fit, int row, const char* column)
 {
   return vtkTable::SafeDownCast(fit->GetOutputDataObject(2))->GetValueByName(row, column).ToDouble();
@@ -41,9 +50,7 @@ TEST(PointPairFitKinds, RecoversTheWeightsAndPitchesOfTwists)
     r.values[Pitch] = 0.0; // each twist starts as a rotation
   }
   vtkNew<vtkPointPairFitFilter> fit;
-  fit->SetInputData(mesh);
-  fit->SetTargetData(target);
-  addRows(fit.GetPointer(), start);
+  setUp(fit, mesh, target, start);
   fit->FitPitchesOn();
   EventCounter events(fit);
   fit->Update();
@@ -62,9 +69,7 @@ TEST(PointPairFitKinds, RecoversTheWeightsAndPitchesOfTwists)
 
   // Without FitPitches the same start cannot reach the target.
   vtkNew<vtkPointPairFitFilter> without;
-  without->SetInputData(mesh);
-  without->SetTargetData(target);
-  addRows(without.GetPointer(), start);
+  setUp(without, mesh, target, start);
   without->Update();
   EXPECT_GT(without->GetFinalRMS(), 1e-3);
 }
@@ -77,9 +82,7 @@ TEST(PointPairFitKinds, MaximumPitchChangeBoundsThePitches)
   std::vector<Row> start = truth;
   start[0].values[Pitch] = 0.0;
   vtkNew<vtkPointPairFitFilter> fit;
-  fit->SetInputData(mesh);
-  fit->SetTargetData(target);
-  addRows(fit.GetPointer(), start);
+  setUp(fit, mesh, target, start);
   fit->FitPitchesOn();
   const double diagonal = mesh->GetLength(); // the bounding box's diagonal
   fit->SetMaximumPitchChange(0.05);
@@ -121,9 +124,7 @@ TEST(PointPairFitKinds, RecoversAKnownMixOfKindsFromPointPairsOfZeroWeight)
     r.values[Kind] = vtkPointPairFitFilter::POINT_PAIR;
   }
   vtkNew<vtkPointPairFitFilter> fit;
-  fit->SetInputData(mesh);
-  fit->SetTargetData(target);
-  addRows(fit.GetPointer(), start);
+  setUp(fit, mesh, target, start);
   fit->FitKindsOn();
   EventCounter events(fit);
   fit->Update();
@@ -164,9 +165,7 @@ TEST(PointPairFitKinds, RecoversATwistAndItsPitchAmongOtherKinds)
     r.values[Pitch] = 0.0;
   }
   vtkNew<vtkPointPairFitFilter> fit;
-  fit->SetInputData(mesh);
-  fit->SetTargetData(target);
-  addRows(fit.GetPointer(), start);
+  setUp(fit, mesh, target, start);
   fit->FitKindsOn();
   fit->FitPitchesOn();
   EventCounter events(fit);
