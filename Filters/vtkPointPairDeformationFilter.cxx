@@ -5,7 +5,6 @@
 #include "vtkBoostedBlockLoop.h"
 #include "vtkBoostedExponentialRule.h"
 #include "vtkBoostedGeneratorGlyphs.h"
-#include "vtkBoostedGeneratorPort.h"
 #include "vtkBoostedGeneratorRows.h"
 #include "vtkBoostedMemoryBudget.h"
 #include "vtkBoostedTimeSweep.h"
@@ -324,36 +323,13 @@ void deformPoints(vtkPointPairDeformationFilter* self, const cga::PointPairField
 } // namespace
 
 vtkPointPairDeformationFilter::vtkPointPairDeformationFilter()
-  : Generators(new vtkBoostedRowList(this, "Generator", vtkBoostedGeneratorRows::BlankRow()))
+  : vtkPointPairFieldAlgorithm(1) // the Generators input is port 1
 {
-  static_assert(vtkBoostedGeneratorKinds<vtkPointPairDeformationFilter>(), "");
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(2); // the deformed input, the generators
-  this->SetGeneratorDirectionArrayName("Direction");
-  this->SetGeneratorWeightArrayName("Weight");
-  this->SetGeneratorKindArrayName("Kind");
-  this->SetGeneratorPitchArrayName("Pitch");
 }
 
-vtkPointPairDeformationFilter::~vtkPointPairDeformationFilter()
-{
-  this->SetGeneratorDirectionArrayName(nullptr);
-  this->SetGeneratorWeightArrayName(nullptr);
-  this->SetGeneratorKindArrayName(nullptr);
-  this->SetGeneratorPitchArrayName(nullptr);
-}
-
-vtkBoostedGeneratorRowMethods(vtkPointPairDeformationFilter, Generators)
-
-void vtkPointPairDeformationFilter::SetGeneratorsConnection(vtkAlgorithmOutput* output)
-{
-  this->SetInputConnection(1, output);
-}
-
-void vtkPointPairDeformationFilter::SetGeneratorsData(vtkDataObject* data)
-{
-  this->SetInputData(1, data);
-}
+vtkPointPairDeformationFilter::~vtkPointPairDeformationFilter() = default;
 
 int vtkPointPairDeformationFilter::FillInputPortInformation(int port, vtkInformation* info)
 {
@@ -442,11 +418,8 @@ int vtkPointPairDeformationFilter::RequestData(
     return 0;
   }
 
-  // The clamp macros let NaN through.
-  if (!std::isfinite(this->Strength) || std::isnan(this->Falloff) || std::isnan(this->Epsilon))
+  if (!this->CheckFieldParameters())
   {
-    vtkErrorMacro(<< "Strength must be finite and Falloff and Epsilon numbers; they are "
-                  << this->Strength << ", " << this->Falloff << " and " << this->Epsilon);
     return 1; // the output stays empty
   }
   if (!(this->Tolerance >= 0.0))
@@ -455,36 +428,11 @@ int vtkPointPairDeformationFilter::RequestData(
     return 1; // the output stays empty
   }
 
-  // The list, with the selected generator moved to the handle's location, then the second port.
-  if (!this->Generators->CheckForUpdate())
+  // The list, with the selected generator moved and aimed by its widget, then the second port.
+  std::vector<cga::GeneratorParameters> generators;
+  if (!this->ReadGenerators(inputVector, generators))
   {
     return 1; // the output stays empty
-  }
-  std::vector<cga::GeneratorParameters> generators(this->GetNumberOfGenerators());
-  std::string problem;
-  const vtkBoostedGeneratorRows::Selection selection{ this->SelectedGenerator,
-    this->SelectedGeneratorLocation, this->AimSelectedGenerator, this->SelectedGeneratorTip };
-  for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
-  {
-    double used[vtkBoostedGeneratorRows::NumberOfValues];
-    const double* row =
-      vtkBoostedGeneratorRows::Selected(this->Generators->Row(i), i, selection, used);
-    if (!vtkBoostedGeneratorRows::Read(row, row, i, generators[i], problem))
-    {
-      vtkErrorMacro(<< problem);
-      return 1; // the output stays empty
-    }
-  }
-  if (vtkPointSet* generatorSet = vtkPointSet::GetData(inputVector[1]))
-  {
-    const vtkBoostedGeneratorPort::ArrayNames names{ this->GeneratorDirectionArrayName,
-      this->GeneratorWeightArrayName, this->UseGeneratorWeightArray, this->GeneratorKindArrayName,
-      this->GeneratorPitchArrayName };
-    if (!vtkBoostedGeneratorPort::Read(generatorSet, names, generators, problem))
-    {
-      vtkErrorMacro(<< problem);
-      return 1;
-    }
   }
   cga::PointPairField field(
     generators.data(), generators.size(), this->Falloff, this->Epsilon);
@@ -649,27 +597,8 @@ bool vtkPointPairDeformationFilter::Deform(
 void vtkPointPairDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  this->Generators->Print(os, indent);
-  vtkBoostedGeneratorRows::PrintSelection(os, indent,
-    { this->SelectedGenerator, this->SelectedGeneratorLocation, this->AimSelectedGenerator,
-      this->SelectedGeneratorTip });
-  os << indent << "GeneratorDirectionArrayName: "
-     << (this->GeneratorDirectionArrayName ? this->GeneratorDirectionArrayName : "(none)") << "\n";
-  os << indent << "GeneratorWeightArrayName: "
-     << (this->GeneratorWeightArrayName ? this->GeneratorWeightArrayName : "(none)") << "\n";
-  os << indent << "GeneratorKindArrayName: "
-     << (this->GeneratorKindArrayName ? this->GeneratorKindArrayName : "(none)") << "\n";
-  os << indent << "GeneratorPitchArrayName: "
-     << (this->GeneratorPitchArrayName ? this->GeneratorPitchArrayName : "(none)") << "\n";
-  os << indent << "UseGeneratorWeightArray: " << this->UseGeneratorWeightArray << "\n";
-  os << indent << "Strength: " << this->Strength << "\n";
   os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
-  os << indent << "Falloff: " << this->Falloff << "\n";
-  os << indent << "Epsilon: " << this->Epsilon << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
-  os << indent << "ExponentialRule: " << (this->ExponentialRule == PAPER ? "PAPER" : "EXACT")
-     << "\n";
-  os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "TransformNormals: " << this->TransformNormals << "\n";
   for (auto selection : { std::make_pair("VectorArrays", this->VectorArraySelection.Get()),
          std::make_pair("NormalArrays", this->NormalArraySelection.Get()) })

@@ -72,119 +72,28 @@
 #define vtkPointPairDeformationFilter_h
 
 #include "BoostedSurfacesFiltersModule.h" // for export macro
-#include "vtkDataArraySelection.h" // for the transformed arrays
-#include "vtkNew.h"                   // for the transformed arrays
-#include "vtkPointSetAlgorithm.h"
+#include "vtkDataArraySelection.h"       // for the transformed arrays
+#include "vtkNew.h"                      // for the transformed arrays
+#include "vtkPointPairFieldAlgorithm.h"
 
-#include <memory> // for the generator list
-
-class vtkBoostedRowList;
 class vtkDataSet;
 namespace cga
 {
 class PointPairField;
 }
 
-class BOOSTEDSURFACESFILTERS_EXPORT vtkPointPairDeformationFilter : public vtkPointSetAlgorithm
+class BOOSTEDSURFACESFILTERS_EXPORT vtkPointPairDeformationFilter
+  : public vtkPointPairFieldAlgorithm
 {
 public:
   static vtkPointPairDeformationFilter* New();
-  vtkTypeMacro(vtkPointPairDeformationFilter, vtkPointSetAlgorithm);
+  vtkTypeMacro(vtkPointPairDeformationFilter, vtkPointPairFieldAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum ExponentialRules
-  {
-    EXACT = 0,
-    PAPER = 1
-  };
-
-  /// The kinds of generator (docs/conventions.md section 2 item 11).
-  enum GeneratorKinds
-  {
-    POINT_PAIR = 0,
-    ROTATION = 1,
-    TWIST = 2,
-    DILATION = 3,
-    TRANSLATION = 4
-  };
-
-  ///@{
-  /// The generator list: rows of location (x, y, z), direction (vx, vy, vz), weight, kind (one of
-  /// GeneratorKinds) and pitch (TWIST only: the advance along the axis per radian of turn), with
-  /// the list API and the cap of vtkBoostedRowList (Common/): AddGenerator returns the new row's
-  /// index, SetGenerator(i, ...) changes row i < GetNumberOfGenerators(), SetNumberOfGenerators
-  /// resizes (new rows are zero, hence ignored until set), GetGenerator copies a row of 9 values
-  /// (false if there is none); at most 10^6 rows (more come through the Generators input). The
-  /// forms without kind and pitch give a POINT_PAIR of pitch 0.
-  int AddGenerator(double x, double y, double z, double vx, double vy, double vz, double weight);
-  int AddGenerator(double x, double y, double z, double vx, double vy, double vz, double weight,
-    double kind, double pitch);
-  void SetGenerator(int index, double x, double y, double z, double vx, double vy, double vz,
-    double weight);
-  void SetGenerator(int index, double x, double y, double z, double vx, double vy, double vz,
-    double weight, double kind, double pitch);
-  void SetNumberOfGenerators(int count);
-  bool GetGenerator(int index, double values[9]) const;
-  void RemoveAllGenerators();
-  int GetNumberOfGenerators() const;
-  ///@}
-
-  ///@{
-  /// A handle for one generator of the list: when SelectedGenerator is a valid index, its location
-  /// is replaced by SelectedGeneratorLocation (ParaView moves it with its line widget). -1 (the
-  /// default) selects none.
-  vtkSetClampMacro(SelectedGenerator, int, -1, VTK_INT_MAX);
-  vtkGetMacro(SelectedGenerator, int);
-  vtkSetVector3Macro(SelectedGeneratorLocation, double);
-  vtkGetVector3Macro(SelectedGeneratorLocation, double);
-  ///@}
-
-  ///@{
-  /// Aiming the selected generator (ParaView's line widget from its location to its tip): when
-  /// AimSelectedGenerator is on (default off) and SelectedGenerator is a valid index, that row's
-  /// direction is replaced by SelectedGeneratorTip - SelectedGeneratorLocation (its length, as a
-  /// row's direction's, multiplies the weight). Default tip (0, 0, 1).
-  vtkSetMacro(AimSelectedGenerator, bool);
-  vtkGetMacro(AimSelectedGenerator, bool);
-  vtkBooleanMacro(AimSelectedGenerator, bool);
-  vtkSetVector3Macro(SelectedGeneratorTip, double);
-  vtkGetVector3Macro(SelectedGeneratorTip, double);
-  ///@}
-
-  ///@{
-  /// Names of the point arrays of the Generators input: directions (3 components, default
-  /// "Direction") and weights (1 component, default "Weight", read only when
-  /// UseGeneratorWeightArray is on; otherwise every weight is 1).
-  vtkSetStringMacro(GeneratorDirectionArrayName);
-  vtkGetStringMacro(GeneratorDirectionArrayName);
-  vtkSetStringMacro(GeneratorWeightArrayName);
-  vtkGetStringMacro(GeneratorWeightArrayName);
-  ///@}
-
-  ///@{
-  /// Names of the optional 1-component point arrays of the Generators input with each
-  /// generator's kind (default "Kind", values of GeneratorKinds) and pitch (default "Pitch"). An
-  /// array that is absent means POINT_PAIR or pitch 0 for every generator there.
-  vtkSetStringMacro(GeneratorKindArrayName);
-  vtkGetStringMacro(GeneratorKindArrayName);
-  vtkSetStringMacro(GeneratorPitchArrayName);
-  vtkGetStringMacro(GeneratorPitchArrayName);
-  vtkSetMacro(UseGeneratorWeightArray, bool);
-  vtkGetMacro(UseGeneratorWeightArray, bool);
-  vtkBooleanMacro(UseGeneratorWeightArray, bool);
-  ///@}
-
-  ///@{
-  /// The optional second input: a vtkPointSet of generators (see the class description).
-  void SetGeneratorsConnection(vtkAlgorithmOutput* output);
-  void SetGeneratorsData(vtkDataObject* data);
-  ///@}
-
-  ///@{
-  /// Global factor on B: 0 is the identity, 1 the field as given. Default 1. Must be finite.
-  vtkSetMacro(Strength, double);
-  vtkGetMacro(Strength, double);
-  ///@}
+  // The generator list (AddGenerator ...) and its selected row (SelectedGenerator ...), the
+  // Generators input (port 1, SetGeneratorsConnection) and its Generator*ArrayName properties,
+  // Strength, Falloff, Epsilon, ExponentialRule, OutputPointsPrecision and the EXACT/PAPER and
+  // kind constants are vtkPointPairFieldAlgorithm's.
 
   ///@{
   /// 0 (default): no time. N >= 1: the filter reports N time steps t in [0, 1]
@@ -196,19 +105,6 @@ public:
   ///@}
 
   ///@{
-  /// k of the weighting w / (k |p - x|^2 + eps). Default 1; k = 0 makes B the same everywhere.
-  vtkSetClampMacro(Falloff, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(Falloff, double);
-  ///@}
-
-  ///@{
-  /// eps of the weighting: keeps B finite on a generator's location. Default 0.01. Clamped to at
-  /// least 1e-10 (smaller values only make B huge, where no exponential is accurate).
-  vtkSetClampMacro(Epsilon, double, 1e-10, VTK_DOUBLE_MAX);
-  vtkGetMacro(Epsilon, double);
-  ///@}
-
-  ///@{
   /// The far-field approximation of B (cga::PointPairField::setTolerance): 0 (default) sums every
   /// generator at every point; t > 0 sums far generators by a tree that keeps each image's error,
   /// to first order, within t times the field's displacement scale (README, "Many generators";
@@ -216,14 +112,6 @@ public:
   /// error and gives an empty output. Fields of fewer than 10,000 generators always sum directly (the measured crossover).
   vtkSetMacro(Tolerance, double);
   vtkGetMacro(Tolerance, double);
-  ///@}
-
-  ///@{
-  /// EXACT (default) or PAPER.
-  vtkSetClampMacro(ExponentialRule, int, EXACT, PAPER);
-  vtkGetMacro(ExponentialRule, int);
-  void SetExponentialRuleToExact() { this->SetExponentialRule(EXACT); }
-  void SetExponentialRuleToPaper() { this->SetExponentialRule(PAPER); }
   ///@}
 
   ///@{
@@ -261,13 +149,6 @@ public:
   /// Includes the array selections' modification times.
   vtkMTimeType GetMTime() override;
 
-  ///@{
-  /// vtkAlgorithm::DEFAULT_PRECISION (default: as the input's points), SINGLE_PRECISION or
-  /// DOUBLE_PRECISION.
-  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
-  vtkGetMacro(OutputPointsPrecision, int);
-  ///@}
-
 protected:
   vtkPointPairDeformationFilter();
   ~vtkPointPairDeformationFilter() override;
@@ -280,22 +161,7 @@ protected:
     vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  std::unique_ptr<vtkBoostedRowList> Generators;
-  int SelectedGenerator = -1;
-  double SelectedGeneratorLocation[3] = { 0.0, 0.0, 0.0 };
-  bool AimSelectedGenerator = false;
-  double SelectedGeneratorTip[3] = { 0.0, 0.0, 1.0 };
-  char* GeneratorDirectionArrayName = nullptr;
-  char* GeneratorWeightArrayName = nullptr;
-  char* GeneratorKindArrayName = nullptr;
-  char* GeneratorPitchArrayName = nullptr;
-  bool UseGeneratorWeightArray = false;
-  double Strength = 1.0;
-  double Falloff = 1.0;
-  double Epsilon = 0.01;
   double Tolerance = 0.0;
-  int ExponentialRule = EXACT;
-  int OutputPointsPrecision = DEFAULT_PRECISION;
   int NumberOfTimeSteps = 0;
   bool TransformNormals = true;
   vtkNew<vtkDataArraySelection> VectorArraySelection;

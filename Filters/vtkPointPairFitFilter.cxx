@@ -2,7 +2,6 @@
 
 #include "vtkBoostedExponentialRule.h"
 #include "vtkBoostedGeneratorGlyphs.h"
-#include "vtkBoostedGeneratorPort.h"
 #include "vtkBoostedGeneratorRows.h"
 #include "vtkBoostedMemoryBudget.h"
 #include "vtkBoostedRowList.h"
@@ -22,12 +21,10 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPointPairDeformationFilter.h"
+#include "vtkPointPairFitSolver.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSMPThreadLocal.h"
-#include "vtkSMPThreadLocalObject.h"
-#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStaticCellLocator.h"
 #include "vtkStringArray.h"
@@ -36,10 +33,7 @@
 #include "cga/GeneratorDerivatives.h"
 #include "cga/PointPairField.h"
 
-#include <ceres/ceres.h>
-
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -50,329 +44,6 @@ vtkStandardNewMacro(vtkPointPairFitFilter);
 
 namespace
 {
-// The unknowns of generator g start at theta[g * perGenerator]: its weight, location and direction
-// as far as they are fitted (cga::FittedParameters' order).
-void applyUnknowns(const std::vector<cga::GeneratorParameters>& start, cga::FittedParameters fitted,
-  const double* theta, std::vector<cga::GeneratorParameters>& out)
-{
-  out = start;
-  const int per = fitted.perGenerator();
-  for (std::size_t g = 0; g < start.size(); ++g)
-  {
-    const double* t = theta + g * per;
-    if (fitted.weight)
-    {
-      out[g].weight = *t++;
-    }
-    if (fitted.location)
-    {
-      out[g].location = { t[0], t[1], t[2] };
-      t += 3;
-    }
-    if (fitted.direction)
-    {
-      out[g].direction = { t[0], t[1], t[2] };
-    }
-  }
-}
-
-std::vector<double> unknownsOf(
-  const std::vector<cga::GeneratorParameters>& generators, cga::FittedParameters fitted)
-{
-  std::vector<double> theta;
-  for (const cga::GeneratorParameters& g : generators)
-  {
-    if (fitted.weight)
-    {
-      theta.push_back(g.weight);
-    }
-    if (fitted.location)
-    {
-      theta.insert(theta.end(), { g.location.x, g.location.y, g.location.z });
-    }
-    if (fitted.direction)
-    {
-      theta.insert(theta.end(), { g.direction.x, g.direction.y, g.direction.z });
-    }
-  }
-  return theta;
-}
-
-// The data term of the fit, evaluated once per point of the unknowns for every residual block
-// (Ceres's EvaluationCallback): the field of the current generators maps every mesh point with its
-// derivatives; the residuals (sqrt(omega_p / sum omega) times p' - t_p, or times the distance of p'
-// to the target's cells) and their Jacobian rows are cached for the blocks to copy.
-struct FitData
-{
-  vtkPointPairFitFilter* Filter = nullptr;
-  std::vector<cga::GeneratorParameters> Start;
-  cga::FittedParameters Fitted;
-  std::vector<double> Theta; // the unknowns, which Ceres updates in place
-  std::vector<double> Points; // the mesh, xyz interleaved
-  std::vector<double> Targets; // POINT_TO_POINT: the target's points
-  vtkStaticCellLocator* Locator = nullptr; // POINT_TO_SURFACE: over the target's cells
-  std::vector<double> Scales; // sqrt(omega_p / sum omega)
-  double Falloff = 1.0, Epsilon = 0.01, Strength = 1.0;
-  cga::ExponentialRule Rule = cga::ExponentialRule::Exact;
-  bool Surface = false;
-
-  // The cache of the last evaluation.
-  std::vector<double> Residuals; // per point 3 (POINT_TO_POINT) or 1
-  std::vector<double> Jacobian;  // Residuals.size() rows of Theta.size() columns
-  bool Valid = false;
-  bool HasJacobian = false;
-
-  vtkIdType count() const { return static_cast<vtkIdType>(this->Points.size() / 3); }
-  int residualsPerPoint() const { return this->Surface ? 1 : 3; }
-  int unknowns() const { return static_cast<int>(this->Theta.size()); }
-
-  /// Fills the cache at Theta; false (Valid false) when a point's image is not finite or the
-  /// generators are not usable (a direction fitted to zero), or after an abort.
-  bool Evaluate(bool withJacobian)
-  {
-    this->Valid = false;
-    this->HasJacobian = false;
-    if (vtkBoostedSurfacesCheckAbort(this->Filter))
-    {
-      return false;
-    }
-    std::vector<cga::GeneratorParameters> generators;
-    applyUnknowns(this->Start, this->Fitted, this->Theta.data(), generators);
-    const cga::PointPairField field(
-      generators.data(), generators.size(), this->Falloff, this->Epsilon);
-    if (field.skippedGenerators() != 0)
-    {
-      return false;
-    }
-    const int rows = this->residualsPerPoint();
-    const int columns = this->unknowns();
-    this->Residuals.assign(static_cast<std::size_t>(rows * this->count()), 0.0);
-    if (withJacobian)
-    {
-      this->Jacobian.assign(this->Residuals.size() * columns, 0.0);
-    }
-    std::atomic<bool> failed{ false };
-    vtkSMPThreadLocalObject<vtkGenericCell> cells;
-    vtkSMPThreadLocal<std::vector<double>> scratch;
-    vtkSMPTools::For(0, this->count(), [&](vtkIdType begin, vtkIdType end) {
-      std::vector<double>& derivatives = scratch.Local();
-      derivatives.resize(3 * static_cast<std::size_t>(columns));
-      vtkGenericCell* cell = cells.Local();
-      for (vtkIdType i = begin; i < end && !failed; ++i)
-      {
-        const double* p = this->Points.data() + 3 * i;
-        cga::Vec3 image;
-        const bool mapped = withJacobian
-          ? cga::mapWithGeneratorDerivatives(field, generators.data(), generators.size(),
-              this->Fitted, { p[0], p[1], p[2] }, this->Strength, this->Rule, image,
-              derivatives.data())
-          : field.map({ p[0], p[1], p[2] }, this->Strength, this->Rule, image);
-        if (!mapped || !cga::isFinite(image))
-        {
-          failed = true;
-          return;
-        }
-        const double scale = this->Scales[i];
-        double* residual = this->Residuals.data() + rows * i;
-        double* jacobian = withJacobian ? this->Jacobian.data() + rows * i * columns : nullptr;
-        const double q[3] = { image.x, image.y, image.z };
-        if (!this->Surface)
-        {
-          const double* t = this->Targets.data() + 3 * i;
-          for (int j = 0; j < 3; ++j)
-          {
-            residual[j] = scale * (q[j] - t[j]);
-            for (int u = 0; jacobian && u < columns; ++u)
-            {
-              jacobian[j * columns + u] = scale * derivatives[3 * u + j];
-            }
-          }
-          continue;
-        }
-        // The distance to the closest point c of the target's cells; its gradient is the unit
-        // vector (p' - c) / |p' - c| (0 on the surface itself, where the distance has its kink).
-        double closest[3], distance2 = 0.0;
-        vtkIdType cellId;
-        int subId;
-        this->Locator->FindClosestPoint(q, closest, cell, cellId, subId, distance2);
-        const double distance = std::sqrt(distance2);
-        residual[0] = scale * distance;
-        if (!std::isfinite(residual[0]))
-        {
-          failed = true;
-          return;
-        }
-        for (int u = 0; jacobian && u < columns; ++u)
-        {
-          double sum = 0.0;
-          for (int j = 0; distance > 0.0 && j < 3; ++j)
-          {
-            sum += (q[j] - closest[j]) / distance * derivatives[3 * u + j];
-          }
-          jacobian[u] = scale * sum;
-        }
-      }
-    });
-    if (failed)
-    {
-      return false;
-    }
-    if (withJacobian)
-    {
-      for (const double value : this->Jacobian)
-      {
-        if (!std::isfinite(value))
-        {
-          return false;
-        }
-      }
-    }
-    this->Valid = true;
-    this->HasJacobian = withJacobian;
-    return true;
-  }
-
-  /// The squared weighted RMS residual of the cache.
-  double MeanSquare() const
-  {
-    double sum = 0.0;
-    for (const double r : this->Residuals)
-    {
-      sum += r * r;
-    }
-    return sum;
-  }
-};
-
-// Ceres calls this once per new point of the unknowns, before any residual block's Evaluate.
-class FitEvaluation : public ceres::EvaluationCallback
-{
-public:
-  explicit FitEvaluation(FitData& data)
-    : Data(data)
-  {
-  }
-  void PrepareForEvaluation(bool evaluateJacobians, bool newEvaluationPoint) override
-  {
-    if (newEvaluationPoint || (evaluateJacobians && !this->Data.HasJacobian))
-    {
-      this->Data.Evaluate(evaluateJacobians);
-    }
-  }
-
-private:
-  FitData& Data;
-};
-
-// The residuals of the points [First, Last): copied from the cache, with their Jacobian blocks,
-// one parameter block per generator.
-class PointBlockCost : public ceres::CostFunction
-{
-public:
-  PointBlockCost(const FitData& data, vtkIdType first, vtkIdType last)
-    : Data(data)
-    , First(first)
-    , Last(last)
-  {
-    this->set_num_residuals(static_cast<int>((last - first) * data.residualsPerPoint()));
-    for (std::size_t g = 0; g < data.Start.size(); ++g)
-    {
-      this->mutable_parameter_block_sizes()->push_back(data.Fitted.perGenerator());
-    }
-  }
-
-  bool Evaluate(double const* const*, double* residuals, double** jacobians) const override
-  {
-    if (!this->Data.Valid || (jacobians && !this->Data.HasJacobian))
-    {
-      return false; // Ceres rejects the step
-    }
-    const int rows = this->num_residuals();
-    const std::size_t first = static_cast<std::size_t>(this->First * this->Data.residualsPerPoint());
-    std::copy_n(this->Data.Residuals.data() + first, rows, residuals);
-    if (!jacobians)
-    {
-      return true;
-    }
-    const int per = this->Data.Fitted.perGenerator();
-    const int columns = this->Data.unknowns();
-    for (std::size_t g = 0; g < this->Data.Start.size(); ++g)
-    {
-      if (!jacobians[g])
-      {
-        continue;
-      }
-      for (int r = 0; r < rows; ++r)
-      {
-        const double* source = this->Data.Jacobian.data() + (first + r) * columns + g * per;
-        std::copy_n(source, per, jacobians[g] + r * per);
-      }
-    }
-    return true;
-  }
-
-private:
-  const FitData& Data;
-  vtkIdType First, Last;
-};
-
-// The Tikhonov term of one generator: sqrt(lambda) (theta_g - theta_g,0).
-class RegularizationCost : public ceres::CostFunction
-{
-public:
-  RegularizationCost(const double* start, int size, double lambda)
-    : Start(start, start + size)
-    , Root(std::sqrt(lambda))
-  {
-    this->set_num_residuals(size);
-    this->mutable_parameter_block_sizes()->push_back(size);
-  }
-
-  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override
-  {
-    const int size = this->num_residuals();
-    for (int k = 0; k < size; ++k)
-    {
-      residuals[k] = this->Root * (parameters[0][k] - this->Start[k]);
-    }
-    if (jacobians && jacobians[0])
-    {
-      std::fill_n(jacobians[0], size * size, 0.0);
-      for (int k = 0; k < size; ++k)
-      {
-        jacobians[0][k * size + k] = this->Root;
-      }
-    }
-    return true;
-  }
-
-private:
-  std::vector<double> Start;
-  double Root;
-};
-
-// Progress per iteration, and the abort.
-class FitProgress : public ceres::IterationCallback
-{
-public:
-  FitProgress(vtkPointPairFitFilter* filter, int iterations)
-    : Filter(filter)
-    , Iterations(iterations)
-  {
-  }
-  ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override
-  {
-    this->Filter->UpdateProgress(
-      std::min(1.0, (summary.iteration + 1.0) / (this->Iterations + 1.0)));
-    return vtkBoostedSurfacesCheckAbort(this->Filter) ? ceres::SOLVER_ABORT
-                                                      : ceres::SOLVER_CONTINUE;
-  }
-
-private:
-  vtkPointPairFitFilter* Filter;
-  int Iterations;
-};
-
 bool allFinite(vtkPoints* points)
 {
   for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
@@ -425,29 +96,18 @@ vtkSmartPointer<vtkDoubleArray> scalarArray(const char* name, double value)
 } // namespace
 
 vtkPointPairFitFilter::vtkPointPairFitFilter()
-  : Generators(new vtkBoostedRowList(this, "Generator", vtkBoostedGeneratorRows::BlankRow()))
+  : vtkPointPairFieldAlgorithm(2) // the Generators input is port 2
   , InitialRMS(std::nan(""))
   , FinalRMS(std::nan(""))
 {
-  static_assert(vtkBoostedGeneratorKinds<vtkPointPairFitFilter>(), "");
   this->SetNumberOfInputPorts(3);  // the mesh, the target, the generators
   this->SetNumberOfOutputPorts(3); // the fitted mesh, the generators as points and as a table
-  this->SetGeneratorDirectionArrayName("Direction");
-  this->SetGeneratorWeightArrayName("Weight");
-  this->SetGeneratorKindArrayName("Kind");
-  this->SetGeneratorPitchArrayName("Pitch");
 }
 
 vtkPointPairFitFilter::~vtkPointPairFitFilter()
 {
-  this->SetGeneratorDirectionArrayName(nullptr);
-  this->SetGeneratorWeightArrayName(nullptr);
-  this->SetGeneratorKindArrayName(nullptr);
-  this->SetGeneratorPitchArrayName(nullptr);
   this->SetPointWeightArrayName(nullptr);
 }
-
-vtkBoostedGeneratorRowMethods(vtkPointPairFitFilter, Generators)
 
 void vtkPointPairFitFilter::SetTargetConnection(vtkAlgorithmOutput* output)
 {
@@ -457,16 +117,6 @@ void vtkPointPairFitFilter::SetTargetConnection(vtkAlgorithmOutput* output)
 void vtkPointPairFitFilter::SetTargetData(vtkDataObject* data)
 {
   this->SetInputData(1, data);
-}
-
-void vtkPointPairFitFilter::SetGeneratorsConnection(vtkAlgorithmOutput* output)
-{
-  this->SetInputConnection(2, output);
-}
-
-void vtkPointPairFitFilter::SetGeneratorsData(vtkDataObject* data)
-{
-  this->SetInputData(2, data);
 }
 
 int vtkPointPairFitFilter::FillInputPortInformation(int port, vtkInformation* info)
@@ -536,7 +186,7 @@ int vtkPointPairFitFilter::ComputeInputUpdateExtent(
 int vtkPointPairFitFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  this->NumberOfIterations = -1;
+  this->NumberOfIterations = this->NumberOfFits = this->NumberOfUnidentifiedKinds = -1;
   this->InitialRMS = this->FinalRMS = std::nan("");
   this->Improved = false;
   this->TerminationReason.clear();
@@ -555,18 +205,18 @@ int vtkPointPairFitFilter::RequestData(
   }
 
   // Parameters (the clamp macros let NaN through).
-  if (!std::isfinite(this->Strength) || std::isnan(this->Falloff) || std::isnan(this->Epsilon))
+  if (!this->CheckFieldParameters())
   {
-    vtkErrorMacro(<< "Strength must be finite and Falloff and Epsilon numbers; they are "
-                  << this->Strength << ", " << this->Falloff << " and " << this->Epsilon);
     return 1;
   }
   if (std::isnan(this->FunctionTolerance) || std::isnan(this->GradientTolerance) ||
     std::isnan(this->ParameterTolerance) || std::isnan(this->RegularizationWeight) ||
-    std::isnan(this->MaximumLocationChange) || std::isnan(this->MaximumDirectionChange))
+    std::isnan(this->MaximumLocationChange) || std::isnan(this->MaximumDirectionChange) ||
+    std::isnan(this->MaximumPitchChange) || std::isnan(this->KindSeparation))
   {
-    vtkErrorMacro(<< "the tolerances, RegularizationWeight, MaximumLocationChange and "
-                     "MaximumDirectionChange must be numbers");
+    vtkErrorMacro(<< "the tolerances, RegularizationWeight, MaximumLocationChange, "
+                     "MaximumDirectionChange, MaximumPitchChange and KindSeparation must be "
+                     "numbers");
     return 1;
   }
   if (!(this->WeightRange[0] <= this->WeightRange[1]))
@@ -575,69 +225,46 @@ int vtkPointPairFitFilter::RequestData(
                   << this->WeightRange[0] << ", " << this->WeightRange[1] << "]");
     return 1;
   }
-  if (!this->FitWeights && !this->FitLocations && !this->FitDirections)
+  if (!this->FitWeights && !this->FitLocations && !this->FitDirections && !this->FitPitches)
   {
-    vtkErrorMacro(<< "nothing to fit: turn on FitWeights, FitLocations or FitDirections");
+    vtkErrorMacro(
+      << "nothing to fit: turn on FitWeights, FitLocations, FitDirections or FitPitches");
     return 1;
   }
 
   // The initial generators: the list (the selected row at its line widget), then the Generators
   // input.
-  if (!this->Generators->CheckForUpdate())
+  std::vector<cga::GeneratorParameters> given;
+  if (!this->ReadGenerators(inputVector, given))
   {
     return 1;
   }
-  std::vector<cga::GeneratorParameters> given(this->GetNumberOfGenerators());
-  std::string problem;
-  const vtkBoostedGeneratorRows::Selection selection{ this->SelectedGenerator,
-    this->SelectedGeneratorLocation, this->AimSelectedGenerator, this->SelectedGeneratorTip };
-  for (int i = 0; i < this->GetNumberOfGenerators(); ++i)
-  {
-    double used[vtkBoostedGeneratorRows::NumberOfValues];
-    const double* row =
-      vtkBoostedGeneratorRows::Selected(this->Generators->Row(i), i, selection, used);
-    if (!vtkBoostedGeneratorRows::Read(row, row, i, given[i], problem))
-    {
-      vtkErrorMacro(<< problem);
-      return 1;
-    }
-  }
-  if (vtkPointSet* generatorSet = vtkPointSet::GetData(inputVector[2]))
-  {
-    const vtkBoostedGeneratorPort::ArrayNames names{ this->GeneratorDirectionArrayName,
-      this->GeneratorWeightArrayName, this->UseGeneratorWeightArray, this->GeneratorKindArrayName,
-      this->GeneratorPitchArrayName };
-    if (!vtkBoostedGeneratorPort::Read(generatorSet, names, given, problem))
-    {
-      vtkErrorMacro(<< problem);
-      return 1;
-    }
-  }
-  FitData data;
+  vtkPointPairFitProblem data;
   data.Filter = this;
+  std::vector<cga::GeneratorParameters> start;
   for (const cga::GeneratorParameters& g : given)
   {
     if (usable(g))
     {
-      data.Start.push_back(g);
+      start.push_back(g);
     }
   }
-  if (data.Start.empty())
+  if (start.empty())
   {
     vtkErrorMacro(<< "no generators to fit: give initial generators (the list or the Generators "
                      "input) with a finite location and weight and a non-zero direction ("
                   << given.size() << " given)");
     return 1;
   }
-  if (data.Start.size() < given.size())
+  if (start.size() < given.size())
   {
-    vtkWarningMacro(<< given.size() - data.Start.size() << " of " << given.size()
+    vtkWarningMacro(<< given.size() - start.size() << " of " << given.size()
                     << " generators were ignored: their direction is zero, or their location, "
                        "direction, weight or (a twist's) pitch is not finite");
   }
-  for (std::size_t g = 0; g < data.Start.size(); ++g)
+  for (std::size_t g = 0; g < start.size(); ++g)
   {
-    const double w = data.Start[g].weight;
+    const double w = start[g].weight;
     if (this->FitWeights && (w < this->WeightRange[0] || w > this->WeightRange[1]))
     {
       vtkErrorMacro(<< "the initial weight " << w << " of generator " << g
@@ -685,6 +312,21 @@ int vtkPointPairFitFilter::RequestData(
                   << targetCount << " points and no cells");
     return 1;
   }
+  if (data.Surface)
+  {
+    double targetBounds[6];
+    target->GetBounds(targetBounds);
+    const double largest = std::max(
+      { std::fabs(targetBounds[0]), std::fabs(targetBounds[1]), std::fabs(targetBounds[2]),
+        std::fabs(targetBounds[3]), std::fabs(targetBounds[4]), std::fabs(targetBounds[5]) });
+    if (largest > vtkPointPairFitSolver::LargestSurfaceCoordinate)
+    {
+      vtkErrorMacro(<< "POINT_TO_SURFACE needs a target with coordinates of magnitude at most "
+                    << vtkPointPairFitSolver::LargestSurfaceCoordinate << " (its cell locator "
+                    << "overflows beyond); the target reaches " << largest);
+      return 1;
+    }
+  }
 
   // The per-point weights: sqrt(omega_p / sum omega) scales each point's residuals.
   data.Scales.assign(count, 1.0);
@@ -731,20 +373,28 @@ int vtkPointPairFitFilter::RequestData(
   const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
     (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
     (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
-  const double locationChange = this->MaximumLocationChange * diagonal;
+  data.LocationChange = this->MaximumLocationChange * diagonal;
+  data.DirectionChange = this->MaximumDirectionChange;
+  data.PitchChange = this->MaximumPitchChange * diagonal;
   data.Fitted.weight = this->FitWeights;
-  data.Fitted.location = this->FitLocations && locationChange > 0.0;
-  data.Fitted.direction = this->FitDirections && this->MaximumDirectionChange > 0.0;
+  data.Fitted.location = this->FitLocations && data.LocationChange > 0.0;
+  data.Fitted.direction = this->FitDirections && data.DirectionChange > 0.0;
+  data.Fitted.pitch = this->FitPitches && data.PitchChange > 0.0;
   if (data.Fitted.perGenerator() == 0)
   {
-    vtkErrorMacro(<< "nothing to fit: the locations and directions may not change "
-                     "(MaximumLocationChange times the mesh's diagonal, MaximumDirectionChange)");
+    vtkErrorMacro(<< "nothing to fit: the locations, directions and pitches may not change "
+                     "(MaximumLocationChange and MaximumPitchChange times the mesh's diagonal, "
+                     "MaximumDirectionChange)");
     return 1;
   }
-  data.Theta = unknownsOf(data.Start, data.Fitted);
-  const std::vector<double> start = data.Theta;
-  const int per = data.Fitted.perGenerator();
-  const int unknowns = data.unknowns();
+  data.WeightRange[0] = this->WeightRange[0];
+  data.WeightRange[1] = this->WeightRange[1];
+  data.RegularizationWeight = this->RegularizationWeight;
+  data.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
+  data.FunctionTolerance = this->FunctionTolerance;
+  data.GradientTolerance = this->GradientTolerance;
+  data.ParameterTolerance = this->ParameterTolerance;
+  const int unknowns = data.Fitted.perGenerator() * static_cast<int>(start.size());
 
   // The memory: the cache's Jacobian and Ceres's copies of it (its blocks and the dense QR
   // matrix), residuals x unknowns doubles each.
@@ -759,7 +409,8 @@ int vtkPointPairFitFilter::RequestData(
   }
 
   bool done = false;
-  std::vector<cga::GeneratorParameters> fitted;
+  vtkPointPairFitResult result;
+  std::vector<bool> identified;
   vtkNew<vtkStaticCellLocator> locator;
   const bool run = vtkBoostedMemoryBudget::Run(this, [&] {
     data.Points.resize(3 * static_cast<std::size_t>(count));
@@ -786,117 +437,29 @@ int vtkPointPairFitFilter::RequestData(
     data.Strength = this->Strength;
     data.Rule = vtkBoostedExponentialRule<vtkPointPairFitFilter>(this->ExponentialRule);
 
-    // The start must be valid: Ceres needs a finite initial cost.
-    if (!data.Evaluate(false))
+    std::string error;
+    int fits = 1;
+    const bool solved = this->FitKinds
+      ? vtkPointPairFitSolver::SearchKinds(
+          data, start, this->KindSeparation, result, identified, fits, error)
+      : vtkPointPairFitSolver::Solve(data, start, start, 0.0, 1.0, result, error);
+    if (!solved)
     {
-      if (!vtkBoostedSurfacesCheckAbort(this))
+      if (!error.empty())
       {
-        vtkErrorMacro(<< "the initial generators send a point of the mesh to infinity (or its "
-                         "residual is not finite): the fit cannot start there");
+        vtkErrorMacro(<< error);
       }
-      return;
+      return; // an error, or aborted: empty outputs
     }
-    const double initialData = data.MeanSquare();
-    this->InitialRMS = std::sqrt(initialData);
-
-    ceres::Problem::Options problemOptions;
-    FitEvaluation evaluation(data);
-    problemOptions.evaluation_callback = &evaluation;
-    ceres::Problem solverProblem(problemOptions);
-    std::vector<double*> blocks;
-    for (std::size_t g = 0; g < data.Start.size(); ++g)
-    {
-      double* block = data.Theta.data() + g * per;
-      blocks.push_back(block);
-      solverProblem.AddParameterBlock(block, per);
-      int k = 0;
-      const cga::GeneratorParameters& s = data.Start[g];
-      if (data.Fitted.weight)
-      {
-        solverProblem.SetParameterLowerBound(block, k, this->WeightRange[0]);
-        solverProblem.SetParameterUpperBound(block, k, this->WeightRange[1]);
-        ++k;
-      }
-      if (data.Fitted.location)
-      {
-        for (int j = 0; j < 3; ++j, ++k)
-        {
-          solverProblem.SetParameterLowerBound(block, k, s.location[j] - locationChange);
-          solverProblem.SetParameterUpperBound(block, k, s.location[j] + locationChange);
-        }
-      }
-      if (data.Fitted.direction)
-      {
-        const double change = this->MaximumDirectionChange * cga::norm(s.direction);
-        for (int j = 0; j < 3; ++j, ++k)
-        {
-          solverProblem.SetParameterLowerBound(block, k, s.direction[j] - change);
-          solverProblem.SetParameterUpperBound(block, k, s.direction[j] + change);
-        }
-      }
-      if (this->RegularizationWeight > 0.0)
-      {
-        solverProblem.AddResidualBlock(
-          new RegularizationCost(start.data() + g * per, per, this->RegularizationWeight),
-          nullptr, block);
-      }
-    }
-    // Residual blocks of 64 points: few enough blocks for Ceres's bookkeeping, each a copy from
-    // the cache.
-    constexpr vtkIdType pointsPerBlock = 64;
-    for (vtkIdType first = 0; first < count; first += pointsPerBlock)
-    {
-      solverProblem.AddResidualBlock(
-        new PointBlockCost(data, first, std::min(count, first + pointsPerBlock)), nullptr, blocks);
-    }
-
-    ceres::Solver::Options options;
-    options.linear_solver_type = ceres::DENSE_QR;
-    options.max_num_iterations = this->MaximumNumberOfIterations;
-    options.function_tolerance = this->FunctionTolerance;
-    options.gradient_tolerance = this->GradientTolerance;
-    options.parameter_tolerance = this->ParameterTolerance;
-    options.logging_type = ceres::SILENT;
-    options.minimizer_progress_to_stdout = false;
-    options.num_threads = 1; // the points are mapped in parallel by vtkSMPTools (FitData)
-    FitProgress progress(this, this->MaximumNumberOfIterations);
-    options.callbacks.push_back(&progress);
-    ceres::Solver::Summary summary;
-    ceres::Solve(options, &solverProblem, &summary);
-    if (vtkBoostedSurfacesCheckAbort(this) || summary.termination_type == ceres::USER_FAILURE)
-    {
-      return; // aborted: empty outputs
-    }
-    this->NumberOfIterations = static_cast<int>(summary.iterations.size()) - 1;
-    this->TerminationReason =
-      ceres::TerminationTypeToString(summary.termination_type) + std::string(": ") + summary.message;
-    if (summary.termination_type == ceres::FAILURE)
-    {
-      vtkErrorMacro(<< "the solver failed: " << summary.message);
-      return;
-    }
-
-    // The fitted unknowns (Ceres leaves the best point in the blocks), evaluated again for the
-    // final RMS. A fit no better than its start keeps the start.
-    const double regularization = [&] {
-      double sum = 0.0;
-      for (int u = 0; u < unknowns; ++u)
-      {
-        sum += (data.Theta[u] - start[u]) * (data.Theta[u] - start[u]);
-      }
-      return this->RegularizationWeight * sum;
-    }();
-    const bool finalValid = data.Evaluate(false);
-    const double finalData = finalValid ? data.MeanSquare() : initialData;
-    this->Improved = finalValid && finalData + regularization < initialData;
+    this->NumberOfIterations = result.Iterations;
+    this->NumberOfFits = fits;
+    this->TerminationReason = result.Termination;
+    this->Improved = result.Improved;
+    this->InitialRMS = std::sqrt(result.InitialData);
+    this->FinalRMS = this->Improved ? std::sqrt(result.FinalData) : this->InitialRMS;
     if (!this->Improved)
     {
-      data.Theta = start;
-      this->FinalRMS = this->InitialRMS;
-    }
-    else
-    {
-      this->FinalRMS = std::sqrt(finalData);
+      result.Generators = start; // a fit no better than its start keeps the start
     }
     if (!this->Improved && this->MaximumNumberOfIterations > 0) // 0: the start, evaluated
     {
@@ -906,7 +469,31 @@ int vtkPointPairFitFilter::RequestData(
                       << "); the outputs are the initial generators and the mesh as they deform "
                          "it");
     }
-    applyUnknowns(data.Start, data.Fitted, data.Theta.data(), fitted);
+    if (this->FitKinds)
+    {
+      if (!this->Improved)
+      {
+        identified.assign(start.size(), false); // the start's kinds were not chosen by the fit
+      }
+      std::string unidentified;
+      this->NumberOfUnidentifiedKinds = 0;
+      for (std::size_t g = 0; g < identified.size(); ++g)
+      {
+        if (!identified[g])
+        {
+          ++this->NumberOfUnidentifiedKinds;
+          unidentified += (unidentified.empty() ? "" : ", ") + std::to_string(g);
+        }
+      }
+      if (this->NumberOfUnidentifiedKinds > 0)
+      {
+        vtkWarningMacro(<< "the kinds of generators " << unidentified << " (of " << start.size()
+                        << ") cannot be identified: another kind fits within KindSeparation ("
+                        << this->KindSeparation
+                        << ") times the initial cost (the target does not tell them apart); "
+                           "their kinds are the best found, with KindIdentified 0");
+      }
+    }
     done = true;
   });
   if (!run || !done)
@@ -914,6 +501,7 @@ int vtkPointPairFitFilter::RequestData(
     output->Initialize();
     return 1;
   }
+  const std::vector<cga::GeneratorParameters>& fitted = result.Generators;
 
   // Output 0: the deformation filter's output for the fitted generators.
   vtkNew<vtkPointPairDeformationFilter> deformation;
@@ -952,20 +540,30 @@ int vtkPointPairFitFilter::RequestData(
   vtkNew<vtkGenericCell> cell;
   for (vtkIdType i = 0; i < count; ++i)
   {
-    double q[3], t[3], distance2 = 0.0;
+    double q[3], t[3], distance = 0.0;
     deformed->GetPoint(i, q);
     if (data.Surface)
     {
       vtkIdType cellId;
       int subId;
+      double distance2 = 0.0;
       locator->FindClosestPoint(q, t, cell, cellId, subId, distance2);
+      distance = std::sqrt(distance2);
     }
     else
     {
       target->GetPoint(i, t);
-      distance2 = vtkMath::Distance2BetweenPoints(q, t);
+      distance = std::hypot(q[0] - t[0], q[1] - t[1], q[2] - t[2]); // no overflow of squares
     }
-    residual->SetValue(i, std::sqrt(distance2));
+    if (!std::isfinite(distance))
+    {
+      // The fit's weighted cost was finite; a point of tiny weight may still be too far away.
+      vtkErrorMacro(<< "the residual of point " << i << " overflows (its image and its target "
+                    << "are near the largest double apart)");
+      output->Initialize();
+      return 1;
+    }
+    residual->SetValue(i, distance);
   }
   output->GetPointData()->AddArray(residual);
 
@@ -984,6 +582,16 @@ int vtkPointPairFitFilter::RequestData(
   vtkBoostedGeneratorGlyphs glyphs(vtkBoostedGeneratorGlyphs::KindAndPitch);
   glyphs.Add(fitted);
   glyphs.Write(generatorsOutput);
+  if (this->FitKinds)
+  {
+    vtkNew<vtkIntArray> kindIdentified;
+    kindIdentified->SetName("KindIdentified");
+    for (const bool known : identified)
+    {
+      kindIdentified->InsertNextValue(known ? 1 : 0);
+    }
+    generatorsOutput->GetPointData()->AddArray(kindIdentified);
+  }
   const char* columns[vtkBoostedGeneratorRows::NumberOfValues] = { "X", "Y", "Z", "DirectionX",
     "DirectionY", "DirectionZ", "Weight", "Kind", "Pitch" };
   for (int c = 0; c < vtkBoostedGeneratorRows::NumberOfValues; ++c)
@@ -1005,39 +613,28 @@ int vtkPointPairFitFilter::RequestData(
 void vtkPointPairFitFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  this->Generators->Print(os, indent);
-  vtkBoostedGeneratorRows::PrintSelection(os, indent,
-    { this->SelectedGenerator, this->SelectedGeneratorLocation, this->AimSelectedGenerator,
-      this->SelectedGeneratorTip });
   const auto name = [](const char* s) { return s ? s : "(none)"; };
-  os << indent << "GeneratorDirectionArrayName: " << name(this->GeneratorDirectionArrayName)
-     << "\n";
-  os << indent << "GeneratorWeightArrayName: " << name(this->GeneratorWeightArrayName) << "\n";
-  os << indent << "GeneratorKindArrayName: " << name(this->GeneratorKindArrayName) << "\n";
-  os << indent << "GeneratorPitchArrayName: " << name(this->GeneratorPitchArrayName) << "\n";
-  os << indent << "UseGeneratorWeightArray: " << this->UseGeneratorWeightArray << "\n";
   os << indent << "TargetMode: "
      << (this->TargetMode == POINT_TO_SURFACE ? "POINT_TO_SURFACE" : "POINT_TO_POINT") << "\n";
   os << indent << "PointWeightArrayName: " << name(this->PointWeightArrayName) << "\n";
   os << indent << "FitWeights: " << this->FitWeights << "\n";
   os << indent << "FitLocations: " << this->FitLocations << "\n";
   os << indent << "FitDirections: " << this->FitDirections << "\n";
+  os << indent << "FitPitches: " << this->FitPitches << "\n";
+  os << indent << "FitKinds: " << this->FitKinds << "\n";
+  os << indent << "KindSeparation: " << this->KindSeparation << "\n";
   os << indent << "RegularizationWeight: " << this->RegularizationWeight << "\n";
   os << indent << "WeightRange: [" << this->WeightRange[0] << ", " << this->WeightRange[1]
      << "]\n";
   os << indent << "MaximumLocationChange: " << this->MaximumLocationChange << "\n";
   os << indent << "MaximumDirectionChange: " << this->MaximumDirectionChange << "\n";
+  os << indent << "MaximumPitchChange: " << this->MaximumPitchChange << "\n";
   os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
   os << indent << "FunctionTolerance: " << this->FunctionTolerance << "\n";
   os << indent << "GradientTolerance: " << this->GradientTolerance << "\n";
   os << indent << "ParameterTolerance: " << this->ParameterTolerance << "\n";
-  os << indent << "Strength: " << this->Strength << "\n";
-  os << indent << "Falloff: " << this->Falloff << "\n";
-  os << indent << "Epsilon: " << this->Epsilon << "\n";
-  os << indent << "ExponentialRule: " << (this->ExponentialRule == PAPER ? "PAPER" : "EXACT")
-     << "\n";
-  os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
-  os << indent << "Last fit: " << this->NumberOfIterations << " iterations, RMS residual "
+  os << indent << "Last fit: " << this->NumberOfIterations << " iterations (" << this->NumberOfFits
+     << " fits, " << this->NumberOfUnidentifiedKinds << " kinds unidentified), RMS residual "
      << this->InitialRMS << " -> " << this->FinalRMS << (this->Improved ? "" : " (not improved)")
      << ", " << (this->TerminationReason.empty() ? "(no fit)" : this->TerminationReason) << "\n";
 }

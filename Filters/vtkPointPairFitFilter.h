@@ -7,8 +7,8 @@
  * deformation is vtkPointPairDeformationFilter's: generators i at x_i with direction v_i, weight
  * w_i and kind, B(p) = sum_i w_i G_i / (Falloff |p - x_i|^2 + Epsilon), p' = fn(K up(p) ~K),
  * K = exp(-Strength B(p)) (docs/conventions.md section 3 item 9). Starting from the given
- * generators, the filter finds the unknowns theta (the weights by default; with FitLocations and
- * FitDirections also the locations and directions; kinds and pitches stay as given) that minimize
+ * generators, the filter finds the unknowns theta (the weights by default; with FitLocations,
+ * FitDirections and FitPitches also the locations, directions and twists' pitches) that minimize
  *
  *   cost(theta) = sum_p omega_p r_p(theta)^2 / sum_p omega_p + RegularizationWeight |theta - theta_0|^2
  *
@@ -21,7 +21,19 @@
  * unknowns than the data fix, generators far from the mesh) near its start. Bounds: each weight
  * within WeightRange; each location coordinate within MaximumLocationChange times the mesh's
  * bounding-box diagonal of its initial value; each direction component within
- * MaximumDirectionChange times the initial direction's length of its initial value.
+ * MaximumDirectionChange times the initial direction's length of its initial value; each twist's
+ * pitch within MaximumPitchChange times the diagonal of its initial value.
+ *
+ * Kinds (FitKinds, off by default) are discrete: the filter then runs a greedy coordinate search
+ * (vtkPointPairFitSolver::SearchKinds): it fits the given kinds, then for each generator in turn
+ * fits each other kind in its place (that generator restarted from its initial values, the others
+ * from the best fit so far) and keeps a kind whose converged cost is lower by more than
+ * KindSeparation times the initial cost (a ROTATION also replaces a TWIST it matches within that
+ * margin: the twist contains it), sweeping until a sweep changes no kind (at most 4 sweeps): at
+ * most 1 + 16 M fits of M generators. A generator whose kind cannot be identified (another kind,
+ * not counting a TWIST against a ROTATION, fits within the margin: a field the target does not
+ * see there, or the identity) is named in a warning and has KindIdentified 0 in the Generators
+ * output.
  *
  * Solver: Ceres Solver's Levenberg-Marquardt (trust region, dense QR) with the analytic Jacobian
  * (cga::mapWithGeneratorDerivatives: the core's derivative of the map by B(p), times the closed
@@ -41,7 +53,7 @@
  * "FitFinalRMS", "FitImproved" (1 or 0) and "FitTermination" (Ceres's termination type and
  * message); 1, "Generators": the fitted generators as points with "Direction", "Weight", "Kind",
  * "Pitch" (vtkBoostedGeneratorGlyphs: the format of the deformation filter's Generators input,
- * which it feeds directly); 2, the same generators as a vtkTable of the generator rows' nine
+ * which it feeds directly) and, with FitKinds, "KindIdentified" (1 or 0); 2, the same generators as a vtkTable of the generator rows' nine
  * columns (X, Y, Z, DirectionX, DirectionY, DirectionZ, Weight, Kind, Pitch). The summary is also
  * in GetNumberOfIterations(), GetInitialRMS(), GetFinalRMS(), GetTerminationReason() and
  * PrintSelf. A fit that ends no lower than it started (nothing the unknowns can change reduces
@@ -57,7 +69,9 @@
  * POINT_TO_SURFACE, without cells), with a non-finite point or (POINT_TO_POINT) another number of
  * points than the mesh, a missing, wrongly shaped, negative, non-finite or all-zero point weight
  * array, bad Generators arrays or kinds, a non-finite Strength, NaN Falloff, Epsilon, tolerances
- * or bounds, an empty WeightRange, initial generators that send a point to infinity, or a
+ * or bounds, an empty WeightRange, initial generators that send a point to infinity (or,
+ * POINT_TO_SURFACE, beyond 1e150, as a target reaching beyond: the cell locator overflows there),
+ * residuals whose squares overflow, or a
  * problem larger than the memory budget (vtkBoostedMemoryBudget: the Jacobian holds residuals x
  * unknowns doubles).
  */
@@ -65,35 +79,22 @@
 #define vtkPointPairFitFilter_h
 
 #include "BoostedSurfacesFiltersModule.h" // for export macro
-#include "vtkPointSetAlgorithm.h"
+#include "vtkPointPairFieldAlgorithm.h"
 
-#include <memory> // for the generator list
 #include <string> // for the termination reason
 
-class vtkBoostedRowList;
-
-class BOOSTEDSURFACESFILTERS_EXPORT vtkPointPairFitFilter : public vtkPointSetAlgorithm
+class BOOSTEDSURFACESFILTERS_EXPORT vtkPointPairFitFilter : public vtkPointPairFieldAlgorithm
 {
 public:
   static vtkPointPairFitFilter* New();
-  vtkTypeMacro(vtkPointPairFitFilter, vtkPointSetAlgorithm);
+  vtkTypeMacro(vtkPointPairFitFilter, vtkPointPairFieldAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum ExponentialRules
-  {
-    EXACT = 0,
-    PAPER = 1
-  };
-
-  /// The kinds of generator (docs/conventions.md section 2 item 11), as the deformation filter's.
-  enum GeneratorKinds
-  {
-    POINT_PAIR = 0,
-    ROTATION = 1,
-    TWIST = 2,
-    DILATION = 3,
-    TRANSLATION = 4
-  };
+  // The initial generators (the list, AddGenerator ..., its selected row, SelectedGenerator ...,
+  // and the Generators input, port 2, SetGeneratorsConnection, with its Generator*ArrayName
+  // properties), the deformation's Strength, Falloff, Epsilon, ExponentialRule and
+  // OutputPointsPrecision and the EXACT/PAPER and kind constants are vtkPointPairFieldAlgorithm's,
+  // as the deformation filter's.
 
   /// What the residual of a point measures (see the class description).
   enum TargetModes
@@ -103,69 +104,9 @@ public:
   };
 
   ///@{
-  /// The initial generators: rows of location (x, y, z), direction (vx, vy, vz), weight, kind and
-  /// pitch, with the list API of vtkPointPairDeformationFilter (vtkBoostedRowList, at most 10^6
-  /// rows).
-  int AddGenerator(double x, double y, double z, double vx, double vy, double vz, double weight);
-  int AddGenerator(double x, double y, double z, double vx, double vy, double vz, double weight,
-    double kind, double pitch);
-  void SetGenerator(int index, double x, double y, double z, double vx, double vy, double vz,
-    double weight);
-  void SetGenerator(int index, double x, double y, double z, double vx, double vy, double vz,
-    double weight, double kind, double pitch);
-  void SetNumberOfGenerators(int count);
-  bool GetGenerator(int index, double values[9]) const;
-  void RemoveAllGenerators();
-  int GetNumberOfGenerators() const;
-  ///@}
-
-  ///@{
-  /// One initial generator of the list aimed and moved by itself (ParaView's line widget from its
-  /// location to its tip), as vtkPointPairDeformationFilter's: when SelectedGenerator is a valid
-  /// row index, that row starts at SelectedGeneratorLocation and, when AimSelectedGenerator is
-  /// on, along SelectedGeneratorTip - SelectedGeneratorLocation (its length multiplies the
-  /// weight). -1 (the default) selects none; defaults location (0, 0, 0), aim off, tip (0, 0, 1).
-  /// A non-finite location or (aimed) tip makes that row unusable, as a non-finite row value.
-  vtkSetClampMacro(SelectedGenerator, int, -1, VTK_INT_MAX);
-  vtkGetMacro(SelectedGenerator, int);
-  vtkSetVector3Macro(SelectedGeneratorLocation, double);
-  vtkGetVector3Macro(SelectedGeneratorLocation, double);
-  vtkSetMacro(AimSelectedGenerator, bool);
-  vtkGetMacro(AimSelectedGenerator, bool);
-  vtkBooleanMacro(AimSelectedGenerator, bool);
-  vtkSetVector3Macro(SelectedGeneratorTip, double);
-  vtkGetVector3Macro(SelectedGeneratorTip, double);
-  ///@}
-
-  ///@{
   /// The target (input 1): a vtkPointSet (see TargetMode).
   void SetTargetConnection(vtkAlgorithmOutput* output);
   void SetTargetData(vtkDataObject* data);
-  ///@}
-
-  ///@{
-  /// The optional initial generators as data (input 2), in the format of the deformation
-  /// filter's Generators input and of every class's Generators output.
-  void SetGeneratorsConnection(vtkAlgorithmOutput* output);
-  void SetGeneratorsData(vtkDataObject* data);
-  ///@}
-
-  ///@{
-  /// The Generators input's arrays, as vtkPointPairDeformationFilter's: directions (default
-  /// "Direction"), weights (default "Weight", read when UseGeneratorWeightArray is on; default
-  /// off, every weight 1, as there: turn it on to start from another fit's Generators output),
-  /// kinds ("Kind") and pitches ("Pitch"), the last two optional.
-  vtkSetStringMacro(GeneratorDirectionArrayName);
-  vtkGetStringMacro(GeneratorDirectionArrayName);
-  vtkSetStringMacro(GeneratorWeightArrayName);
-  vtkGetStringMacro(GeneratorWeightArrayName);
-  vtkSetStringMacro(GeneratorKindArrayName);
-  vtkGetStringMacro(GeneratorKindArrayName);
-  vtkSetStringMacro(GeneratorPitchArrayName);
-  vtkGetStringMacro(GeneratorPitchArrayName);
-  vtkSetMacro(UseGeneratorWeightArray, bool);
-  vtkGetMacro(UseGeneratorWeightArray, bool);
-  vtkBooleanMacro(UseGeneratorWeightArray, bool);
   ///@}
 
   ///@{
@@ -184,10 +125,11 @@ public:
   ///@}
 
   ///@{
-  /// The unknowns: the weights (default on), the locations and the directions (default off) of
-  /// every generator. At least one must be on. A direction's length multiplies its weight, so
-  /// fitting both weights and directions leaves one scale per generator free: the
-  /// RegularizationWeight (or the bounds) then picks one.
+  /// The unknowns: the weights (default on), the locations, the directions and the pitches
+  /// (default off) of every generator; a pitch is read by a TWIST only, so only twists' pitches
+  /// move. At least one must be on. A direction's length multiplies its weight, so fitting both
+  /// weights and directions leaves one scale per generator free: the RegularizationWeight (or the
+  /// bounds) then picks one.
   vtkSetMacro(FitWeights, bool);
   vtkGetMacro(FitWeights, bool);
   vtkBooleanMacro(FitWeights, bool);
@@ -197,6 +139,21 @@ public:
   vtkSetMacro(FitDirections, bool);
   vtkGetMacro(FitDirections, bool);
   vtkBooleanMacro(FitDirections, bool);
+  vtkSetMacro(FitPitches, bool);
+  vtkGetMacro(FitPitches, bool);
+  vtkBooleanMacro(FitPitches, bool);
+  ///@}
+
+  ///@{
+  /// Choose every generator's kind too (default off): the greedy search of the class description,
+  /// over the unknowns above. KindSeparation (default 1e-6, in [0, 1]) is the margin, a fraction
+  /// of the initial cost, by which one kind must fit better than another to be preferred and to
+  /// count as identified.
+  vtkSetMacro(FitKinds, bool);
+  vtkGetMacro(FitKinds, bool);
+  vtkBooleanMacro(FitKinds, bool);
+  vtkSetClampMacro(KindSeparation, double, 0.0, 1.0);
+  vtkGetMacro(KindSeparation, double);
   ///@}
 
   ///@{
@@ -210,13 +167,17 @@ public:
   /// Bounds of the unknowns: every fitted weight within WeightRange (default [-1000, 1000], min <=
   /// max); every location coordinate within MaximumLocationChange (default 0.25) times the mesh's
   /// bounding-box diagonal of its initial value; every direction component within
-  /// MaximumDirectionChange (default 1) times the initial direction's length of its initial value.
+  /// MaximumDirectionChange (default 1) times the initial direction's length of its initial value;
+  /// every twist's pitch (a length per radian) within MaximumPitchChange (default 1) times the
+  /// diagonal of its initial value.
   vtkSetVector2Macro(WeightRange, double);
   vtkGetVector2Macro(WeightRange, double);
   vtkSetClampMacro(MaximumLocationChange, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MaximumLocationChange, double);
   vtkSetClampMacro(MaximumDirectionChange, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MaximumDirectionChange, double);
+  vtkSetClampMacro(MaximumPitchChange, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumPitchChange, double);
   ///@}
 
   ///@{
@@ -236,28 +197,15 @@ public:
   ///@}
 
   ///@{
-  /// The deformation's parameters, as vtkPointPairDeformationFilter's: Strength (default 1,
-  /// finite), Falloff k (default 1), Epsilon (default 0.01, at least 1e-10), ExponentialRule
-  /// (EXACT, default, or PAPER) and the output's OutputPointsPrecision.
-  vtkSetMacro(Strength, double);
-  vtkGetMacro(Strength, double);
-  vtkSetClampMacro(Falloff, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(Falloff, double);
-  vtkSetClampMacro(Epsilon, double, 1e-10, VTK_DOUBLE_MAX);
-  vtkGetMacro(Epsilon, double);
-  vtkSetClampMacro(ExponentialRule, int, EXACT, PAPER);
-  vtkGetMacro(ExponentialRule, int);
-  void SetExponentialRuleToExact() { this->SetExponentialRule(EXACT); }
-  void SetExponentialRuleToPaper() { this->SetExponentialRule(PAPER); }
-  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
-  vtkGetMacro(OutputPointsPrecision, int);
-  ///@}
-
-  ///@{
   /// The last fit's summary (also in the output's field data): iterations, the weighted RMS
   /// residual of the initial and of the fitted generators, whether the fit lowered the cost, and
-  /// Ceres's termination type and message. -1, NaN and empty before a fit or after an error.
+  /// Ceres's termination type and message (of the best fit with FitKinds; the iterations are
+  /// then those of every fit run, GetNumberOfFits() of them; 1 without FitKinds), and with
+  /// FitKinds the number of generators whose kind could not be identified (-1 without). -1, NaN
+  /// and empty before a fit or after an error.
   int GetNumberOfIterations() const { return this->NumberOfIterations; }
+  int GetNumberOfFits() const { return this->NumberOfFits; }
+  int GetNumberOfUnidentifiedKinds() const { return this->NumberOfUnidentifiedKinds; }
   double GetInitialRMS() const { return this->InitialRMS; }
   double GetFinalRMS() const { return this->FinalRMS; }
   bool GetImproved() const { return this->Improved; }
@@ -275,36 +223,27 @@ protected:
     vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  std::unique_ptr<vtkBoostedRowList> Generators;
-  int SelectedGenerator = -1;
-  double SelectedGeneratorLocation[3] = { 0.0, 0.0, 0.0 };
-  bool AimSelectedGenerator = false;
-  double SelectedGeneratorTip[3] = { 0.0, 0.0, 1.0 };
-  char* GeneratorDirectionArrayName = nullptr;
-  char* GeneratorWeightArrayName = nullptr;
-  char* GeneratorKindArrayName = nullptr;
-  char* GeneratorPitchArrayName = nullptr;
-  bool UseGeneratorWeightArray = false;
   int TargetMode = POINT_TO_POINT;
   char* PointWeightArrayName = nullptr;
   bool FitWeights = true;
   bool FitLocations = false;
   bool FitDirections = false;
+  bool FitPitches = false;
+  bool FitKinds = false;
+  double KindSeparation = 1e-6;
   double RegularizationWeight = 0.0;
   double WeightRange[2] = { -1000.0, 1000.0 };
   double MaximumLocationChange = 0.25;
   double MaximumDirectionChange = 1.0;
+  double MaximumPitchChange = 1.0;
   int MaximumNumberOfIterations = 100;
   double FunctionTolerance = 1e-12;
   double GradientTolerance = 1e-14;
   double ParameterTolerance = 1e-12;
-  double Strength = 1.0;
-  double Falloff = 1.0;
-  double Epsilon = 0.01;
-  int ExponentialRule = EXACT;
-  int OutputPointsPrecision = DEFAULT_PRECISION;
 
   int NumberOfIterations = -1;
+  int NumberOfFits = -1;
+  int NumberOfUnidentifiedKinds = -1;
   double InitialRMS;
   double FinalRMS;
   bool Improved = false;

@@ -2,7 +2,8 @@
 // Exact, the kernel benchmark's first M generators:
 // GeneratorJacobian/M:<generators>/fit:<unknowns per generator> times the fit's Jacobian rows,
 // cga::mapWithGeneratorDerivatives (the image and d image / d theta per point: 1 = the weights,
-// 7 = weights, locations and directions); FitIteration/<PointToPoint|PointToSurface>/M/fit times
+// 7 = weights, locations and directions, 8 = those and the pitches of generators made twists of
+// pitch 0.1); FitIteration/<PointToPoint|PointToSurface>/M/fit times
 // one solver iteration of the filter (an update of 1 iteration minus one of 0 iterations: the
 // Jacobian evaluation, Ceres's step and the trial point's residuals). Both report the time per
 // point and per unknown (counter "time/point/unknown"); FitIteration's time is the process's CPU
@@ -26,7 +27,9 @@ namespace
 using namespace boostedbench;
 constexpr std::size_t kFitPoints = 10000;
 
-std::vector<cga::GeneratorParameters> fitGenerators(int count)
+// The kernel benchmark's point pairs; with the pitches fitted (8 unknowns each), twists of pitch
+// 0.1 along the same directions.
+std::vector<cga::GeneratorParameters> fitGenerators(int count, int perGenerator)
 {
   std::vector<cga::GeneratorParameters> generators;
   for (const cga::PointPairGenerator& g : benchmarkGenerators(count))
@@ -35,6 +38,11 @@ std::vector<cga::GeneratorParameters> fitGenerators(int count)
     row.location = g.location;
     row.direction = g.direction;
     row.weight = g.weight;
+    if (perGenerator == cga::kGeneratorParameters)
+    {
+      row.kind = cga::GeneratorKind::Twist;
+      row.pitch = 0.1;
+    }
     generators.push_back(row);
   }
   return generators;
@@ -42,15 +50,16 @@ std::vector<cga::GeneratorParameters> fitGenerators(int count)
 
 cga::FittedParameters fitted(int perGenerator)
 {
-  return perGenerator == 1 ? cga::FittedParameters{ true, false, false }
-                           : cga::FittedParameters{ true, true, true };
+  return perGenerator == 1 ? cga::FittedParameters{ true, false, false, false }
+                           : cga::FittedParameters{ true, true, true, perGenerator == 8 };
 }
 
 void GeneratorJacobian(benchmark::State& state)
 {
   const int generators = static_cast<int>(state.range(0));
   const cga::FittedParameters fit = fitted(static_cast<int>(state.range(1)));
-  const std::vector<cga::GeneratorParameters> rows = fitGenerators(generators);
+  const std::vector<cga::GeneratorParameters> rows =
+    fitGenerators(generators, static_cast<int>(state.range(1)));
   const cga::PointPairField field(rows.data(), rows.size(), kFalloff, kEpsilon);
   const double* points = meshPoints(sheetMesh(kFitPoints));
   const int unknowns = generators * fit.perGenerator();
@@ -86,12 +95,13 @@ void FitIteration(benchmark::State& state, int mode)
   vtkNew<vtkPointPairFitFilter> fit;
   fit->SetInputData(mesh);
   fit->SetTargetConnection(target->GetOutputPort());
-  for (const cga::GeneratorParameters& g : fitGenerators(generators))
+  for (const cga::GeneratorParameters& g : fitGenerators(generators, perGenerator))
   {
+    const double kind = static_cast<double>(g.kind);
     target->AddGenerator(g.location.x, g.location.y, g.location.z, g.direction.x,
-      g.direction.y, g.direction.z, g.weight);
+      g.direction.y, g.direction.z, g.weight, kind, g.pitch);
     fit->AddGenerator(g.location.x, g.location.y, g.location.z, g.direction.x, g.direction.y,
-      g.direction.z, 0.5 * g.weight); // a start the first iteration improves
+      g.direction.z, 0.5 * g.weight, kind, 0.5 * g.pitch); // a start the first iteration improves
   }
   target->SetFalloff(kFalloff);
   target->SetEpsilon(kEpsilon);
@@ -100,8 +110,9 @@ void FitIteration(benchmark::State& state, int mode)
   fit->SetEpsilon(kEpsilon);
   fit->SetStrength(kStrength);
   fit->SetTargetMode(mode);
-  fit->SetFitLocations(perGenerator == 7);
-  fit->SetFitDirections(perGenerator == 7);
+  fit->SetFitLocations(perGenerator >= 7);
+  fit->SetFitDirections(perGenerator >= 7);
+  fit->SetFitPitches(perGenerator == 8);
   target->Update();
   const auto seconds = [&](int iterations) {
     fit->SetMaximumNumberOfIterations(iterations);
@@ -133,12 +144,13 @@ void FitIteration(benchmark::State& state, int mode)
     benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
-void fitArguments(benchmark::internal::Benchmark* benchmark, std::initializer_list<long> counts)
+void fitArguments(benchmark::internal::Benchmark* benchmark, std::initializer_list<long> counts,
+  std::initializer_list<long> unknownsPerGenerator = { 1, 7 })
 {
   benchmark->ArgNames({ "M", "fit" });
   for (long generators : counts)
   {
-    for (long perGenerator : { 1, 7 })
+    for (long perGenerator : unknownsPerGenerator)
     {
       benchmark->Args({ generators, perGenerator });
     }
@@ -148,9 +160,9 @@ void fitArguments(benchmark::internal::Benchmark* benchmark, std::initializer_li
 } // namespace
 
 BENCHMARK(GeneratorJacobian)
-  ->Apply([](benchmark::internal::Benchmark* b) { fitArguments(b, { 4, 16, 64 }); });
+  ->Apply([](benchmark::internal::Benchmark* b) { fitArguments(b, { 4, 16, 64 }, { 1, 7, 8 }); });
 BENCHMARK_CAPTURE(FitIteration, PointToPoint, vtkPointPairFitFilter::POINT_TO_POINT)
-  ->Apply([](benchmark::internal::Benchmark* b) { fitArguments(b, { 4, 16, 64 }); })
+  ->Apply([](benchmark::internal::Benchmark* b) { fitArguments(b, { 4, 16, 64 }, { 1, 7, 8 }); })
   ->UseManualTime();
 // The target's cell locator dominates here (README, Performance): fewer rows, fewer repetitions.
 BENCHMARK_CAPTURE(FitIteration, PointToSurface, vtkPointPairFitFilter::POINT_TO_SURFACE)

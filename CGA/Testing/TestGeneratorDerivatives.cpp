@@ -33,12 +33,16 @@ double largestDifference(const Bivector& a, const Bivector& b)
   return (a - b).maxAbs();
 }
 
-// The parameter `index` of `g` (weight, location x y z, direction x y z) moved by `step`.
+// The parameter `index` of `g` (weight, location x y z, direction x y z, pitch) moved by `step`.
 GeneratorParameters withParameterMoved(GeneratorParameters g, int index, double step)
 {
   if (index == 0)
   {
     g.weight += step;
+  }
+  else if (index == 7)
+  {
+    g.pitch += step;
   }
   else if (index <= 3)
   {
@@ -87,7 +91,43 @@ TEST(GeneratorDerivatives, GeneratorsByLocationAndDirectionMatchCentralDifferenc
                   kind == GeneratorKind::Dilation ? 1e-9 : 1e-11)
           << "kind " << static_cast<int>(kind) << ", direction " << j;
       }
+      // G is linear in the pitch (a twist's h/2 v ni; the other kinds do not read it).
+      const double h = 1e-3;
+      const Bivector byPitch =
+        (referenceG(withParameterMoved(g, 7, h)) - referenceG(withParameterMoved(g, 7, -h))) / (2.0 * h);
+      EXPECT_LT(largestDifference(d.byPitch, byPitch), 1e-11) << "kind " << static_cast<int>(kind);
+      if (kind == GeneratorKind::Twist)
+      {
+        EXPECT_GT(d.byPitch.maxAbs(), 0.05); // |v| >= 0.2: the test compares something
+      }
+      else
+      {
+        EXPECT_EQ(d.byPitch.maxAbs(), 0.0) << "kind " << static_cast<int>(kind);
+      }
     }
+  }
+}
+
+// A twist's term by its pitch against the full product's twist minus its rotation: the
+// difference of the definitions is h/2 v ni / D times w, so dT/dh is it divided by h.
+TEST(GeneratorDerivatives, TwistTermByPitchIsItsScrewPartOverThePitch)
+{
+  Random random(1304);
+  for (int n = 0; n < 100; ++n)
+  {
+    GeneratorParameters twist = randomGenerator(random, GeneratorKind::Twist);
+    twist.pitch = random.uniform(0.1, 2.0) * (n % 2 ? 1.0 : -1.0);
+    twist.weight = random.uniform(0.5, 2.0);
+    GeneratorParameters rotation = twist;
+    rotation.kind = GeneratorKind::Rotation;
+    const Vec3 p = random.vec3(2.0);
+    const double falloff = random.uniform(0.0, 2.0), epsilon = random.uniform(0.05, 1.0);
+    Bivector d[kGeneratorParameters];
+    ASSERT_TRUE(fieldTermDerivatives(twist, p, falloff, epsilon, d));
+    const Bivector screw = (referenceTerm(twist, p, falloff, epsilon) -
+                            referenceTerm(rotation, p, falloff, epsilon)) / twist.pitch;
+    EXPECT_LT(largestDifference(d[7], screw), 1e-12 * (1.0 + screw.maxAbs()));
+    EXPECT_GT(screw.maxAbs(), 1e-4); // not a comparison of zeros
   }
 }
 
@@ -101,12 +141,12 @@ TEST(GeneratorDerivatives, FieldTermsMatchCentralDifferencesOfTheFullProduct)
       const GeneratorParameters g = randomGenerator(random, kind);
       const Vec3 p = random.vec3(2.0);
       const double falloff = random.uniform(0.0, 2.0), epsilon = random.uniform(0.05, 1.0);
-      Bivector d[7];
+      Bivector d[kGeneratorParameters];
       ASSERT_TRUE(fieldTermDerivatives(g, p, falloff, epsilon, d));
       // The weight: exactly linear.
       EXPECT_LT(largestDifference(d[0] * g.weight, referenceTerm(g, p, falloff, epsilon)),
                 1e-13 * (1.0 + referenceTerm(g, p, falloff, epsilon).maxAbs()));
-      for (int index = 1; index < 7; ++index)
+      for (int index = 1; index < kGeneratorParameters; ++index)
       {
         // 1/D is not a polynomial: a fourth-order central difference (error h^4 f^(5)/30).
         const double h = 1e-3;
@@ -125,7 +165,7 @@ TEST(GeneratorDerivatives, FieldTermsMatchCentralDifferencesOfTheFullProduct)
 TEST(GeneratorDerivatives, UnusableGeneratorsHaveNoDerivative)
 {
   GeneratorDerivative d;
-  Bivector terms[7];
+  Bivector terms[kGeneratorParameters];
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_FALSE(generatorDerivative({ GeneratorKind::PointPair, { 0, 0, 0 }, { 0, 0, 0 } }, d));
   EXPECT_FALSE(generatorDerivative({ GeneratorKind::Rotation, { 0, 0, 0 }, { nan, 0, 1 } }, d));
@@ -146,7 +186,7 @@ namespace
 TEST(GeneratorDerivatives, MapDerivativesByEveryParameterMatchCentralDifferencesOfTheMap)
 {
   Random random(1303);
-  const FittedParameters all{ true, true, true };
+  const FittedParameters all{ true, true, true, true };
   for (ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
   {
     for (int n = 0; n < 40; ++n)
@@ -163,7 +203,7 @@ TEST(GeneratorDerivatives, MapDerivativesByEveryParameterMatchCentralDifferences
       const Vec3 p = random.vec3(2.0);
       const double strength = random.uniform(0.5, 1.5);
       Vec3 out, reference;
-      const int unknowns = 7 * static_cast<int>(generators.size());
+      const int unknowns = kGeneratorParameters * static_cast<int>(generators.size());
       std::vector<double> derivatives(3 * unknowns);
       ASSERT_TRUE(mapWithGeneratorDerivatives(field, generators.data(), generators.size(), all,
                                               p, strength, rule, out, derivatives.data()));
@@ -176,7 +216,7 @@ TEST(GeneratorDerivatives, MapDerivativesByEveryParameterMatchCentralDifferences
       ASSERT_TRUE(field.mapWithWeightDerivatives(p, strength, rule, unused, byWeight.data()));
       for (std::size_t i = 0; i < generators.size(); ++i)
       {
-        for (int k = 0; k < 7; ++k)
+        for (int k = 0; k < kGeneratorParameters; ++k)
         {
           const auto image = [&](double step) {
             std::vector<GeneratorParameters> moved = generators;
@@ -189,7 +229,7 @@ TEST(GeneratorDerivatives, MapDerivativesByEveryParameterMatchCentralDifferences
           const double h = 1e-4;
           const Vec3 difference =
             (image(-2.0 * h) - 8.0 * image(-h) + 8.0 * image(h) - image(2.0 * h)) / (12.0 * h);
-          const double* column = derivatives.data() + 3 * (7 * i + k);
+          const double* column = derivatives.data() + 3 * (kGeneratorParameters * i + k);
           const double scale = 1.0 + norm(difference);
           for (int j = 0; j < 3; ++j)
           {

@@ -56,6 +56,7 @@ bool generatorDerivative(const GeneratorParameters& g, GeneratorDerivative& out)
         if (g.kind == GeneratorKind::Twist)
         {
           d.byDirection[j] += FieldGenerator::translation(x, g.pitch * e).bivector;
+          d.byPitch = FieldGenerator::translation(x, v).bivector; // d(h/2 v ni)/dh = 1/2 v ni
         }
         break;
       case GeneratorKind::Dilation:
@@ -80,7 +81,7 @@ bool generatorDerivative(const GeneratorParameters& g, GeneratorDerivative& out)
 }
 
 bool fieldTermDerivatives(const GeneratorParameters& g, Vec3 p, double falloff, double epsilon,
-                          Bivector out[7])
+                          Bivector out[kGeneratorParameters])
 {
   GeneratorDerivative d;
   if (!generatorDerivative(g, d))
@@ -98,6 +99,7 @@ bool fieldTermDerivatives(const GeneratorParameters& g, Vec3 p, double falloff, 
     out[1 + j] = g.weight * inverse * (d.byLocation[j] + (2.0 * falloff * rs[j] * inverse) * G);
     out[4 + j] = (g.weight * inverse) * d.byDirection[j];
   }
+  out[7] = (g.weight * inverse) * d.byPitch;
   return true;
 }
 
@@ -121,18 +123,19 @@ bool mapWithGeneratorDerivatives(const PointPairField& field,
     return false;
   }
   // d out / d B is by B(p) in space (PointPairField::generatorAt): the terms' derivatives there.
-  const bool use[7] = { fitted.weight,    fitted.location,  fitted.location, fitted.location,
-                        fitted.direction, fitted.direction, fitted.direction };
+  const bool use[kGeneratorParameters] = { fitted.weight,    fitted.location,  fitted.location,
+                                           fitted.location,  fitted.direction, fitted.direction,
+                                           fitted.direction, fitted.pitch };
   double* row = derivatives;
   for (std::size_t i = 0; i < count; ++i)
   {
     const GeneratorParameters& g = generators[i];
-    Bivector terms[7];
+    Bivector terms[kGeneratorParameters];
     if (!fieldTermDerivatives(g, p, field.falloff(), field.epsilon(), terms))
     {
       return false;
     }
-    for (int k = 0; k < 7; ++k)
+    for (int k = 0; k < kGeneratorParameters; ++k)
     {
       if (!use[k])
       {

@@ -176,6 +176,11 @@ def build(spec):
     else:
         count = 0 if empty else size * size
         data = (polydata if kind == "polydata" else unstructured)(rng, spec, count)
+    if "moved" in spec and data.IsA("vtkPointSet") and data.GetPoints() is not None:
+        # The same data set with its points moved (a fit target with the mesh's points in order).
+        moves = random.Random(spec["moved"])
+        for i in range(data.GetNumberOfPoints()):
+            data.GetPoints().SetPoint(i, [x + moves.uniform(-0.3, 0.3) for x in data.GetPoint(i)])
     points = data.GetNumberOfPoints()
     all_finite = image_finite(data) if kind == "image" else True
     if kind == "rectilinear":
@@ -203,5 +208,6 @@ def summary(spec):
     """A short text for a recipe's printout."""
     if spec is None:
         return "None"
-    return "<%s: %s points, size %d, %d point arrays, seed %d>" % (
-        spec["kind"], spec["points"], spec["size"], len(spec["arrays"]), spec["seed"])
+    return "<%s: %s points, size %d, %d point arrays, seed %d%s>" % (
+        spec["kind"], spec["points"], spec["size"], len(spec["arrays"]), spec["seed"],
+        ", moved by seed %d" % spec["moved"] if "moved" in spec else "")

@@ -4,10 +4,13 @@ Every class of the boostedsurfaces package that is a vtkAlgorithm is fuzzed, and
 found by introspection of the wrapped class, so that a new class, property or list is fuzzed
 without touching this file:
 
-* setters: every Set<Name> declared by the class whose Python signature takes only int, float or
-  bool values (or one str), with its clamp range from Get<Name>MinValue/MaxValue when it has one;
+* setters: every Set<Name> declared by the class or by a base class of the package (the shared
+  vtkPointPairFieldAlgorithm) whose Python signature takes only int, float or bool values (or one
+  str), with its clamp range from Get<Name>MinValue/MaxValue when it has one;
 * shortcuts: every argument-less Set<Name>To<Value>;
 * lists: every Add<Row> with numeric arguments that has a SetNumberOf<Row>s (the one list API);
+  a row's kind column (ROW_KINDS) is mostly one of the kinds, so that most rows are usable and
+  the classes do real work (a random double is almost never a kind), and sometimes any value;
 * array selections: every Get<Name>ArraySelection returning a vtkDataArraySelection (names of
   input arrays to act on), whose arrays are enabled, disabled or cleared;
 * inputs: every input port, its required data type and whether it is optional.
@@ -23,6 +26,8 @@ import sys
 
 import boostedsurfaces
 from vtkmodules.vtkCommonCore import vtkDataArraySelection
+from vtkmodules.vtkCommonDataModel import (vtkImageData, vtkPolyData, vtkRectilinearGrid,
+                                           vtkStructuredGrid, vtkUnstructuredGrid)
 from vtkmodules.vtkCommonExecutionModel import vtkAlgorithm
 
 INT_MIN, INT_MAX = -2 ** 31, 2 ** 31 - 1
@@ -37,6 +42,12 @@ NON_FINITE = [math.nan, math.inf, -math.inf]
 EXTREME_INTS = [0, 1, -1, 2, 3, 1000, 65536, 100000, 100001, MAXIMUM_ROWS, MAXIMUM_ROWS + 1,
                 10 ** 8, INT_MAX - 1, INT_MAX, INT_MIN, INT_MIN + 1]
 NAMES = ["Direction", "Weight", "Normals", "", "missing", "x" * 300, "\u00dcn\u00efcode"]
+
+# The column of a list row that holds a kind, and the kinds (vtkBoostedGeneratorRows: a generator
+# row is x, y, z, direction x, y, z, weight, kind, pitch; the kinds are the classes' POINT_PAIR ...
+# TRANSLATION, 0 to 4). Other values of that column are bad input, chosen with BAD_KIND_RATE.
+ROW_KINDS = {"Generator": (7, [0, 1, 2, 3, 4])}
+BAD_KIND_RATE = 0.04
 
 # The value regimes of a trial: most trials stay where the classes do real work, so that valid
 # outputs are checked as often as refusals.
@@ -75,7 +86,7 @@ class ClassModel:
     def __init__(self, cls):
         self.cls = cls
         self.name = cls.__name__
-        own = sorted(vars(cls))
+        own = sorted(set().union(*(vars(base) for base in package_classes(cls))))
         self.lists = {}
         for method in own:
             if method.startswith("Add"):
@@ -117,12 +128,28 @@ class ClassModel:
             self.ports.append((required, optional))
 
 
+def package_classes(cls):
+    """cls and its base classes that the boostedsurfaces package defines (their methods are the
+    class's own API; VTK's bases are not fuzzed)."""
+    return [base for base in cls.__mro__ if getattr(boostedsurfaces, base.__name__, None) is base]
+
+
+def instantiable(cls):
+    """False for an abstract class (a shared base such as vtkPointPairFieldAlgorithm)."""
+    try:
+        cls()
+    except TypeError:
+        return False
+    return True
+
+
 def discover():
-    """A ClassModel for every vtkAlgorithm of the boostedsurfaces package, sorted by name."""
+    """A ClassModel for every concrete vtkAlgorithm of the boostedsurfaces package, sorted by
+    name."""
     models = []
     for name in sorted(dir(boostedsurfaces)):
         cls = getattr(boostedsurfaces, name)
-        if isinstance(cls, type) and issubclass(cls, vtkAlgorithm):
+        if isinstance(cls, type) and issubclass(cls, vtkAlgorithm) and instantiable(cls):
             models.append(ClassModel(cls))
     return models
 
@@ -196,10 +223,27 @@ class Values:
             return self.rng.choice([-1, INT_MIN, MAXIMUM_ROWS + 1, INT_MAX, 0])
         return self.rng.randint(0, 4)
 
+    def row(self, name, width):
+        """The values of a list row: random, but its kind column (ROW_KINDS) mostly a kind."""
+        values = [self.double() for _ in range(width)]
+        column, kinds = ROW_KINDS.get(name, (None, None))
+        if column is not None and column < width and self.rng.random() >= BAD_KIND_RATE:
+            values[column] = float(self.rng.choice(kinds))
+        return values
+
+
+# The data-set kinds of fuzz_inputs and their VTK classes.
+KIND_CLASSES = {"polydata": vtkPolyData, "unstructured": vtkUnstructuredGrid,
+                "structured": vtkStructuredGrid, "image": vtkImageData,
+                "rectilinear": vtkRectilinearGrid}
+
 
 def data_spec(rng, values, required, optional, rows_hint):
-    """The input of one port: a data-set kind and how to fill it (built by fuzz_inputs.build)."""
-    kinds = ["polydata", "unstructured", "structured", "image", "rectilinear"]
+    """The input of one port: a data-set kind and how to fill it (built by fuzz_inputs.build).
+    Mostly a kind the port accepts (so that the class runs), sometimes any (the pipeline's type
+    check refuses it)."""
+    kinds = sorted(KIND_CLASSES)
+    accepted = [k for k in kinds if any(KIND_CLASSES[k].IsTypeOf(t) for t in required)] or kinds
     spec = {"seed": rng.getrandbits(32), "regime": values.regime}
     roll = rng.random()
     if roll < (0.25 if optional else 0.02):  # no input: on a required port the pipeline refuses
@@ -209,7 +253,7 @@ def data_spec(rng, values, required, optional, rows_hint):
     elif roll < 0.08:
         spec["kind"] = "empty-" + rng.choice(kinds)
     else:
-        spec["kind"] = rng.choice(kinds)
+        spec["kind"] = rng.choice(accepted if rng.random() < 0.85 else kinds)
     spec["points"] = rng.choice(["double", "double", "float", "soa-double", "soa-float", "int"])
     spec["size"] = rng.choice([1, 2, 3, 4, 6, 8]) if rows_hint else rng.choice([2, 3, 5, 8, 12])
     # Arrays: the names this class reads are among NAMES; on an optional port (the Generators
@@ -218,6 +262,10 @@ def data_spec(rng, values, required, optional, rows_hint):
                        rng.choice(["double", "float", "int", "soa-double", "uchar"]),
                        rng.choice([0, 0, 0, 0, -1, 1, 5]) if optional else 0)
                       for _ in range(rng.randint(0, 3))]
+    if rows_hint and rng.random() < 0.75:
+        # Generators as data: mostly with the directions a class reads by default (NAMES[0]),
+        # so that the port's generators are used; the random arrays above may still spoil them.
+        spec["arrays"].insert(0, (NAMES[0], 3, "double", 0))
     spec["cell_arrays"] = rng.randint(0, 2)
     return spec
 
@@ -261,10 +309,9 @@ def mutation(rng, values, model, rows):
                                 [5, 3, 1.5, 1, 0.3])[0]
         if operation == "Add":
             rows[row] += 1
-            return ("Add%s" % row, [values.double() for _ in range(width)])
+            return ("Add%s" % row, values.row(row, width))
         if operation == "Set":
-            return ("Set%s" % row, [values.index(rows[row])] +
-                    [values.double() for _ in range(width)])
+            return ("Set%s" % row, [values.index(rows[row])] + values.row(row, width))
         if operation == "SetNumberOf":
             rows[row] = values.count()
             return ("SetNumberOf%ss" % row, [rows[row]])
@@ -290,7 +337,10 @@ def mutation(rng, values, model, rows):
     types, bounds = model.setters[name]
     if all(t == "float" for t in types) and len(types) > 1 and rng.random() < 0.1:
         return ("Set" + name, [0.0] * len(types))  # a zero vector
-    return ("Set" + name, [values.value(t, bounds) for t in types])
+    arguments = [values.value(t, bounds) for t in types]
+    if name.endswith("Range") and len(types) == 2 and rng.random() < 0.85:
+        arguments.sort(key=lambda x: (math.isnan(x), x))  # mostly [min, max] (a NaN stays)
+    return ("Set" + name, arguments)
 
 
 def make_recipe(models, seed, trial):
@@ -305,16 +355,26 @@ def make_recipe(models, seed, trial):
     for port, (required, optional) in enumerate(model.ports):
         if not optional or rng.random() < 0.5:
             # A later optional port holds a few rows (generators); a later required one (the fit
-            # filter's target) is sized like the first, and half the time is the first's data
-            # (the same points: a fit to where the mesh already is).
+            # filter's target) is sized like the first: 45 % of the time it is the first's data
+            # (the same points: a fit to where the mesh already is), 45 % the first's data with
+            # its points moved (fuzz_inputs: the same count and order elsewhere, a real fit),
+            # else any.
             spec = data_spec(rng, values, required, optional, port > 0 and optional)
-            if port > 0 and not optional and first is not None and rng.random() < 0.5:
-                spec = dict(first)
+            roll = rng.random()
+            if port > 0 and not optional and first is not None and spec is not None and roll < 0.9:
+                spec = dict(first, moved=spec["seed"]) if roll < 0.45 else dict(first)
             first = spec if port == 0 else first
             calls.append(("SetInputDataObject", [port, spec]))
     instance = model.cls()
     for row in rows:
         rows[row] = getattr(instance, "GetNumberOf%ss" % row)()
+    for row in sorted(rows):
+        # Most trials start with a few rows (a class without default rows, the fit filter, then
+        # has generators to work on).
+        if rng.random() < 0.75:
+            for _ in range(rng.randint(1, 3)):
+                rows[row] += 1
+                calls.append(("Add%s" % row, values.row(row, model.lists[row])))
     for _ in range(rng.choice([1, 1, 1, 2, 3])):
         for _ in range(rng.randint(0, 8)):
             calls.append(mutation(rng, values, model, rows))

@@ -5,6 +5,7 @@
 #include "vtkPointPairFitFilter.h"
 
 #include "EventCounter.h"
+#include "FitTestSupport.h"
 #include "ProgressLog.h"
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -29,57 +30,6 @@
 
 namespace
 {
-// A latitude-longitude triangulated sphere of `radius(theta, phi)` about the origin: rings of
-// `longitudes` points at `latitudes - 1` latitudes, and the two poles.
-vtkSmartPointer<vtkPolyData> sphere(
-  int longitudes, int latitudes, const std::function<double(double, double)>& radius)
-{
-  const double pi = std::acos(-1.0);
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  const auto add = [&](double theta, double phi) {
-    const double r = radius(theta, phi);
-    return points->InsertNextPoint(r * std::sin(phi) * std::cos(theta),
-      r * std::sin(phi) * std::sin(theta), r * std::cos(phi));
-  };
-  const vtkIdType north = add(0.0, 0.0);
-  for (int j = 1; j < latitudes; ++j)
-  {
-    for (int i = 0; i < longitudes; ++i)
-    {
-      add(2.0 * pi * i / longitudes, pi * j / latitudes);
-    }
-  }
-  const vtkIdType south = add(0.0, pi);
-  vtkNew<vtkCellArray> triangles;
-  const auto ring = [&](int j, int i) { return 1 + (j - 1) * longitudes + (i % longitudes); };
-  for (int i = 0; i < longitudes; ++i)
-  {
-    triangles->InsertNextCell({ north, ring(1, i), ring(1, i + 1) });
-    triangles->InsertNextCell({ south, ring(latitudes - 1, i + 1), ring(latitudes - 1, i) });
-    for (int j = 1; j + 1 < latitudes; ++j)
-    {
-      triangles->InsertNextCell({ ring(j, i), ring(j + 1, i), ring(j + 1, i + 1) });
-      triangles->InsertNextCell({ ring(j, i), ring(j + 1, i + 1), ring(j, i + 1) });
-    }
-  }
-  vtkNew<vtkPolyData> mesh;
-  mesh->SetPoints(points);
-  mesh->SetPolys(triangles);
-  return mesh.GetPointer();
-}
-
-vtkSmartPointer<vtkPolyData> unitSphere(int longitudes = 24, int latitudes = 12)
-{
-  return sphere(longitudes, latitudes, [](double, double) { return 1.0; });
-}
-
-// A generator row: location, direction, weight, kind, pitch.
-struct Row
-{
-  double values[9];
-};
-
 // Four generators of three kinds, 0.4 to 0.5 outside the unit sphere: their deformation moves
 // the sphere's points by up to about 0.4.
 std::vector<Row> knownGenerators()
@@ -90,41 +40,10 @@ std::vector<Row> knownGenerators()
     { { -1.1, 0.9, 0.3, 1.0, 0.0, 0.0, 0.15, 3, 0 } } };
 }
 
-template <class Filter>
-void addRows(Filter* filter, const std::vector<Row>& rows)
-{
-  for (const Row& r : rows)
-  {
-    const double* v = r.values;
-    filter->AddGenerator(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]);
-  }
-}
-
-vtkSmartPointer<vtkPolyData> deformed(vtkPolyData* mesh, const std::vector<Row>& rows)
-{
-  vtkNew<vtkPointPairDeformationFilter> deformation;
-  deformation->SetInputData(mesh);
-  addRows(deformation.GetPointer(), rows);
-  deformation->Update();
-  vtkSmartPointer<vtkPolyData> out = vtkPolyData::SafeDownCast(deformation->GetOutput());
-  return out;
-}
-
 double fieldValue(vtkDataObject* data, const char* name)
 {
   vtkDataArray* array = vtkDataArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(name));
   return array ? array->GetComponent(0, 0) : std::nan("");
-}
-
-double largestResidual(vtkPolyData* output)
-{
-  vtkDataArray* residual = output->GetPointData()->GetArray("FitResidual");
-  double largest = -1.0;
-  for (vtkIdType i = 0; residual && i < residual->GetNumberOfTuples(); ++i)
-  {
-    largest = std::max(largest, residual->GetComponent(i, 0));
-  }
-  return largest;
 }
 
 TEST(PointPairFitFilter, RecoversKnownWeightsOfASyntheticDeformationOfASphere)
@@ -516,6 +435,24 @@ TEST(PointPairFitFilter, BadInputGivesAClearErrorAndEmptyOutputs)
   withNaN->GetPoints()->SetPoint(3, std::nan(""), 0.0, 0.0);
   vtkNew<vtkPolyData> cloud; // points without cells
   cloud->SetPoints(target->GetPoints());
+  // Coordinates near the largest double: the mesh's points far from the generators map to
+  // themselves, and their differences from the target's square beyond it.
+  const auto scaled = [](vtkPolyData* data, double factor) {
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      data->GetPoint(i, x);
+      points->InsertNextPoint(factor * x[0], factor * x[1], factor * x[2]);
+    }
+    vtkNew<vtkPolyData> copy;
+    copy->ShallowCopy(data);
+    copy->SetPoints(points);
+    return vtkSmartPointer<vtkPolyData>(copy);
+  };
+  vtkSmartPointer<vtkPolyData> huge = scaled(mesh, 1e154), hugeTarget = scaled(mesh, -1e154);
+  vtkSmartPointer<vtkPolyData> farTarget = scaled(target, 1e151);
   struct Case
   {
     const char* what;
@@ -565,6 +502,24 @@ TEST(PointPairFitFilter, BadInputGivesAClearErrorAndEmptyOutputs)
         f->SetFalloff(0.0);
       },
       "infinity" },
+    { "squared residuals overflow",
+      [&](vtkPointPairFitFilter* f) {
+        f->SetInputData(huge);
+        f->SetTargetData(hugeTarget);
+      },
+      "overflow" },
+    { "surface beyond the locator's range",
+      [&](vtkPointPairFitFilter* f) {
+        f->SetTargetData(farTarget);
+        f->SetTargetModeToPointToSurface();
+      },
+      "at most 1e+150" },
+    { "surface mode, images beyond the locator's range",
+      [&](vtkPointPairFitFilter* f) {
+        f->SetInputData(farTarget);
+        f->SetTargetModeToPointToSurface();
+      },
+      "beyond 1e150" },
   };
   for (const Case& c : cases)
   {

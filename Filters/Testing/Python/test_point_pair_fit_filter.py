@@ -109,6 +109,29 @@ class PointPairFitFilterTest(unittest.TestCase):
                                .ToDouble(), TRUTH[0][6], delta=1e-6)
         self.assertLessEqual(chained.GetInitialRMS(), 1e-10)
 
+    def test_kinds_and_pitches_through_the_wrapping(self):
+        # From rotations of zero weight and pitch, FitKinds and FitPitches find TRUTH's point
+        # pair, twist (with its pitch) and translation.
+        source = sphere()
+        target = deformation_of(source, TRUTH)
+        fit = self.fit(source, target, [row[:6] + (0.0, vtkPointPairFitFilter.ROTATION, 0.0)
+                                        for row in TRUTH])
+        fit.FitKindsOn()
+        fit.FitPitchesOn()
+        errors = common.ErrorRecorder(fit)
+        fit.Update()
+        self.assertEqual(errors.messages + errors.warnings, [])
+        table = fit.GetOutputDataObject(2)
+        for i, row in enumerate(TRUTH):
+            self.assertEqual(table.GetValueByName(i, "Kind").ToDouble(), row[7])
+            self.assertAlmostEqual(table.GetValueByName(i, "Weight").ToDouble(), row[6], delta=1e-6)
+            self.assertAlmostEqual(table.GetValueByName(i, "Pitch").ToDouble(), row[8], delta=1e-6)
+        self.assertLessEqual(fit.GetFinalRMS(), 1e-10)
+        self.assertEqual(fit.GetNumberOfUnidentifiedKinds(), 0)
+        identified = fit.GetOutputDataObject(1).GetPointData().GetArray("KindIdentified")
+        self.assertEqual([identified.GetValue(i) for i in range(3)], [1, 1, 1])
+        self.assertIn("(%d fits, 0 kinds unidentified)" % fit.GetNumberOfFits(), str(fit))
+
     def test_point_to_surface_fit_of_the_example(self):
         target = fit_generators.bumped_target()
         fit = fit_generators.fit_filter(target)
