@@ -15,16 +15,9 @@
 // Internal linkage only (see PointMapCore.h).
 #pragma once
 
+#include "ForceInline.h"
 #include "LaneMath.h"
 
-// Every operation is inlined whatever the compiler's size budget: GCC otherwise calls each
-// operator of a lane-vector Dual out of line, passing its lanes through memory (measured: the
-// calls were a third of the derivative's instructions).
-#if defined(__GNUC__) || defined(__clang__)
-#define BOOSTED_DUAL_INLINE inline __attribute__((always_inline))
-#else
-#define BOOSTED_DUAL_INLINE inline
-#endif
 
 namespace cga
 {
@@ -45,12 +38,12 @@ struct Dual
 
 // The lanes of a Dual are its value's (a constant comes back: no tangents).
 template <typename T, int N>
-BOOSTED_DUAL_INLINE void toLanes(const Dual<T, N>& x, double* lanes)
+BOOSTED_FORCE_INLINE void toLanes(const Dual<T, N>& x, double* lanes)
 {
   toLanes(x.v, lanes);
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE void fromLanes(const double* lanes, Dual<T, N>& x)
+BOOSTED_FORCE_INLINE void fromLanes(const double* lanes, Dual<T, N>& x)
 {
   fromLanes(lanes, x.v);
   for (int k = 0; k < N; ++k)
@@ -60,7 +53,7 @@ BOOSTED_DUAL_INLINE void fromLanes(const double* lanes, Dual<T, N>& x)
 }
 
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> operator+(Dual<T, N> a, const Dual<T, N>& b)
+BOOSTED_FORCE_INLINE Dual<T, N> operator+(Dual<T, N> a, const Dual<T, N>& b)
 {
   a.v = a.v + b.v;
   for (int k = 0; k < N; ++k)
@@ -70,7 +63,7 @@ BOOSTED_DUAL_INLINE Dual<T, N> operator+(Dual<T, N> a, const Dual<T, N>& b)
   return a;
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> operator-(Dual<T, N> a, const Dual<T, N>& b)
+BOOSTED_FORCE_INLINE Dual<T, N> operator-(Dual<T, N> a, const Dual<T, N>& b)
 {
   a.v = a.v - b.v;
   for (int k = 0; k < N; ++k)
@@ -80,7 +73,7 @@ BOOSTED_DUAL_INLINE Dual<T, N> operator-(Dual<T, N> a, const Dual<T, N>& b)
   return a;
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> operator-(Dual<T, N> a)
+BOOSTED_FORCE_INLINE Dual<T, N> operator-(Dual<T, N> a)
 {
   a.v = -a.v;
   for (int k = 0; k < N; ++k)
@@ -90,7 +83,7 @@ BOOSTED_DUAL_INLINE Dual<T, N> operator-(Dual<T, N> a)
   return a;
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> operator*(const Dual<T, N>& a, const Dual<T, N>& b)
+BOOSTED_FORCE_INLINE Dual<T, N> operator*(const Dual<T, N>& a, const Dual<T, N>& b)
 {
   Dual<T, N> r;
   r.v = a.v * b.v;
@@ -101,7 +94,7 @@ BOOSTED_DUAL_INLINE Dual<T, N> operator*(const Dual<T, N>& a, const Dual<T, N>& 
   return r;
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> operator/(const Dual<T, N>& a, const Dual<T, N>& b)
+BOOSTED_FORCE_INLINE Dual<T, N> operator/(const Dual<T, N>& a, const Dual<T, N>& b)
 {
   Dual<T, N> r;
   r.v = a.v / b.v;
@@ -114,32 +107,32 @@ BOOSTED_DUAL_INLINE Dual<T, N> operator/(const Dual<T, N>& a, const Dual<T, N>& 
 
 // With a double on either side.
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> operator+(Dual<T, N> a, double b)
+BOOSTED_FORCE_INLINE Dual<T, N> operator+(Dual<T, N> a, double b)
 {
   a.v = a.v + b;
   return a;
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> operator+(double a, Dual<T, N> b)
+BOOSTED_FORCE_INLINE Dual<T, N> operator+(double a, Dual<T, N> b)
 {
   b.v = a + b.v;
   return b;
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> operator-(Dual<T, N> a, double b)
+BOOSTED_FORCE_INLINE Dual<T, N> operator-(Dual<T, N> a, double b)
 {
   a.v = a.v - b;
   return a;
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> operator-(double a, const Dual<T, N>& b)
+BOOSTED_FORCE_INLINE Dual<T, N> operator-(double a, const Dual<T, N>& b)
 {
   Dual<T, N> r = -b;
   r.v = a - b.v;
   return r;
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> operator*(Dual<T, N> a, double b)
+BOOSTED_FORCE_INLINE Dual<T, N> operator*(Dual<T, N> a, double b)
 {
   a.v = a.v * b;
   for (int k = 0; k < N; ++k)
@@ -149,7 +142,7 @@ BOOSTED_DUAL_INLINE Dual<T, N> operator*(Dual<T, N> a, double b)
   return a;
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> operator*(double a, Dual<T, N> b)
+BOOSTED_FORCE_INLINE Dual<T, N> operator*(double a, Dual<T, N> b)
 {
   b.v = a * b.v;
   for (int k = 0; k < N; ++k)
@@ -159,7 +152,7 @@ BOOSTED_DUAL_INLINE Dual<T, N> operator*(double a, Dual<T, N> b)
   return b;
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> operator/(Dual<T, N> a, double b)
+BOOSTED_FORCE_INLINE Dual<T, N> operator/(Dual<T, N> a, double b)
 {
   a.v = a.v / b;
   for (int k = 0; k < N; ++k)
@@ -169,7 +162,7 @@ BOOSTED_DUAL_INLINE Dual<T, N> operator/(Dual<T, N> a, double b)
   return a;
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> operator/(double a, const Dual<T, N>& b)
+BOOSTED_FORCE_INLINE Dual<T, N> operator/(double a, const Dual<T, N>& b)
 {
   Dual<T, N> r;
   r.v = a / b.v;
@@ -182,22 +175,22 @@ BOOSTED_DUAL_INLINE Dual<T, N> operator/(double a, const Dual<T, N>& b)
 
 // Comparisons and masks: the value's.
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Mask<T> lessThan(const Dual<T, N>& a, const Dual<T, N>& b)
+BOOSTED_FORCE_INLINE Mask<T> lessThan(const Dual<T, N>& a, const Dual<T, N>& b)
 {
   return lessThan(a.v, b.v);
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Mask<T> lessEqual(const Dual<T, N>& a, const Dual<T, N>& b)
+BOOSTED_FORCE_INLINE Mask<T> lessEqual(const Dual<T, N>& a, const Dual<T, N>& b)
 {
   return lessEqual(a.v, b.v);
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Mask<T> equalTo(const Dual<T, N>& a, const Dual<T, N>& b)
+BOOSTED_FORCE_INLINE Mask<T> equalTo(const Dual<T, N>& a, const Dual<T, N>& b)
 {
   return equalTo(a.v, b.v);
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> select(const Mask<T>& mask, const Dual<T, N>& a, const Dual<T, N>& b)
+BOOSTED_FORCE_INLINE Dual<T, N> select(const Mask<T>& mask, const Dual<T, N>& a, const Dual<T, N>& b)
 {
   Dual<T, N> r;
   r.v = select(mask, a.v, b.v);
@@ -208,14 +201,14 @@ BOOSTED_DUAL_INLINE Dual<T, N> select(const Mask<T>& mask, const Dual<T, N>& a, 
   return r;
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> magnitude(const Dual<T, N>& x)
+BOOSTED_FORCE_INLINE Dual<T, N> magnitude(const Dual<T, N>& x)
 {
   return select(lessThan(x.v, T{}), -x, x);
 }
 
 /// f(x) with f(x.v) = value and f'(x.v) = slope.
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> chain(const Dual<T, N>& x, const T& value, const T& slope)
+BOOSTED_FORCE_INLINE Dual<T, N> chain(const Dual<T, N>& x, const T& value, const T& slope)
 {
   Dual<T, N> r;
   r.v = value;
@@ -230,7 +223,7 @@ BOOSTED_DUAL_INLINE Dual<T, N> chain(const Dual<T, N>& x, const T& value, const 
 /// takes square roots of the plane squares, which are exactly 0 only where they are 0 in a whole
 /// neighbourhood (a 2-blade's second plane, a nilpotent B's invariants), so their tangents are 0.
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> laneSqrt(const Dual<T, N>& x)
+BOOSTED_FORCE_INLINE Dual<T, N> laneSqrt(const Dual<T, N>& x)
 {
   const T r = laneSqrt(x.v);
   const Mask<T> zero = equalTo(r, T{});
@@ -238,23 +231,23 @@ BOOSTED_DUAL_INLINE Dual<T, N> laneSqrt(const Dual<T, N>& x)
   return chain(x, r, select(zero, T{}, half));
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> laneCosh(const Dual<T, N>& x)
+BOOSTED_FORCE_INLINE Dual<T, N> laneCosh(const Dual<T, N>& x)
 {
   return chain(x, laneCosh(x.v), laneSinh(x.v));
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> laneSinh(const Dual<T, N>& x)
+BOOSTED_FORCE_INLINE Dual<T, N> laneSinh(const Dual<T, N>& x)
 {
   return chain(x, laneSinh(x.v), laneCosh(x.v));
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> laneTanh(const Dual<T, N>& x)
+BOOSTED_FORCE_INLINE Dual<T, N> laneTanh(const Dual<T, N>& x)
 {
   const T t = laneTanh(x.v);
   return chain(x, t, 1.0 - t * t);
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE void laneSinCos(const Dual<T, N>& x, Dual<T, N>& sine, Dual<T, N>& cosine)
+BOOSTED_FORCE_INLINE void laneSinCos(const Dual<T, N>& x, Dual<T, N>& sine, Dual<T, N>& cosine)
 {
   T s, c;
   laneSinCos(x.v, s, c);
@@ -278,12 +271,12 @@ constexpr bool kHasTangents<Dual<T, N>> = true;
 /// q with its value set to 0 where the mask is set: for a value that is rounding noise (its true
 /// value 0) whose tangents are not (an invariant of B that vanishes at this B but not nearby).
 template <typename T>
-BOOSTED_DUAL_INLINE T zeroValue(const Mask<T>& mask, const T& q)
+BOOSTED_FORCE_INLINE T zeroValue(const Mask<T>& mask, const T& q)
 {
   return select(mask, T{}, q);
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> zeroValue(const Mask<T>& mask, Dual<T, N> q)
+BOOSTED_FORCE_INLINE Dual<T, N> zeroValue(const Mask<T>& mask, Dual<T, N> q)
 {
   q.v = zeroValue(mask, q.v);
   return q;
@@ -292,12 +285,12 @@ BOOSTED_DUAL_INLINE Dual<T, N> zeroValue(const Mask<T>& mask, Dual<T, N> q)
 /// The value of `value` where the mask is set (of `tangents` elsewhere), the tangents of
 /// `tangents`: for two formulas of one function where only the second differentiates everywhere.
 template <typename T>
-BOOSTED_DUAL_INLINE T withValueOf(const Mask<T>& mask, const T& value, const T& tangents)
+BOOSTED_FORCE_INLINE T withValueOf(const Mask<T>& mask, const T& value, const T& tangents)
 {
   return select(mask, value, tangents);
 }
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> withValueOf(const Mask<T>& mask, const Dual<T, N>& value, Dual<T, N> tangents)
+BOOSTED_FORCE_INLINE Dual<T, N> withValueOf(const Mask<T>& mask, const Dual<T, N>& value, Dual<T, N> tangents)
 {
   tangents.v = withValueOf(mask, value.v, tangents.v);
   return tangents;
@@ -305,7 +298,7 @@ BOOSTED_DUAL_INLINE Dual<T, N> withValueOf(const Mask<T>& mask, const Dual<T, N>
 
 /// A constant (no tangents).
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> constant(const T& value)
+BOOSTED_FORCE_INLINE Dual<T, N> constant(const T& value)
 {
   Dual<T, N> r;
   r.v = value;
@@ -318,7 +311,7 @@ BOOSTED_DUAL_INLINE Dual<T, N> constant(const T& value)
 
 /// The variable of seed k: value, tangent 1 for seed k, 0 for the others.
 template <typename T, int N>
-BOOSTED_DUAL_INLINE Dual<T, N> variable(const T& value, int k)
+BOOSTED_FORCE_INLINE Dual<T, N> variable(const T& value, int k)
 {
   Dual<T, N> r = constant<T, N>(value);
   r.d[k] = splat<T>(1.0);

@@ -19,6 +19,7 @@
 // linker keeps for the baseline code too, which would then fault on an older CPU.
 #pragma once
 
+#include "ForceInline.h"
 #include "DualNumber.h"
 #include "ExponentialScalars.h"
 #include "LaneMath.h"
@@ -30,13 +31,6 @@
 #include <type_traits>
 #include <utility>
 
-// The small pieces the kernel's hot path calls are inlined whatever the compiler's size budget
-// (a call passes the lane vectors through memory).
-#if defined(__GNUC__) || defined(__clang__)
-#define BOOSTED_CORE_INLINE inline __attribute__((always_inline))
-#else
-#define BOOSTED_CORE_INLINE inline
-#endif
 
 namespace cga
 {
@@ -57,7 +51,7 @@ constexpr int kOdd = 16;
 
 /// <B B>_0: e_ij^2 = -1; (e_i no)(e_i ni) and (e_i ni)(e_i no) have scalar part 1; (no^ni)^2 = 1.
 template <typename T>
-BOOSTED_CORE_INLINE T scalarSquare(const T* b)
+BOOSTED_FORCE_INLINE T scalarSquare(const T* b)
 {
   return -(b[E12] * b[E12] + b[E13] * b[E13] + b[E23] * b[E23]) +
     2.0 * (b[E1NO] * b[E1NI] + b[E2NO] * b[E2NI] + b[E3NO] * b[E3NI]) + b[NONI] * b[NONI];
@@ -70,7 +64,7 @@ using ValueOf = decltype(valueOf(std::declval<const T&>()));
 
 /// A value as a T (for a Dual: a constant).
 template <typename T, typename V>
-BOOSTED_CORE_INLINE T asNumber(const V& v)
+BOOSTED_FORCE_INLINE T asNumber(const V& v)
 {
   if constexpr (std::is_same<T, V>::value)
   {
@@ -87,14 +81,14 @@ BOOSTED_CORE_INLINE T asNumber(const V& v)
 
 /// Per lane, whether x is finite (|x| < inf: NaN is not).
 template <typename V>
-BOOSTED_CORE_INLINE Mask<V> finiteLanes(const V& x)
+BOOSTED_FORCE_INLINE Mask<V> finiteLanes(const V& x)
 {
   return lessThan(magnitude(x), splat<V>(__builtin_inf()));
 }
 
 /// The per-lane flags of a mask as bools.
 template <typename V>
-BOOSTED_CORE_INLINE void toFlags(const Mask<V>& mask, bool* flags)
+BOOSTED_FORCE_INLINE void toFlags(const Mask<V>& mask, bool* flags)
 {
   const LaneArray<V> lanes(select(mask, splat<V>(1.0), V{}));
   for (int l = 0; l < kLanesOf<V>; ++l)
@@ -106,7 +100,7 @@ BOOSTED_CORE_INLINE void toFlags(const Mask<V>& mask, bool* flags)
 /// Largest absolute component, NaN when one is NaN (Coefficients::maxAbs), in vector compares and
 /// blends: the running maximum and a NaN flag apart (a NaN component never wins a comparison).
 template <typename T>
-BOOSTED_CORE_INLINE ValueOf<T> maxAbs(const T* b)
+BOOSTED_FORCE_INLINE ValueOf<T> maxAbs(const T* b)
 {
   using V = ValueOf<T>;
   V m = V{};
@@ -123,7 +117,7 @@ BOOSTED_CORE_INLINE ValueOf<T> maxAbs(const T* b)
 /// b = -strength B(p), B(p) = sum_i w_i G_i / (k |p - x_i|^2 + eps) (PointPairField::generatorAt
 /// without the factor).
 template <typename T>
-BOOSTED_CORE_INLINE void fieldBivector(const kernel::FieldArgs& args, const T* p, double scale, T* b)
+BOOSTED_FORCE_INLINE void fieldBivector(const kernel::FieldArgs& args, const T* p, double scale, T* b)
 {
   T sum[kBivector];
   for (int c = 0; c < kBivector; ++c)
@@ -165,7 +159,7 @@ struct Scale
 /// (DualNumber.h) keeps the tangents of the value it selects. Where B = 0 the computed value is
 /// the identity's, with B's tangents: the closed forms and series run there with m = 1 (u = B).
 template <typename T>
-BOOSTED_CORE_INLINE T nanWhereNotFinite(const Scale<T>& scale, const T& value)
+BOOSTED_FORCE_INLINE T nanWhereNotFinite(const Scale<T>& scale, const T& value)
 {
   return select(scale.finite, value, splat<T>(__builtin_nan("")));
 }
@@ -174,7 +168,7 @@ BOOSTED_CORE_INLINE T nanWhereNotFinite(const Scale<T>& scale, const T& value)
 /// of two, so that u is B exactly (1/m is exact: one division, not one per component), its
 /// components below 2 in size.
 template <typename T>
-BOOSTED_CORE_INLINE void unitScaled(const T* b, Scale<T>& scale, T* u)
+BOOSTED_FORCE_INLINE void unitScaled(const T* b, Scale<T>& scale, T* u)
 {
   using V = ValueOf<T>;
   const V largest = maxAbs(b);
@@ -193,7 +187,7 @@ BOOSTED_CORE_INLINE void unitScaled(const T* b, Scale<T>& scale, T* u)
 /// is a 2-blade (B^2 = m^2 s), the Paper rule otherwise; on return u holds B' = sHat u. NaN where
 /// B is not finite, c = 1 and B' = 0 where B = 0.
 template <typename T>
-BOOSTED_CORE_INLINE void bladeExponential(const Scale<T>& scale, const T& s, bool divideByCosh, T* u, T& c)
+BOOSTED_FORCE_INLINE void bladeExponential(const Scale<T>& scale, const T& s, bool divideByCosh, T* u, T& c)
 {
   const detail::PlaneFunctions<T> f =
     detail::planeFunctions(asNumber<T>(scale.usableOrOne()), s, divideByCosh);
@@ -223,7 +217,7 @@ constexpr double kInvariantNoise = 32.0 * 0x1p-52;
 /// q where |q| exceeds kInvariantNoise times `terms` (the sum of its terms' magnitudes), else 0
 /// (its value: a Dual keeps its tangents, which need not vanish where the invariant does).
 template <typename T>
-BOOSTED_CORE_INLINE T dropRounding(const T& q, const T& terms)
+BOOSTED_FORCE_INLINE T dropRounding(const T& q, const T& terms)
 {
   return zeroValue(lessEqual(magnitude(q), kInvariantNoise * terms), q);
 }
@@ -232,7 +226,7 @@ BOOSTED_CORE_INLINE T dropRounding(const T& q, const T& terms)
 /// rounding of its terms. For a nilpotent B (a lone point pair) they are all rounding: dropping
 /// them keeps exp(B) = 1 + B, instead of a closed form in the square roots of noise times m^2.
 template <typename T>
-BOOSTED_CORE_INLINE void unitInvariants(const T* u, T* w, T& w2, T& s, bool dropNoise)
+BOOSTED_FORCE_INLINE void unitInvariants(const T* u, T* w, T& w2, T& s, bool dropNoise)
 {
   if (!dropNoise)
   {
@@ -273,7 +267,7 @@ struct UnitBivector
 /// dropNoise: unitInvariants drops the invariants that are rounding (needed where B may be
 /// nilpotent; the map's field frame, taken only where B is far from nilpotent, skips it).
 template <typename T>
-BOOSTED_CORE_INLINE void unitBivector(const T* b, UnitBivector<T>& v, bool dropNoise = true)
+BOOSTED_FORCE_INLINE void unitBivector(const T* b, UnitBivector<T>& v, bool dropNoise = true)
 {
   unitScaled(b, v.scale, v.u);
   unitInvariants(v.u, v.w, v.w2, v.s, dropNoise);
@@ -381,7 +375,7 @@ void exactExponential(const T* b, bool divideByCosh, T* k, bool dropNoise = true
 
 /// up(p) = no + p + |p|^2/2 ni (ConformalVector::point).
 template <typename T>
-BOOSTED_CORE_INLINE void upPoint(const T* p, T* x)
+BOOSTED_FORCE_INLINE void upPoint(const T* p, T* x)
 {
   x[NO] = T{} + 1.0;
   x[E1] = p[0];
@@ -394,7 +388,7 @@ BOOSTED_CORE_INLINE void upPoint(const T* p, T* x)
 /// B = E + A_i e_i^no + C_i e_i^ni + d no^ni (no.ni = -1),
 /// y = (u.A + d a) no + (u _| E + b A + a C) + (u.C - d b) ni.
 template <typename T>
-BOOSTED_CORE_INLINE void contract(const T* v, const T* b, T* y)
+BOOSTED_FORCE_INLINE void contract(const T* v, const T* b, T* y)
 {
   const T a = v[NO], u1 = v[E1], u2 = v[E2], u3 = v[E3], bb = v[NI];
   const T d = b[NONI];
@@ -409,7 +403,7 @@ BOOSTED_CORE_INLINE void contract(const T* v, const T* b, T* y)
 /// <B X B>_1 = <B B>_0 X - 2 y _| B and B X - X B = -2 y, so
 /// <K X ~K>_1 = (c^2 - <B B>_0) X - 2 c y + 2 y _| B.
 template <typename T>
-BOOSTED_CORE_INLINE void sandwichScalarBivector(const T& c, const T* b, const T* x, T* r)
+BOOSTED_FORCE_INLINE void sandwichScalarBivector(const T& c, const T* b, const T* x, T* r)
 {
   T y[kVector], z[kVector];
   contract(x, b, y);
@@ -454,7 +448,7 @@ void sandwichOrigin(const T* k, T* r)
 /// fn(r): the Euclidean point r_e / r_no, and per lane whether it is mapped (normalizePoint: the
 /// weight is non-zero, the point and p are finite).
 template <typename T>
-BOOSTED_CORE_INLINE Mask<T> normalizeLanes(const T* p, const T* r, T* image)
+BOOSTED_FORCE_INLINE Mask<T> normalizeLanes(const T* p, const T* r, T* image)
 {
   using V = ValueOf<T>;
   const T alpha = r[NO];
@@ -473,7 +467,7 @@ BOOSTED_CORE_INLINE Mask<T> normalizeLanes(const T* p, const T* r, T* image)
 
 /// normalizeLanes with the flags as bools.
 template <typename T>
-BOOSTED_CORE_INLINE void normalize(const T* p, const T* r, T* image, bool* mapped)
+BOOSTED_FORCE_INLINE void normalize(const T* p, const T* r, T* image, bool* mapped)
 {
   toFlags<ValueOf<T>>(normalizeLanes(p, r, image), mapped);
 }
@@ -483,7 +477,7 @@ BOOSTED_CORE_INLINE void normalize(const T* p, const T* r, T* image, bool* mappe
 /// E'_ij = E_ij + A_i t_j - A_j t_i, A' = A, C'_k = C_k + E_kj t_j + (|t|^2/2) A_k - (A.t) t_k + d t_k,
 /// d' = d - A.t.
 template <typename T>
-BOOSTED_CORE_INLINE void translateBivector(const T* b, const T* t, T* out)
+BOOSTED_FORCE_INLINE void translateBivector(const T* b, const T* t, T* out)
 {
   const T a1 = b[E1NO], a2 = b[E2NO], a3 = b[E3NO], d = b[NONI];
   const T e12 = b[E12], e13 = b[E13], e23 = b[E23];
@@ -514,7 +508,7 @@ BOOSTED_CORE_INLINE void translateBivector(const T* b, const T* t, T* out)
 /// size. Returns 2^-k per lane: exp of the balanced B maps 2^k x to 2^k x', so x' = 2^-k times
 /// its image. Where one of the two parts is zero or B is not finite, k = 0.
 template <typename T>
-BOOSTED_CORE_INLINE ValueOf<T> balanceByDilation(T* b)
+BOOSTED_FORCE_INLINE ValueOf<T> balanceByDilation(T* b)
 {
   using V = ValueOf<T>;
   const auto largest = [](const V& x, const V& y, const V& z) {

@@ -10,6 +10,7 @@
 #error "define BOOSTED_KERNEL_ISA before including PointPairKernelLanes.h"
 #endif
 
+#include "ForceInline.h"
 #include "LaneMath.h"
 #include "PointPairKernel.h"
 
@@ -35,9 +36,6 @@ constexpr int kParts = L * static_cast<int>(sizeof(double)) / BOOSTED_KERNEL_VEC
 static_assert(kParts >= 1 && kParts * BOOSTED_KERNEL_VECTOR_BYTES == L * sizeof(double),
               "lanes must fill whole registers");
 
-// The lane operations are always inlined: GCC's size budget left some of them out of line in the
-// long functions of PointMapCore.h, and an out-of-line call passes its lane vectors through memory.
-#define BOOSTED_LANE_INLINE inline __attribute__((always_inline))
 
 typedef long long NativeMask __attribute__((vector_size(BOOSTED_KERNEL_VECTOR_BYTES)));
 
@@ -55,7 +53,7 @@ struct LaneVector
 };
 
 #define BOOSTED_LANE_OPERATOR(op)                                                                \
-  BOOSTED_LANE_INLINE LaneVector operator op(LaneVector a, const LaneVector& b)                  \
+  BOOSTED_FORCE_INLINE LaneVector operator op(LaneVector a, const LaneVector& b)                  \
   {                                                                                              \
     for (int i = 0; i < kParts; ++i)                                                             \
     {                                                                                            \
@@ -63,7 +61,7 @@ struct LaneVector
     }                                                                                            \
     return a;                                                                                    \
   }                                                                                              \
-  BOOSTED_LANE_INLINE LaneVector operator op(LaneVector a, double b)                             \
+  BOOSTED_FORCE_INLINE LaneVector operator op(LaneVector a, double b)                             \
   {                                                                                              \
     for (int i = 0; i < kParts; ++i)                                                             \
     {                                                                                            \
@@ -71,7 +69,7 @@ struct LaneVector
     }                                                                                            \
     return a;                                                                                    \
   }                                                                                              \
-  BOOSTED_LANE_INLINE LaneVector operator op(double a, LaneVector b)                             \
+  BOOSTED_FORCE_INLINE LaneVector operator op(double a, LaneVector b)                             \
   {                                                                                              \
     for (int i = 0; i < kParts; ++i)                                                             \
     {                                                                                            \
@@ -85,7 +83,7 @@ BOOSTED_LANE_OPERATOR(*)
 BOOSTED_LANE_OPERATOR(/)
 #undef BOOSTED_LANE_OPERATOR
 
-BOOSTED_LANE_INLINE LaneVector operator-(LaneVector a)
+BOOSTED_FORCE_INLINE LaneVector operator-(LaneVector a)
 {
   for (int i = 0; i < kParts; ++i)
   {
@@ -96,7 +94,7 @@ BOOSTED_LANE_INLINE LaneVector operator-(LaneVector a)
 
 // The comparisons, mask logic and selection of LaneMath.h, lane by lane in vector instructions.
 #define BOOSTED_LANE_COMPARISON(name, op)                                                        \
-  BOOSTED_LANE_INLINE LaneMask name(const LaneVector& a, const LaneVector& b)                    \
+  BOOSTED_FORCE_INLINE LaneMask name(const LaneVector& a, const LaneVector& b)                    \
   {                                                                                              \
     LaneMask m;                                                                                  \
     for (int i = 0; i < kParts; ++i)                                                             \
@@ -110,7 +108,7 @@ BOOSTED_LANE_COMPARISON(lessEqual, <=)
 BOOSTED_LANE_COMPARISON(equalTo, ==)
 #undef BOOSTED_LANE_COMPARISON
 
-BOOSTED_LANE_INLINE LaneMask maskAnd(LaneMask a, const LaneMask& b)
+BOOSTED_FORCE_INLINE LaneMask maskAnd(LaneMask a, const LaneMask& b)
 {
   for (int i = 0; i < kParts; ++i)
   {
@@ -119,7 +117,7 @@ BOOSTED_LANE_INLINE LaneMask maskAnd(LaneMask a, const LaneMask& b)
   return a;
 }
 
-BOOSTED_LANE_INLINE LaneMask maskOr(LaneMask a, const LaneMask& b)
+BOOSTED_FORCE_INLINE LaneMask maskOr(LaneMask a, const LaneMask& b)
 {
   for (int i = 0; i < kParts; ++i)
   {
@@ -128,7 +126,7 @@ BOOSTED_LANE_INLINE LaneMask maskOr(LaneMask a, const LaneMask& b)
   return a;
 }
 
-BOOSTED_LANE_INLINE LaneMask maskNot(LaneMask a)
+BOOSTED_FORCE_INLINE LaneMask maskNot(LaneMask a)
 {
   for (int i = 0; i < kParts; ++i)
   {
@@ -137,7 +135,7 @@ BOOSTED_LANE_INLINE LaneMask maskNot(LaneMask a)
   return a;
 }
 
-BOOSTED_LANE_INLINE bool anyLane(const LaneMask& m)
+BOOSTED_FORCE_INLINE bool anyLane(const LaneMask& m)
 {
   NativeMask acc = m.part[0];
   for (int i = 1; i < kParts; ++i)
@@ -152,12 +150,12 @@ BOOSTED_LANE_INLINE bool anyLane(const LaneMask& m)
   return lanes != 0;
 }
 
-BOOSTED_LANE_INLINE bool allLanes(const LaneMask& m)
+BOOSTED_FORCE_INLINE bool allLanes(const LaneMask& m)
 {
   return !anyLane(maskNot(m));
 }
 
-BOOSTED_LANE_INLINE LaneVector select(const LaneMask& m, const LaneVector& a, const LaneVector& b)
+BOOSTED_FORCE_INLINE LaneVector select(const LaneMask& m, const LaneVector& a, const LaneVector& b)
 {
   LaneVector r;
   for (int i = 0; i < kParts; ++i)
@@ -167,7 +165,7 @@ BOOSTED_LANE_INLINE LaneVector select(const LaneMask& m, const LaneVector& a, co
   return r;
 }
 
-BOOSTED_LANE_INLINE LaneVector magnitude(LaneVector x)
+BOOSTED_FORCE_INLINE LaneVector magnitude(LaneVector x)
 {
   const NativeMask noSign = NativeMask{} + 0x7fffffffffffffffLL;
   for (int i = 0; i < kParts; ++i)
@@ -177,13 +175,13 @@ BOOSTED_LANE_INLINE LaneVector magnitude(LaneVector x)
   return x;
 }
 
-BOOSTED_LANE_INLINE LaneVector valueOf(const LaneVector& x)
+BOOSTED_FORCE_INLINE LaneVector valueOf(const LaneVector& x)
 {
   return x;
 }
 
 // LaneMath.h's binaryFloor on every lane.
-BOOSTED_LANE_INLINE LaneVector binaryFloor(LaneVector x)
+BOOSTED_FORCE_INLINE LaneVector binaryFloor(LaneVector x)
 {
   const NativeMask exponent = NativeMask{} + 0x7ff0000000000000LL;
   const NativeMask smallest = NativeMask{} + 0x0010000000000000LL;
@@ -200,7 +198,7 @@ BOOSTED_LANE_INLINE LaneVector binaryFloor(LaneVector x)
 // (Shifts on unsigned lanes: no sign bit to shift into.)
 typedef unsigned long long NativeBits __attribute__((vector_size(BOOSTED_KERNEL_VECTOR_BYTES)));
 
-BOOSTED_LANE_INLINE LaneVector binaryExponentOf(LaneVector x)
+BOOSTED_FORCE_INLINE LaneVector binaryExponentOf(LaneVector x)
 {
   const NativeBits field = NativeBits{} + 0x7ffULL;
   const NativeBits twoTo52 = NativeBits{} + 0x4330000000000000ULL;
@@ -212,7 +210,7 @@ BOOSTED_LANE_INLINE LaneVector binaryExponentOf(LaneVector x)
   return x;
 }
 
-BOOSTED_LANE_INLINE LaneVector powerOfTwoOf(LaneVector k)
+BOOSTED_FORCE_INLINE LaneVector powerOfTwoOf(LaneVector k)
 {
   for (int i = 0; i < kParts; ++i)
   {
@@ -223,12 +221,12 @@ BOOSTED_LANE_INLINE LaneVector powerOfTwoOf(LaneVector k)
 }
 
 // The lane access PointMapCore.h finds by argument-dependent lookup.
-BOOSTED_LANE_INLINE void toLanes(const LaneVector& v, double* lanes)
+BOOSTED_FORCE_INLINE void toLanes(const LaneVector& v, double* lanes)
 {
   __builtin_memcpy(lanes, &v, sizeof v);
 }
 
-BOOSTED_LANE_INLINE void fromLanes(const double* lanes, LaneVector& v)
+BOOSTED_FORCE_INLINE void fromLanes(const double* lanes, LaneVector& v)
 {
   __builtin_memcpy(&v, lanes, sizeof v);
 }
@@ -239,7 +237,7 @@ BOOSTED_LANE_INLINE void fromLanes(const double* lanes, LaneVector& v)
 // Sleef_cinz_*d1_u10purec that map() calls; otherwise the scalar function per lane.
 #if defined(BOOSTED_HAVE_SLEEF) && defined(BOOSTED_KERNEL_SLEEF)
 #define BOOSTED_LANE_FUNCTION(name, sleefName)                                                   \
-  BOOSTED_LANE_INLINE LaneVector name(LaneVector x)                                              \
+  BOOSTED_FORCE_INLINE LaneVector name(LaneVector x)                                              \
   {                                                                                              \
     for (int i = 0; i < kParts; ++i)                                                             \
     {                                                                                            \
@@ -252,7 +250,7 @@ BOOSTED_LANE_FUNCTION(laneSinh, sinh)
 BOOSTED_LANE_FUNCTION(laneTanh, tanh)
 #undef BOOSTED_LANE_FUNCTION
 
-BOOSTED_LANE_INLINE void laneSinCos(const LaneVector& x, LaneVector& sine, LaneVector& cosine)
+BOOSTED_FORCE_INLINE void laneSinCos(const LaneVector& x, LaneVector& sine, LaneVector& cosine)
 {
   for (int i = 0; i < kParts; ++i)
   {
@@ -263,7 +261,7 @@ BOOSTED_LANE_INLINE void laneSinCos(const LaneVector& x, LaneVector& sine, LaneV
 }
 #else
 #define BOOSTED_LANE_FUNCTION(name)                                                              \
-  BOOSTED_LANE_INLINE LaneVector name(const LaneVector& x)                                       \
+  BOOSTED_FORCE_INLINE LaneVector name(const LaneVector& x)                                       \
   {                                                                                              \
     alignas(64) double lanes[L];                                                                 \
     toLanes(x, lanes);                                                                           \
@@ -280,7 +278,7 @@ BOOSTED_LANE_FUNCTION(laneSinh)
 BOOSTED_LANE_FUNCTION(laneTanh)
 #undef BOOSTED_LANE_FUNCTION
 
-BOOSTED_LANE_INLINE void laneSinCos(const LaneVector& x, LaneVector& sine, LaneVector& cosine)
+BOOSTED_FORCE_INLINE void laneSinCos(const LaneVector& x, LaneVector& sine, LaneVector& cosine)
 {
   alignas(64) double lanes[L], s[L], c[L];
   toLanes(x, lanes);
@@ -295,7 +293,7 @@ BOOSTED_LANE_INLINE void laneSinCos(const LaneVector& x, LaneVector& sine, LaneV
 
 // Correctly rounded, as the scalar sqrt: the instruction set's own (BOOSTED_KERNEL_SQRT) where the
 // including file names it.
-BOOSTED_LANE_INLINE LaneVector laneSqrt(LaneVector x)
+BOOSTED_FORCE_INLINE LaneVector laneSqrt(LaneVector x)
 {
 #ifdef BOOSTED_KERNEL_SQRT
   for (int i = 0; i < kParts; ++i)

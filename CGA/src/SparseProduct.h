@@ -10,6 +10,7 @@
 // Internal linkage only for what the block kernel instantiates (see ProductTerms.h).
 #pragma once
 
+#include "ForceInline.h"
 #include "cga/NullBasis.h"
 
 #include "NullBladeProduct.h"
@@ -96,15 +97,10 @@ private:
 
 namespace
 {
-#if defined(__GNUC__) || defined(__clang__)
-#define BOOSTED_PRODUCT_INLINE inline __attribute__((always_inline))
-#else
-#define BOOSTED_PRODUCT_INLINE inline
-#endif
 
 /// sum[r] += c a[i] b[j] for term I of P, its slots and coefficient constants.
 template <const SparseProduct& P, int I, bool Magnitudes, typename T>
-BOOSTED_PRODUCT_INLINE void addTerm(const T* a, const T* b, T* sum)
+BOOSTED_FORCE_INLINE void addTerm(const T* a, const T* b, T* sum)
 {
   constexpr ProductTerm t = P.term(I);
   constexpr double c = Magnitudes && t.coefficient < 0.0 ? -t.coefficient : t.coefficient;
@@ -112,7 +108,7 @@ BOOSTED_PRODUCT_INLINE void addTerm(const T* a, const T* b, T* sum)
 }
 
 template <const SparseProduct& P, bool Magnitudes, typename T, int... I>
-BOOSTED_PRODUCT_INLINE void applyUnrolled(const T* a, const T* b, T* r,
+BOOSTED_FORCE_INLINE void applyUnrolled(const T* a, const T* b, T* r,
                                           std::integer_sequence<int, I...>)
 {
   constexpr int kResults = P.results();
@@ -132,14 +128,14 @@ BOOSTED_PRODUCT_INLINE void applyUnrolled(const T* a, const T* b, T* r,
 /// zero of its terms in the table's order, so the same bits), unrolled, with the coefficients and
 /// slots constants the compiler folds (all are +-1 here: a sign, not a multiplication).
 template <const SparseProduct& P, typename T>
-BOOSTED_PRODUCT_INLINE void applyProduct(const T* a, const T* b, T* r)
+BOOSTED_FORCE_INLINE void applyProduct(const T* a, const T* b, T* r)
 {
   applyUnrolled<P, false>(a, b, r, std::make_integer_sequence<int, P.size()>{});
 }
 
 /// applyTermMagnitudes of a product built at compile time (a and b hold magnitudes).
 template <const SparseProduct& P, typename T>
-BOOSTED_PRODUCT_INLINE void applyProductMagnitudes(const T* a, const T* b, T* r)
+BOOSTED_FORCE_INLINE void applyProductMagnitudes(const T* a, const T* b, T* r)
 {
   applyUnrolled<P, true>(a, b, r, std::make_integer_sequence<int, P.size()>{});
 }
