@@ -11,14 +11,17 @@
 bool vtkBoostedBlockLoop::For(vtkAlgorithm* algorithm, vtkIdType begin, vtkIdType end,
   vtkIdType samplesPerItem, const std::function<void(vtkIdType, vtkIdType)>& work)
 {
-  const vtkIdType itemsPerBlock = std::max<vtkIdType>(1, SamplesPerBlock / std::max<vtkIdType>(1, samplesPerItem));
-  for (vtkIdType first = begin; first < end; first += itemsPerBlock)
+  vtkIdType samplesPerBlock = SamplesPerBlock;
+  for (vtkIdType first = begin, last = begin; first < end; first = last)
   {
     if (vtkBoostedSurfacesCheckAbort(algorithm))
     {
       return false;
     }
-    const vtkIdType last = std::min(end, first + itemsPerBlock);
+    const vtkIdType itemsPerBlock =
+      std::max<vtkIdType>(1, samplesPerBlock / std::max<vtkIdType>(1, samplesPerItem));
+    last = std::min(end, first + itemsPerBlock);
+    samplesPerBlock = std::min(2 * samplesPerBlock, MaximumSamplesPerBlock);
     std::atomic<bool> outOfMemory{ false };
     vtkSMPTools::For(first, last, [&work, &outOfMemory](vtkIdType a, vtkIdType b) {
       try

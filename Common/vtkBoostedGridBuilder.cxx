@@ -155,14 +155,26 @@ vtkBoostedGridBuilder::vtkBoostedGridBuilder(int rows, int columns, bool periodi
   : Rows(rows)
   , Columns(columns)
   , PeriodicColumns(periodicColumns)
-  , Points(new double[3 * static_cast<size_t>(rows) * columns])
+  , Points(new double[3 * static_cast<size_t>(rows) * columns]) // cleared by ClearSamples
   , FallbackNormals(3 * static_cast<size_t>(rows), 0.0)
 {
-  // Filled on the threads (with its first touch of the pages): an unset sample is NaN.
+}
+
+void vtkBoostedGridBuilder::ClearSamples(int row, int firstColumn, int lastColumn)
+{
+  const size_t first = static_cast<size_t>(this->Index(row, firstColumn));
+  const size_t last = static_cast<size_t>(this->Index(row, lastColumn));
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  double* points = this->Points.get();
-  vtkSMPTools::For(vtkIdType(0), 3 * static_cast<vtkIdType>(rows) * columns,
-    [points, nan](vtkIdType first, vtkIdType last) { std::fill(points + first, points + last, nan); });
+  std::fill(this->Points.get() + 3 * first, this->Points.get() + 3 * last, nan);
+  if (this->SampleNormals)
+  {
+    std::fill(this->SampleNormals.get() + 3 * first, this->SampleNormals.get() + 3 * last, nan);
+  }
+  for (SampleArray& values : this->SampleArrays)
+  {
+    const size_t components = static_cast<size_t>(values.Components);
+    std::fill(values.Values.get() + components * first, values.Values.get() + components * last, 0.0);
+  }
 }
 
 void vtkBoostedGridBuilder::SetOrigin(const double origin[3])
@@ -183,18 +195,16 @@ void vtkBoostedGridBuilder::SetRowFallbackNormal(int row, const double normal[3]
 
 void vtkBoostedGridBuilder::EnableSampleNormals()
 {
-  const size_t count = 3 * static_cast<size_t>(this->Rows) * this->Columns;
-  this->SampleNormals.reset(new double[count]);
-  double* normals = this->SampleNormals.get();
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  vtkSMPTools::For(vtkIdType(0), static_cast<vtkIdType>(count),
-    [normals, nan](vtkIdType first, vtkIdType last) { std::fill(normals + first, normals + last, nan); });
+  // Cleared by ClearSamples.
+  this->SampleNormals.reset(new double[3 * static_cast<size_t>(this->Rows) * this->Columns]);
 }
 
 int vtkBoostedGridBuilder::AddSampleArray(const std::string& name, int components)
 {
+  // Cleared by ClearSamples.
   this->SampleArrays.push_back({ name, components,
-    std::vector<double>(static_cast<size_t>(components) * this->Rows * this->Columns, 0.0) });
+    std::unique_ptr<double[]>(
+      new double[static_cast<size_t>(components) * this->Rows * this->Columns]) });
   return static_cast<int>(this->SampleArrays.size()) - 1;
 }
 
@@ -208,12 +218,6 @@ void vtkBoostedGridBuilder::AddColumnParameter(
   const std::string& name, const std::vector<double>& valuePerColumn)
 {
   this->Parameters.push_back({ name, false, valuePerColumn });
-}
-
-void vtkBoostedGridBuilder::AddPointParameter(
-  const std::string& name, const std::vector<double>& valuePerPoint)
-{
-  this->Parameters.push_back({ name, false, valuePerPoint, true });
 }
 
 void vtkBoostedGridBuilder::ComputeNormal(int row, int column, double normal[3]) const
@@ -293,10 +297,11 @@ void vtkBoostedGridBuilder::ComputeNormal(int row, int column, double normal[3])
   }
 }
 
-std::vector<long long> vtkBoostedGridBuilder::WritePoints(
+std::unique_ptr<long long[]> vtkBoostedGridBuilder::WritePoints(
   vtkPolyData* output, int firstRow, int lastRow, int precision, bool withSurfaceAttributes) const
 {
-  std::vector<long long> ids(static_cast<size_t>(this->Rows) * this->Columns, -1);
+  // -1 (no point) for the samples of every segment, set by the counting pass below.
+  std::unique_ptr<long long[]> ids(new long long[static_cast<size_t>(this->Rows) * this->Columns]);
   // Curves never repeat the seam (see below), so only surfaces merge.
   const bool merge = this->MergeSeam && withSurfaceAttributes;
   const bool withTCoords = withSurfaceAttributes && !merge;
@@ -351,8 +356,11 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
   };
   std::vector<vtkIdType> counts(segments.size(), 0);
   forEach(segments.size(), [&](size_t i) {
+    const Segment& s = segments[i];
+    std::fill(ids.get() + this->Index(s.Row, s.FirstColumn),
+      ids.get() + this->Index(s.Row, s.LastColumn), -1);
     vtkIdType count = 0;
-    walk(segments[i], [&](int) { return count++; }, [](int, long long) {});
+    walk(s, [&](int) { return count++; }, [](int, long long) {});
     counts[i] = count;
   });
   const std::vector<vtkIdType> offsets = PrefixSums(counts);
@@ -439,9 +447,7 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
         for (size_t k = 0; k < parameters.size(); ++k)
         {
           const Parameter& parameter = this->Parameters[k];
-          parameters[k]->SetValue(id,
-            parameter.PerPoint ? parameter.Values[this->Index(r, c)]
-                               : parameter.Values[parameter.PerRow ? r : c]);
+          parameters[k]->SetValue(id, parameter.Values[parameter.PerRow ? r : c]);
         }
         for (size_t k = 0; k < integerParameters.size(); ++k)
         {
@@ -497,7 +503,7 @@ std::vector<long long> vtkBoostedGridBuilder::WritePoints(
 void vtkBoostedGridBuilder::BuildSurface(
   vtkPolyData* output, int firstRow, int lastRow, int outputPointsPrecision) const
 {
-  const std::vector<long long> ids =
+  const std::unique_ptr<long long[]> ids =
     this->WritePoints(output, firstRow, lastRow, outputPointsPrecision, true);
   // The cell of the quad between rows r, r + 1 and columns c, c + 1: its size (0: no cell).
   auto quadCell = [&](int r, int c, vtkIdType cell[4]) -> vtkIdType {
@@ -654,7 +660,7 @@ void vtkBoostedGridBuilder::FindMergedRows(
 void vtkBoostedGridBuilder::BuildCurves(
   vtkPolyData* output, int firstRow, int lastRow, int outputPointsPrecision) const
 {
-  const std::vector<long long> ids =
+  const std::unique_ptr<long long[]> ids =
     this->WritePoints(output, firstRow, lastRow, outputPointsPrecision, false);
   // With periodic columns the last column repeats the first: each row is a closed polyline of
   // grid indices.

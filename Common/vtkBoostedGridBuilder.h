@@ -26,6 +26,12 @@
  * Building runs on vtkSMPTools' threads: runs of one row's columns each write their own range of
  * the points, arrays and cells, numbered from per-run counts, so the output is the same, bit for
  * bit, whatever the backend and the number of threads.
+ *
+ * A sample's point, normal and values are undefined until ClearSamples makes it unset (NaN point
+ * and normal, zero values): vtkBoostedGridDriver clears each sample on the thread that computes
+ * it, right before, so that no pass over the whole grid runs before the sampling and the grid's
+ * memory is first touched by the threads that use it. Building reads only cleared samples: the
+ * rows it builds, and their neighbours for the normals.
  */
 #ifndef vtkBoostedGridBuilder_h
 #define vtkBoostedGridBuilder_h
@@ -45,6 +51,9 @@ class BOOSTEDSURFACESCOMMON_EXPORT vtkBoostedGridBuilder
 public:
   /// `periodicColumns`: the last column repeats the first (a closed curve with a texture seam).
   vtkBoostedGridBuilder(int rows, int columns, bool periodicColumns);
+
+  /// Makes the samples (row, [firstColumn, lastColumn)) unset (see the class description).
+  void ClearSamples(int row, int firstColumn, int lastColumn);
 
   /// The points SetPoint takes are relative to `origin` (default 0); the output holds origin +
   /// point. A source far from the origin samples relative to its construction's center, so that
@@ -74,7 +83,8 @@ public:
 
   /// A named double point array of `components` values per grid sample, filled by the sampling
   /// through SampleValues (zeros where not written) and written with the points of a surface or
-  /// of curves; returns its index. Call before sampling.
+  /// of curves; returns its index. Call before sampling. The values of one row's samples are
+  /// consecutive: SampleValues(array, row, c + 1) = SampleValues(array, row, c) + components.
   int AddSampleArray(const std::string& name, int components);
   double* SampleValues(int array, int row, int column)
   {
@@ -84,8 +94,6 @@ public:
   /// A named per-point parameter, given per row and per column (value = row value or column value).
   void AddRowParameter(const std::string& name, const std::vector<double>& valuePerRow);
   void AddColumnParameter(const std::string& name, const std::vector<double>& valuePerColumn);
-  /// A named per-point parameter with one value per grid sample (row-major, rows x columns).
-  void AddPointParameter(const std::string& name, const std::vector<double>& valuePerPoint);
 
   /// Quads between point rows [firstRow, lastRow] (inclusive), with normals and texture coordinates.
   void BuildSurface(vtkPolyData* output, int firstRow, int lastRow, int outputPointsPrecision) const;
@@ -119,14 +127,13 @@ private:
     std::string Name;
     bool PerRow;
     std::vector<double> Values;
-    bool PerPoint = false; // Values holds rows x columns values
   };
 
   struct SampleArray
   {
     std::string Name;
     int Components;
-    std::vector<double> Values; // Components x rows x columns
+    std::unique_ptr<double[]> Values; // Components x rows x columns
   };
 
   int Index(int row, int column) const { return row * this->Columns + column; }
@@ -137,8 +144,9 @@ private:
     return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
   }
   void ComputeNormal(int row, int column, double normal[3]) const;
-  /// Writes the usable points of rows [firstRow, lastRow] and returns the map grid index -> point id.
-  std::vector<long long> WritePoints(
+  /// Writes the usable points of rows [firstRow, lastRow] and returns the map grid index -> point
+  /// id (-1: no point), defined for those rows' samples.
+  std::unique_ptr<long long[]> WritePoints(
     vtkPolyData* output, int firstRow, int lastRow, int precision, bool withSurfaceAttributes) const;
 
   /// With MergeSeam: for each row of [firstRow, lastRow], the row whose points it reuses (itself

@@ -101,12 +101,17 @@ bool vtkBoostedGridDriver::Prepare(const std::string& sourceProblem, long long r
   return true;
 }
 
+// Each variant clears its samples (vtkBoostedGridBuilder::ClearSamples) on the thread that
+// computes them, right before the source's sample function.
 bool vtkBoostedGridDriver::SampleRows(const std::function<void(int)>& sample)
 {
+  vtkBoostedGridBuilder* grid = this->Builder.get();
+  const int columns = this->Columns;
   return this->Sample(this->SampleFirst, this->SampleLast + 1, this->Columns,
-    [&sample](vtkIdType first, vtkIdType last) {
+    [&sample, grid, columns](vtkIdType first, vtkIdType last) {
       for (vtkIdType r = first; r < last; ++r)
       {
+        grid->ClearSamples(static_cast<int>(r), 0, columns);
         sample(static_cast<int>(r));
       }
     });
@@ -114,21 +119,24 @@ bool vtkBoostedGridDriver::SampleRows(const std::function<void(int)>& sample)
 
 bool vtkBoostedGridDriver::SampleGrid(const std::function<void(int, int)>& sample)
 {
-  const vtkIdType columns = this->Columns;
-  return this->Sample(this->SampleFirst * columns, (this->SampleLast + 1) * columns, 1,
-    [&sample, columns](vtkIdType first, vtkIdType last) {
-      for (vtkIdType i = first; i < last; ++i)
-      {
-        sample(static_cast<int>(i / columns), static_cast<int>(i % columns));
-      }
-    });
+  return this->SampleRuns([&sample](int row, int firstColumn, int lastColumn) {
+    for (int c = firstColumn; c < lastColumn; ++c)
+    {
+      sample(row, c);
+    }
+  });
 }
 
 bool vtkBoostedGridDriver::SampleColumns(const std::function<void(int, int, int)>& sample)
 {
+  vtkBoostedGridBuilder* grid = this->Builder.get();
   const int firstRow = this->SampleFirst, lastRow = this->SampleLast;
   return this->Sample(0, this->Columns, lastRow - firstRow + 1,
-    [&sample, firstRow, lastRow](vtkIdType first, vtkIdType last) {
+    [&sample, grid, firstRow, lastRow](vtkIdType first, vtkIdType last) {
+      for (int r = firstRow; r <= lastRow; ++r)
+      {
+        grid->ClearSamples(r, static_cast<int>(first), static_cast<int>(last));
+      }
       for (vtkIdType c = first; c < last; ++c)
       {
         sample(static_cast<int>(c), firstRow, lastRow);
@@ -138,16 +146,19 @@ bool vtkBoostedGridDriver::SampleColumns(const std::function<void(int, int, int)
 
 bool vtkBoostedGridDriver::SampleRuns(const std::function<void(int, int, int)>& sample)
 {
+  vtkBoostedGridBuilder* grid = this->Builder.get();
   const vtkIdType columns = this->Columns;
   return this->Sample(this->SampleFirst * columns, (this->SampleLast + 1) * columns, 1,
-    [&sample, columns](vtkIdType first, vtkIdType last) {
+    [&sample, grid, columns](vtkIdType first, vtkIdType last) {
       // The chunk [first, last) of row-major sample indices, cut where rows end.
       for (vtkIdType i = first; i < last;)
       {
         const vtkIdType row = i / columns;
         const vtkIdType end = std::min(last, (row + 1) * columns);
-        sample(static_cast<int>(row), static_cast<int>(i - row * columns),
-          static_cast<int>(end - row * columns));
+        const int firstColumn = static_cast<int>(i - row * columns);
+        const int lastColumn = static_cast<int>(end - row * columns);
+        grid->ClearSamples(static_cast<int>(row), firstColumn, lastColumn);
+        sample(static_cast<int>(row), firstColumn, lastColumn);
         i = end;
       }
     });

@@ -10,8 +10,9 @@
  *    empty), and finds the
  *    rows of the requested piece (an out-of-range piece is empty, as in VTK's sources). A surface
  *    also samples one halo row on each side, which the normals at the band's edge need.
- * 2. SampleRows or SampleGrid: the source computes its samples, in vtkBoostedBlockLoop's blocks
- *    (progress, abort, threads).
+ * 2. SampleRows, SampleGrid, SampleColumns or SampleRuns: the source computes its samples, in
+ *    vtkBoostedBlockLoop's blocks (progress, abort, threads), each sample cleared first
+ *    (vtkBoostedGridBuilder::ClearSamples) on the thread that computes it.
  * 3. Build: quads or polylines (vtkBoostedGridBuilder), cut exactly at the clip sphere
  *    (vtkBoostedSphereClip): every finite sample is kept until the cut, so the output ends on the
  *    sphere (to round-off), not at the last whole grid cell inside it. An aborted update stays

@@ -1,7 +1,9 @@
 #include "vtkBoostedTimeSweep.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkDataObject.h"
 #include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
@@ -25,6 +27,20 @@ void vtkBoostedTimeSweep::ReportTimeSteps(vtkInformation* outInfo, int numberOfT
   const double range[2] = { times.front(), times.back() };
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), n);
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+}
+
+void vtkBoostedTimeSweep::ReportOnEveryPort(
+  vtkInformationVector* outputVector, int numberOfTimeSteps, bool pieces)
+{
+  for (int port = 0; port < outputVector->GetNumberOfInformationObjects(); ++port)
+  {
+    vtkInformation* info = outputVector->GetInformationObject(port);
+    if (pieces)
+    {
+      info->Set(vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
+    }
+    ReportTimeSteps(info, numberOfTimeSteps);
+  }
 }
 
 double vtkBoostedTimeSweep::Fraction(vtkInformation* outInfo, int numberOfTimeSteps)

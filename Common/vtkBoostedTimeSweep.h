@@ -18,6 +18,7 @@
 
 class vtkDataObject;
 class vtkInformation;
+class vtkInformationVector;
 
 class BOOSTEDSURFACESCOMMON_EXPORT vtkBoostedTimeSweep
 {
@@ -28,6 +29,11 @@ public:
   /// RequestInformation: sets TIME_STEPS and TIME_RANGE on `outInfo` for N >= 1, removes them
   /// for N = 0 (a class that stops animating forgets its steps).
   static void ReportTimeSteps(vtkInformation* outInfo, int numberOfTimeSteps);
+
+  /// The sources' RequestInformation: ReportTimeSteps on every output port and, for a source
+  /// that divides its output into pieces (`pieces`), CAN_HANDLE_PIECE_REQUEST on each.
+  static void ReportOnEveryPort(
+    vtkInformationVector* outputVector, int numberOfTimeSteps, bool pieces);
 
   /// RequestData: the fraction of the sweep in [0, 1] for the time requested on `outInfo`.
   static double Fraction(vtkInformation* outInfo, int numberOfTimeSteps);

@@ -28,9 +28,7 @@ vtkBoostedSurfaceSource::vtkBoostedSurfaceSource()
 int vtkBoostedSurfaceSource::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  outputVector->GetInformationObject(0)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
-  vtkBoostedTimeSweep::ReportTimeSteps(
-    outputVector->GetInformationObject(0), this->NumberOfTimeSteps);
+  vtkBoostedTimeSweep::ReportOnEveryPort(outputVector, this->NumberOfTimeSteps, true);
   return 1;
 }
 

@@ -120,12 +120,7 @@ int vtkConformalOrbitSource::FillOutputPortInformation(int port, vtkInformation*
 int vtkConformalOrbitSource::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  for (int port = 0; port < this->GetNumberOfOutputPorts(); ++port)
-  {
-    outputVector->GetInformationObject(port)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
-    vtkBoostedTimeSweep::ReportTimeSteps(
-      outputVector->GetInformationObject(port), this->NumberOfTimeSteps);
-  }
+  vtkBoostedTimeSweep::ReportOnEveryPort(outputVector, this->NumberOfTimeSteps, true);
   return 1;
 }
 

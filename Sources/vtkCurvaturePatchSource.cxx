@@ -58,12 +58,7 @@ int vtkCurvaturePatchSource::FillOutputPortInformation(int port, vtkInformation*
 int vtkCurvaturePatchSource::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  for (int port = 0; port < this->GetNumberOfOutputPorts(); ++port)
-  {
-    outputVector->GetInformationObject(port)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
-    vtkBoostedTimeSweep::ReportTimeSteps(
-      outputVector->GetInformationObject(port), this->NumberOfTimeSteps);
-  }
+  vtkBoostedTimeSweep::ReportOnEveryPort(outputVector, this->NumberOfTimeSteps, true);
   return 1;
 }
 
@@ -143,9 +138,8 @@ int vtkCurvaturePatchSource::RequestData(
     vs[r] = patch.b(r, static_cast<int>(rows));
   }
   vtkBoostedGridBuilder& grid = driver.Grid();
-  std::vector<double> weights;
-  if (!vtkBoostedMemoryBudget::Run(
-        this, [&] { weights.assign(static_cast<size_t>(rows) * columns, 0.0); }))
+  int weights = -1; // the grid's GeneratorWeight values, written by the sampling
+  if (!vtkBoostedMemoryBudget::Run(this, [&] { weights = grid.AddSampleArray("GeneratorWeight", 1); }))
   {
     return 1; // the output stays empty
   }
@@ -156,13 +150,13 @@ int vtkCurvaturePatchSource::RequestData(
     exact.reset(new vtkBoostedCurvatureArrays(grid, true));
   }
   // Runs of a row's samples mapped at once (the block kernel), each writing only its own grid
-  // slots: the builder's points and `weights`.
+  // slots: the builder's points and weights (one row's values are consecutive).
   driver.SampleRuns([&](int r, int first, int last) {
     const size_t count = static_cast<size_t>(last - first);
     std::vector<cga::Vec3> images(count);
     std::unique_ptr<bool[]> mapped(new bool[count]);
-    patch.mapRow(vs[r], &us[first], count, images.data(),
-      &weights[static_cast<size_t>(r) * columns + first], mapped.get());
+    patch.mapRow(
+      vs[r], &us[first], count, images.data(), grid.SampleValues(weights, r, first), mapped.get());
     for (size_t i = 0; i < count; ++i)
     {
       if (mapped[i]) // false: at infinity; left NaN and dropped
@@ -183,7 +177,6 @@ int vtkCurvaturePatchSource::RequestData(
   });
   grid.AddColumnParameter("u", us);
   grid.AddRowParameter("v", vs);
-  grid.AddPointParameter("GeneratorWeight", weights);
   if (driver.Build(vtkPolyData::GetData(outInfo)) &&
     vtkBoostedGeneratorGlyphs::OnFirstPiece(outputVector))
   {

@@ -8,6 +8,7 @@
 #include "vtkBoostedRowList.h"
 #include "vtkBoostedSinglePrecision.h"
 #include "vtkBoostedTimeSweep.h"
+#include "vtkAOSDataArrayTemplate.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -59,7 +60,9 @@ vtkSmartPointer<vtkDataArray> newArray(int precision, const char* name, int comp
   return array;
 }
 
-// The arrays of one extent, filled by chunks of points from several threads.
+// The arrays of one extent (values of type T: float or double), filled by chunks of points from
+// several threads.
+template <typename T>
 struct FieldFunctor
 {
   const cga::DipoleField* Field;
@@ -67,11 +70,11 @@ struct FieldFunctor
   int Extent[6];
   double Origin[3];
   double Spacing[3];
-  vtkDataArray* SummedGenerators;
-  vtkDataArray* SummedDisplacements;
-  vtkDataArray* Difference;
-  vtkDataArray* DifferenceMagnitude;
-  vtkDataArray* Potential;
+  T* SummedGenerators;
+  T* SummedDisplacements;
+  T* Difference;
+  T* DifferenceMagnitude;
+  T* Potential;
   std::atomic<std::size_t>* Failures;
   std::atomic<double>* Largest; // of the values written, for single precision's range
 
@@ -81,14 +84,22 @@ struct FieldFunctor
     std::vector<double> points(3 * n), a(3 * n), b(3 * n), phi(n), scratch(3 * n);
     const vtkIdType nx = this->Extent[1] - this->Extent[0] + 1;
     const vtkIdType ny = this->Extent[3] - this->Extent[2] + 1;
-    for (vtkIdType id = begin; id < end; ++id)
+    // The first point's structured index (i, j, k) in the extent, then one step at a time.
+    vtkIdType index[3] = { begin % nx, (begin / nx) % ny, begin / (nx * ny) };
+    for (std::size_t i = 0; i < n; ++i)
     {
-      // The point's structured index (i, j, k) in the whole grid, hence its coordinates.
-      const vtkIdType index[3] = { this->Extent[0] + id % nx, this->Extent[2] + (id / nx) % ny,
-        this->Extent[4] + id / (nx * ny) };
       for (int c = 0; c < 3; ++c)
       {
-        points[3 * (id - begin) + c] = this->Origin[c] + index[c] * this->Spacing[c];
+        points[3 * i + c] = this->Origin[c] + (this->Extent[2 * c] + index[c]) * this->Spacing[c];
+      }
+      if (++index[0] == nx)
+      {
+        index[0] = 0;
+        if (++index[1] == ny)
+        {
+          index[1] = 0;
+          ++index[2];
+        }
       }
     }
     *this->Failures +=
@@ -99,35 +110,54 @@ struct FieldFunctor
     const double limit = std::numeric_limits<double>::max();
     const auto saturated = [limit](double value)
     { return std::isnan(value) ? 0.0 : std::max(-limit, std::min(limit, value)); };
-    for (std::vector<double>* values : { &a, &b, &phi })
+    double largest = 0.0; // of the values written (all finite)
+    for (std::size_t i = 0; i < n; ++i)
     {
-      std::transform(values->begin(), values->end(), values->begin(), saturated);
-    }
-    double largest = 0.0; // of the values written, the magnitudes first
-    for (vtkIdType id = begin; id < end; ++id)
-    {
-      const std::size_t i = static_cast<std::size_t>(id - begin);
-      const double difference[3] = { saturated(a[3 * i] - b[3 * i]),
-        saturated(a[3 * i + 1] - b[3 * i + 1]), saturated(a[3 * i + 2] - b[3 * i + 2]) };
-      this->SummedGenerators->SetTuple(id, &a[3 * i]);
-      this->SummedDisplacements->SetTuple(id, &b[3 * i]);
-      this->Difference->SetTuple(id, difference);
+      const vtkIdType id = begin + static_cast<vtkIdType>(i);
+      double difference[3];
+      for (int c = 0; c < 3; ++c)
+      {
+        const double summedGenerators = saturated(a[3 * i + c]);
+        const double summedDisplacements = saturated(b[3 * i + c]);
+        difference[c] = saturated(summedGenerators - summedDisplacements);
+        this->SummedGenerators[3 * id + c] = static_cast<T>(summedGenerators);
+        this->SummedDisplacements[3 * id + c] = static_cast<T>(summedDisplacements);
+        this->Difference[3 * id + c] = static_cast<T>(difference[c]);
+        // The magnitude of (a) - (b) is at least each of its components.
+        largest = std::max({ largest, std::fabs(summedGenerators), std::fabs(summedDisplacements) });
+      }
       // no spurious overflow
       const double magnitude =
         saturated(cga::norm({ difference[0], difference[1], difference[2] }));
-      this->DifferenceMagnitude->SetTuple1(id, magnitude);
-      this->Potential->SetTuple1(id, phi[i]);
-      largest = std::isfinite(magnitude) ? std::max(largest, magnitude) : largest;
+      const double potential = saturated(phi[i]);
+      this->DifferenceMagnitude[id] = static_cast<T>(magnitude);
+      this->Potential[id] = static_cast<T>(potential);
+      largest = std::max({ largest, magnitude, std::fabs(potential) });
     }
-    // The magnitude of (a) - (b) is at least each of its components.
-    largest = std::max({ largest, vtkBoostedLargestFinite(a.data(), a.size()),
-      vtkBoostedLargestFinite(b.data(), b.size()), vtkBoostedLargestFinite(phi.data(), n) });
     double seen = this->Largest->load();
     while (largest > seen && !this->Largest->compare_exchange_weak(seen, largest))
     {
     }
   }
 };
+
+// Fills the five arrays of values of type T in the block loop; false when aborted.
+template <typename T>
+bool fillArrays(vtkAlgorithm* algorithm, FieldFunctor<T> functor,
+  vtkDataArray* const arrays[5], vtkIdType n)
+{
+  T* pointers[5];
+  for (int k = 0; k < 5; ++k)
+  {
+    pointers[k] = vtkAOSDataArrayTemplate<T>::FastDownCast(arrays[k])->GetPointer(0);
+  }
+  functor.SummedGenerators = pointers[0];
+  functor.SummedDisplacements = pointers[1];
+  functor.Difference = pointers[2];
+  functor.DifferenceMagnitude = pointers[3];
+  functor.Potential = pointers[4];
+  return vtkBoostedBlockLoop::For(algorithm, 0, n, 1, functor);
+}
 } // namespace
 
 vtkDipoleFieldSource::vtkDipoleFieldSource()
@@ -236,8 +266,8 @@ int vtkDipoleFieldSource::RequestInformation(
   vtkDataObject::SetPointDataActiveScalarInfo(
     outInfo, this->OutputPointsPrecision == SINGLE_PRECISION ? VTK_FLOAT : VTK_DOUBLE, 1);
 
-  vtkBoostedTimeSweep::ReportTimeSteps(outInfo, this->NumberOfTimeSteps);
-  vtkBoostedTimeSweep::ReportTimeSteps(outputVector->GetInformationObject(1), this->NumberOfTimeSteps);
+  // Extents, not pieces (CAN_PRODUCE_SUB_EXTENT above).
+  vtkBoostedTimeSweep::ReportOnEveryPort(outputVector, this->NumberOfTimeSteps, false);
   return 1;
 }
 
@@ -328,15 +358,25 @@ int vtkDipoleFieldSource::RequestData(
 
   std::atomic<std::size_t> failures{ 0 };
   std::atomic<double> largest{ 0.0 };
-  FieldFunctor functor{ &field, weightScale, {}, {}, {}, summedGenerators, summedDisplacements,
-    difference, differenceMagnitude, potential, &failures, &largest };
-  std::copy_n(extent, 6, functor.Extent);
-  std::copy_n(this->Origin, 3, functor.Origin);
-  std::copy_n(this->Spacing, 3, functor.Spacing);
-
+  vtkDataArray* const arrays[5] = { summedGenerators, summedDisplacements, difference,
+    differenceMagnitude, potential };
+  // The extent's point ids run from 0; each chunk writes its own range of every array.
+  auto fill = [&](auto functor) {
+    functor.Field = &field;
+    functor.WeightScale = weightScale;
+    std::copy_n(extent, 6, functor.Extent);
+    std::copy_n(this->Origin, 3, functor.Origin);
+    std::copy_n(this->Spacing, 3, functor.Spacing);
+    functor.Failures = &failures;
+    functor.Largest = &largest;
+    return fillArrays(this, functor, arrays, n);
+  };
   bool completed = false;
-  if (!vtkBoostedMemoryBudget::Run(
-        this, [&] { completed = vtkBoostedBlockLoop::For(this, 0, n, 1, functor); }) ||
+  if (!vtkBoostedMemoryBudget::Run(this,
+        [&] {
+          completed = precision == SINGLE_PRECISION ? fill(FieldFunctor<float>{})
+                                                    : fill(FieldFunctor<double>{});
+        }) ||
     !completed)
   {
     output->Initialize(); // aborted or out of memory: never hand on half-filled arrays

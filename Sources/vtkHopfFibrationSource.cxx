@@ -86,12 +86,7 @@ int vtkHopfFibrationSource::FillOutputPortInformation(int port, vtkInformation* 
 int vtkHopfFibrationSource::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  for (int port = 0; port < this->GetNumberOfOutputPorts(); ++port)
-  {
-    outputVector->GetInformationObject(port)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
-    vtkBoostedTimeSweep::ReportTimeSteps(
-      outputVector->GetInformationObject(port), this->NumberOfTimeSteps);
-  }
+  vtkBoostedTimeSweep::ReportOnEveryPort(outputVector, this->NumberOfTimeSteps, true);
   return 1;
 }
 

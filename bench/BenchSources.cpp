@@ -14,15 +14,33 @@
 #include <vtkParametricFunctionSource.h>
 #include <vtkParametricTorus.h>
 
+#include <ctime>
+
 namespace
 {
 using namespace boostedbench;
 
+double cpuSeconds(clockid_t clock)
+{
+  timespec t{};
+  clock_gettime(clock, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 // Updates `source` each iteration on `threads` threads and reports its output points per second;
 // an error when the output does not have kMeshPoints points (the sizes below are chosen for it).
+// Counter `serial`: the calling thread's share of the process's CPU time over the timed updates.
+// vtkSMPTools' STDThread backend runs every parallel loop on its pool's threads while the
+// calling thread waits, so this is the update's serial share, measured in CPU time (which the
+// other jobs of a shared machine do not inflate as they do wall clock): by Amdahl's law two
+// threads give at most 1 / (serial + (1 - serial) / 2) times one.
 void timeSource(benchmark::State& state, vtkAlgorithm* source, long threads)
 {
+  const double threadBefore = cpuSeconds(CLOCK_THREAD_CPUTIME_ID);
+  const double processBefore = cpuSeconds(CLOCK_PROCESS_CPUTIME_ID);
   const long long points = updateEachIteration(state, source, static_cast<int>(threads));
+  state.counters["serial"] = (cpuSeconds(CLOCK_THREAD_CPUTIME_ID) - threadBefore) /
+    (cpuSeconds(CLOCK_PROCESS_CPUTIME_ID) - processBefore);
   if (points != static_cast<long long>(kMeshPoints))
   {
     state.SkipWithError(("the source made " + std::to_string(points) + " points").c_str());

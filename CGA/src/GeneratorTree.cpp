@@ -464,7 +464,7 @@ bool GeneratorTree::computeMoments(int index)
 }
 
 // sums[c * L + l] += the node's expansion at lane l's point (p: x[L], y[L], z[L]). The lanes are
-// the inner loops, so that they vectorize (compiled for the CPU's widest vectors: BOOSTED_TREE_CLONES).
+// the inner loops, so that they vectorize (compiled for the CPU's widest vectors: BOOSTED_LANE_CLONES).
 // Adds the nodes `starts` and their subtrees to sums for the lanes' points p, each node by its
 // expansion when usable for every point within `radius` of `center` (q at the nearest possible
 // distance), else opened; leaves and nodes without moments directly.
@@ -512,7 +512,7 @@ void GeneratorTree::addNear(const int* starts, std::size_t count, const double* 
   }
 }
 
-BOOSTED_TREE_CLONES
+BOOSTED_LANE_CLONES
 void GeneratorTree::addMultipole(const Node& node, const double* moments, int degree, const double* p,
                                  double* sums) const
 {
@@ -595,7 +595,7 @@ void GeneratorTree::addMultipole(const Node& node, const double* moments, int de
 // the sums stay in registers across the node's generators.
 typedef double LaneVector __attribute__((vector_size(L * sizeof(double))));
 
-BOOSTED_TREE_CLONES
+BOOSTED_LANE_CLONES
 void GeneratorTree::addDirect(const Node& node, const double* p, double* sums) const
 {
   LaneVector x, y, z, out[kComponents];

@@ -17,6 +17,7 @@
 // test with the radius of a cube of points added to rho: the cube's local expansion.
 #pragma once
 
+#include "LaneClones.h"
 #include "PointPairKernel.h"
 
 #include <array>
@@ -24,13 +25,7 @@
 #include <vector>
 
 // The loops over lanes and over the ten components are compiled for AVX-512, AVX2 and the
-// baseline, chosen at load time (GCC's function multiversioning), as the block kernel is
-// (PointPairKernel.h).
-#if defined(BOOSTED_KERNEL_X86_DISPATCH) && defined(__GNUC__) && !defined(__clang__)
-#define BOOSTED_TREE_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#else
-#define BOOSTED_TREE_CLONES
-#endif
+// baseline (BOOSTED_LANE_CLONES).
 
 namespace cga
 {

@@ -307,7 +307,7 @@ void GeneratorTree::evaluateCell(CellWork& work, int level, std::size_t first, s
 // (GeneratorTree.h): with d = center - c_node, D = k|d|^2 + eps, u = sqrt(k/D) d,
 // a = sqrt(k/D) radius and b = sqrt(k/D) rho_node,
 //   L_alpha += (-a)^|alpha| sum_beta C(alpha + beta, alpha) b^|beta| e_(alpha+beta)(u)/D mu_beta.
-BOOSTED_TREE_CLONES
+BOOSTED_LANE_CLONES
 void GeneratorTree::addSourceToLocal(const Node& node, const double* center, double radius, int degree,
                                      double* local) const
 {
@@ -373,7 +373,7 @@ void GeneratorTree::addSourceToLocal(const Node& node, const double* center, dou
 // local = the parent's polynomial in the child's variable: yhat_parent = lambda yhat + delta,
 // lambda = radius / parentRadius = 1/2, delta = (center - parentCenter)/parentRadius:
 //   L_alpha = lambda^|alpha| sum_beta C(alpha + beta, alpha) delta^beta L_parent,(alpha+beta).
-BOOSTED_TREE_CLONES
+BOOSTED_LANE_CLONES
 void GeneratorTree::shiftLocal(const double* parent, const double* parentCenter, const double* center,
                                double radius, double* local) const
 {
@@ -411,7 +411,7 @@ void GeneratorTree::shiftLocal(const double* parent, const double* parentCenter,
 }
 
 // sums[c * L + l] += the local polynomial at lane l's point.
-BOOSTED_TREE_CLONES
+BOOSTED_LANE_CLONES
 void GeneratorTree::addLocal(const double* local, const double* center, double radius, const double* p,
                              double* sums) const
 {

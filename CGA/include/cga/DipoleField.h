@@ -6,8 +6,12 @@
 // with tau_i = tau(x_i, v_i), d_i^2 = k |p - x_i|^2 + eps, and s a weight scale (1 normally; the
 // VTK source's time steps run it from 0 to 1).
 //
-// Method (a) is PointPairField's map; method (b) is a sum of one-generator PointPairFields. The
-// contour scalar is the superposed dipole potential (see potential()).
+// Method (a) is PointPairField's map; method (b) is a sum of one-generator fields: a point pair
+// alone is a 2-blade whose exponential is 1 + tau, a transversion with a closed form, which
+// method (b) evaluates directly (docs/conventions.md section 3 item 12); the other kinds, and a
+// point where that form would lose digits, go through one-generator PointPairFields. With a
+// single generator method (b) is method (a)'s computation, to the bit. The contour scalar is the
+// superposed dipole potential (see potential()).
 #pragma once
 
 #include "cga/PointPairField.h"
@@ -96,10 +100,26 @@ public:
                          double* scratch) const;
 
 private:
+  /// One generator's displacement of p (method (b)'s term): the point pair's closed form, else
+  /// its one-generator field. False where the image is at infinity or not finite (out = 0).
+  bool singleDisplacement(std::size_t single, Vec3 p, double weightScale, Vec3& out) const;
+
   PointPairField Summed;              // all generators: method (a)
   std::vector<PointPairField> Singles; // one field per generator: method (b)
+  // For each single: its index in PointPairs (evaluated in closed form), or -1 (another kind).
+  std::vector<long> PointPairOf;
   std::vector<PointPairGenerator> PointPairs; // the kept point pairs, for the potential
+  double LargestPointPairWeight = 0.0;        // of |w| over PointPairs, for the potential
+  double Falloff;
   double Epsilon;
   ExponentialRule Rule;
 };
+
+/// The displacement of p by one point pair alone, in closed form (docs/conventions.md section 3
+/// item 12): K = exp(-c tau(x, v)) = 1 + tau(x, u), u = -c v, c = s w / (k |r|^2 + eps),
+/// r = p - x, moves p to x + SCT_u(r). Returns false, writing nothing, where that form is not
+/// accurate to a few units in the last place of the displacement (near the point the boost sends
+/// to infinity, or where a term overflows): the caller then maps p through the kernel.
+bool pointPairDisplacement(const PointPairGenerator& generator, double falloff, double epsilon,
+                           double weightScale, Vec3 p, Vec3& out);
 } // namespace cga

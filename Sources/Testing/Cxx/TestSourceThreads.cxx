@@ -141,6 +141,8 @@ TEST(SourceThreads, BoostedSurfaceIsTheSameOnEveryBackend)
   expectTheSameOnEveryBackend(source, "surface");
   source->SetMergeSeam(true);
   expectTheSameOnEveryBackend(source, "merged surface");
+  source->SetComputeCurvatures(true); // the exact normals and the curvature arrays
+  expectTheSameOnEveryBackend(source, "merged surface with curvatures");
   source->SetOutputTypeToCircles();
   expectTheSameOnEveryBackend(source, "circles");
 }
@@ -182,6 +184,8 @@ TEST(SourceThreads, CurvaturePatchIsTheSameOnEveryBackendForEveryMethod)
     }
   }
   source->SetMethod(vtkCurvaturePatchSource::CONTROL_POINTS);
+  source->SetComputeCurvatures(true);
+  expectTheSameOnEveryBackend(source, "control points with curvatures");
   source->SetOutputTypeToLines();
   expectTheSameOnEveryBackend(source, "control points, lines");
 }
@@ -214,4 +218,11 @@ TEST(SourceThreads, DipoleFieldIsTheSameOnEveryBackend)
   source->AddGenerator(-0.5, 0.2, 0, 1, 0, 0.5, 0.4);
   source->AddGenerator(0.1, -0.7, 0.1, 0, 1, 1, 0.3);
   expectTheSameOnEveryBackend(source, "dipole field");
+  // Method (b): the point pairs in closed form, a rotation by the kernel; a strong point pair
+  // too; and one generator, whose method (b) is method (a)'s computation.
+  source->AddGenerator(0.0, 0.0, 0.0, 0, 0, 1, 0.5, vtkDipoleFieldSource::ROTATION, 0.0);
+  source->AddGenerator(-1.04, 0.0, 0.0, 1, 0, 0, 2.5);
+  expectTheSameOnEveryBackend(source, "dipole field with a rotation");
+  source->SetNumberOfGenerators(1);
+  expectTheSameOnEveryBackend(source, "dipole field of one generator");
 }

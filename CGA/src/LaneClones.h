@@ -1,0 +1,12 @@
+// BOOSTED_LANE_CLONES: a function whose loops run over many independent values (lanes of points,
+// the ten components of a bivector) is compiled for AVX-512, AVX2 and the baseline and chosen at
+// load time (GCC's function multiversioning), as the block kernel is (PointPairKernel.h). The core
+// is compiled with -ffp-contract=off, so every version rounds alike: the same bits on every
+// instruction set.
+#pragma once
+
+#if defined(BOOSTED_KERNEL_X86_DISPATCH) && defined(__GNUC__) && !defined(__clang__)
+#define BOOSTED_LANE_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#else
+#define BOOSTED_LANE_CLONES
+#endif
