@@ -1,13 +1,15 @@
 // The curvature patch's derivatives (CurvaturePatch::exponentJet, ::derivatives): E(a, b)'s jet
-// against generatorAt and its central differences for every method, the image's against map(),
-// and the curvatures they give against the paper's statements: eq 15's bent line has curvature
-// kappa, and Fig 7's presets have the principal curvatures (kappaU, kappaV) at the origin.
+// against generatorAt (its value bit for bit) and its central differences for every method, the
+// image's against map(), and the curvatures they give against the paper's statements: eq 15's
+// bent line has curvature kappa, and Fig 7's presets have the principal curvatures
+// (kappaU, kappaV) at the origin.
 #include "TestSupport.h"
 
 #include "cga/SurfaceCurvature.h"
 #include "cga/surfaces/CurvaturePatch.h"
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace
@@ -79,6 +81,50 @@ TEST(CurvaturePatchDerivatives, ExponentJetIsTheGeneratorWithItsDifferences)
         EXPECT_NEAR(jet[c].dab, extrapolated([&](double h) {
           return (e(h, h)[c] - e(h, -h)[c] - e(-h, h)[c] + e(-h, -h)[c]) / (4 * h * h);
         }), 1e-8 * scale);
+      }
+    }
+  }
+}
+
+TEST(CurvaturePatchDerivatives, ExponentJetValueIsTheGeneratorBitForBit)
+{
+  // The operators are one template for double and for the jets (CurvatureOperatorTerms.h): the
+  // jet's value part is generatorAt's, to the bit (signs of zeros included), for every method, at
+  // the grid samples mapRow uses (corners, edges, the center), with flat directions (kappa 0),
+  // weights that cancel (kappaV = -kappaU), no falloff, a line patch (sizeV 0) and a far patch.
+  Random random(1307);
+  for (const CurvatureMethod method : kMethods)
+  {
+    for (int trial = 0; trial < 6; ++trial)
+    {
+      CurvaturePatch patch = patchOf(method, random);
+      patch.kappaU = trial == 1 ? 0.0 : patch.kappaU;
+      patch.kappaV = trial == 2 ? -patch.kappaU : patch.kappaV;
+      patch.falloff = trial == 3 ? 0.0 : patch.falloff;
+      patch.sizeV = trial == 4 ? 0.0 : patch.sizeV;
+      patch.frame.origin = trial == 5 ? patch.frame.origin + Vec3{ 1e6, -2e6, 3e5 } : patch.frame.origin;
+      for (CurvatureControlPoint& c : patch.controlPoints)
+      {
+        c.kappaU = trial == 1 ? 0.0 : c.kappaU;
+        c.kappaV = trial == 2 ? -c.kappaU : c.kappaV;
+        c.location = trial == 5 ? c.location + Vec3{ 1e6, -2e6, 3e5 } : c.location;
+      }
+      ASSERT_TRUE(patch.validate().empty());
+      for (int row = 0; row < 5; ++row)
+      {
+        for (int column = 0; column < 5; ++column)
+        {
+          const double a = patch.a(column, 5), b = patch.b(row, 5);
+          SurfaceJet jet[Bivector::Count];
+          patch.exponentJet(a, b, Vec3{}, jet);
+          const Bivector value = patch.generatorAt(a, b).exponent;
+          for (int c = 0; c < Bivector::Count; ++c)
+          {
+            EXPECT_EQ(0, std::memcmp(&jet[c].value, &value.c[c], sizeof(double)))
+              << static_cast<int>(method) << " trial " << trial << " component " << c << ": "
+              << jet[c].value << " " << value[c];
+          }
+        }
       }
     }
   }

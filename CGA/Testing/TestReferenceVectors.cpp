@@ -20,6 +20,9 @@ using namespace cga;
 using cgatest::signedArea;
 using cgatest::pointsNear;
 using cgatest::relativeDifference;
+using cgatest::boost;
+using cgatest::mapPoint;
+using cgatest::specialConformal;
 using nlohmann::json;
 
 json load(const std::string& name)
@@ -74,23 +77,6 @@ Multivector fromGanja(const json& j)
     m[mask] = item.value().get<double>();
   }
   return m;
-}
-
-Even boost(double w, Vec3 x, Vec3 v)
-{
-  return Even::identity() + Even::fromBivector(w * nullPointPairCompact(x, v));
-}
-
-Vec3 mapPoint(const Even& k, Vec3 p)
-{
-  Vec3 out{ NAN, NAN, NAN };
-  EXPECT_TRUE(sandwichPoint(k, p, out));
-  return out;
-}
-
-Vec3 specialConformal(Vec3 v, Vec3 x)
-{
-  return (x + norm2(x) * v) / (1.0 + 2.0 * dot(v, x) + norm2(v) * norm2(x));
 }
 
 double relative(double a, double b)

@@ -16,25 +16,9 @@ using cgatest::signedArea;
 using cgatest::pointsNear;
 using cgatest::Random;
 using cgatest::relativeDifference;
-
-// The transversion of docs/conventions.md section 2: x' = (x + v|x|^2)/(1 + 2 v.x + |v|^2 |x|^2).
-Vec3 specialConformal(Vec3 v, Vec3 x)
-{
-  return (x + norm2(x) * v) / (1.0 + 2.0 * dot(v, x) + norm2(v) * norm2(x));
-}
-
-// K = 1 + w tau(x, v).
-Even boost(double w, Vec3 x, Vec3 v)
-{
-  return Even::identity() + Even::fromBivector(w * nullPointPairCompact(x, v));
-}
-
-Vec3 mapPoint(const Even& k, Vec3 p)
-{
-  Vec3 out{ NAN, NAN, NAN };
-  EXPECT_TRUE(sandwichPoint(k, p, out));
-  return out;
-}
+using cgatest::boost;
+using cgatest::mapPoint;
+using cgatest::specialConformal;
 
 // ---- section 1 ----
 

@@ -4,6 +4,8 @@
 #include "cga/Compact.h"
 #include "cga/CompactConversion.h"
 #include "cga/Multivector.h"
+#include "cga/PointPairs.h"
+#include "cga/PointSandwich.h"
 #include "cga/Vec3.h"
 #include "cga/surfaces/CurvatureOperators.h"
 
@@ -161,5 +163,25 @@ inline double signedArea(const std::vector<Vec3>& points)
     area += a.x * b.y - b.x * a.y;
   }
   return 0.5 * area;
+}
+
+/// The transversion of docs/conventions.md section 2: x' = (x + v|x|^2)/(1 + 2 v.x + |v|^2 |x|^2).
+inline Vec3 specialConformal(Vec3 v, Vec3 x)
+{
+  return (x + norm2(x) * v) / (1.0 + 2.0 * dot(v, x) + norm2(v) * norm2(x));
+}
+
+/// K = 1 + w tau(x, v).
+inline Even boost(double w, Vec3 x, Vec3 v)
+{
+  return Even::identity() + Even::fromBivector(w * nullPointPairCompact(x, v));
+}
+
+/// fn(<K up(p) ~K>_1), expected to be finite.
+inline Vec3 mapPoint(const Even& k, Vec3 p)
+{
+  Vec3 out{ NAN, NAN, NAN };
+  EXPECT_TRUE(sandwichPoint(k, p, out));
+  return out;
 }
 } // namespace cgatest

@@ -14,7 +14,7 @@ namespace
 void addNullPointPair(Bivector& b, double w, Vec3 x, Vec3 v)
 {
   const double location[3] = { x.x, x.y, x.z };
-  detail::addNullPointPair(b.c.data(), w, location, v);
+  detail::addNullPointPair(b, w, location, v);
 }
 } // namespace
 

@@ -1,10 +1,10 @@
-"""Shared by the Python tests: error observation, the arguments of the image tests and the
-regression-image comparison."""
+"""Shared by the Python tests: error observation, and the image tests' arguments, actors, window,
+camera and regression-image comparison."""
 import argparse
 
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand
-from vtkmodules.vtkRenderingCore import vtkRenderWindow
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderWindow
 from vtkmodules.vtkTestingRendering import vtkTesting
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL render window)
 
@@ -42,6 +42,26 @@ def parse_image_arguments(description, figures=None):
                         help="largest accepted vtkImageDifference thresholded error (CMake passes "
                              "BOOSTEDSURFACES_IMAGE_THRESHOLD, the one policy of every image test)")
     return parser.parse_args()
+
+
+def colored_actor(algorithm, array=None, scalar_range=(0, 1), color=None):
+    """An actor of `algorithm`'s polygonal output, coloured by its point array `array` over
+    scalar_range, or without scalars when `array` is None; `color` (if given) is the actor's own.
+    The actor keeps the algorithm alive (an output port does not in Python)."""
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(algorithm.GetOutputPort())
+    if array:
+        mapper.SetScalarModeToUsePointFieldData()
+        mapper.SelectColorArray(array)
+        mapper.SetScalarRange(scalar_range)
+    else:
+        mapper.ScalarVisibilityOff()
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    if color is not None:
+        actor.GetProperty().SetColor(color)
+    actor.keep = algorithm
+    return actor
 
 
 def offscreen_window(renderer, size):

@@ -2,6 +2,8 @@
 
 #include "cga/ExponentialMap.h"
 
+#include "CurvatureOperatorTerms.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -100,40 +102,7 @@ CurvatureGenerator CurvaturePatch::generatorAt(double a, double b) const
 
 CurvatureGenerator CurvaturePatch::generatorAbout(double a, double b, Vec3 shift) const
 {
-  PatchFrame moved = frame;
-  moved.origin = frame.origin - shift;
-  switch (method)
-  {
-    case CurvatureMethod::BentLine:
-      return bentLine(moved, kappaU, b);
-    case CurvatureMethod::TranslatedTangents:
-      return translatedTangents(moved, kappaU, kappaV, a, b);
-    case CurvatureMethod::OsculatingCircles:
-    {
-      CurvatureControlPoint c{ moved.origin, moved.normal, moved.u, kappaU, kappaV };
-      return osculatingCircles(c, moved.at(a, b), epsilon);
-    }
-    case CurvatureMethod::ControlPoints:
-      return cga::controlPoints(
-        controlPoints.data(), controlPoints.size(), moved.at(a, b), falloff, epsilon, shift);
-    case CurvatureMethod::Linear:
-    {
-      // each row carries the two generators along (x_i + b v): every row is the same curve
-      const double hu = 0.5 * sizeU;
-      const double t = 0.5 + a / sizeU;
-      return linearInterpolation(moved.at(-hu, b), corners[0], moved.at(hu, b), corners[1], t);
-    }
-    case CurvatureMethod::Bilinear:
-    {
-      const double hu = 0.5 * sizeU, hv = 0.5 * sizeV;
-      const Vec3 x[4] = { moved.at(-hu, -hv), moved.at(hu, -hv), moved.at(-hu, hv),
-        moved.at(hu, hv) };
-      const double t = 0.5 + a / sizeU;
-      const double s = sizeV > 0.0 ? 0.5 + b / sizeV : 0.0;
-      return bilinearInterpolation(x, corners.data(), s, t);
-    }
-  }
-  return {};
+  return detail::patchGeneratorOf(*this, a, b, shift);
 }
 
 bool CurvaturePatch::map(double a, double b, Vec3& out, double& weight) const
@@ -153,7 +122,7 @@ void CurvaturePatch::mapRow(
       ? controlPoints.data() : nullptr,
     method == CurvatureMethod::ControlPoints ? controlPoints.size() : 0, falloff, epsilon,
     frame.origin);
-  PatchFrame moved = frame; // as generatorAbout moves it
+  PatchFrame moved = frame; // as patchGeneratorOf moves it
   moved.origin = frame.origin - frame.origin;
   Bivector exponents[kChunk];
   Vec3 points[kChunk], images[kChunk];

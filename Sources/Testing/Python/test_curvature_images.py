@@ -10,7 +10,7 @@ Examples/, so that restyling an example does not break these tests.
 import sys
 
 from vtkmodules.vtkFiltersCore import vtkTubeFilter
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
+from vtkmodules.vtkRenderingCore import vtkRenderer
 
 from boostedsurfaces import vtkCurvaturePatchSource
 
@@ -25,20 +25,8 @@ def patch(**settings):
     return source
 
 
-def actor(algorithm, array=None, scalar_range=(0, 1), color=(0.7, 0.75, 0.9)):
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(algorithm.GetOutputPort())
-    if array:
-        mapper.SetScalarModeToUsePointFieldData()
-        mapper.SelectColorArray(array)
-        mapper.SetScalarRange(scalar_range)
-    else:
-        mapper.ScalarVisibilityOff()
-    result = vtkActor()
-    result.SetMapper(mapper)
-    result.GetProperty().SetColor(color)
-    result.keep = algorithm  # a port does not keep its algorithm alive in Python
-    return result
+def actor(algorithm, array, scalar_range):
+    return common.colored_actor(algorithm, array, scalar_range, color=(0.7, 0.75, 0.9))
 
 
 def fig6():

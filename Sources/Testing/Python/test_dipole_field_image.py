@@ -13,7 +13,7 @@ import sys
 
 from vtkmodules.vtkFiltersCore import vtkContourFilter, vtkGlyph3D
 from vtkmodules.vtkFiltersSources import vtkArrowSource
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
+from vtkmodules.vtkRenderingCore import vtkRenderer
 
 from boostedsurfaces import vtkDipoleFieldSource
 
@@ -45,38 +45,23 @@ def main():
     glyph.SetScaleModeToDataScalingOff()
     glyph.SetColorModeToColorByVector()
     glyph.SetScaleFactor(0.18)
-    glyph_mapper = vtkPolyDataMapper()
-    glyph_mapper.SetInputConnection(glyph.GetOutputPort())
-    glyph_mapper.SetScalarModeToUsePointFieldData()
-    glyph_mapper.SelectColorArray("VectorMagnitude")
-    glyph_mapper.SetScalarRange(0.0, 1.0)
-    arrows = vtkActor()
-    arrows.SetMapper(glyph_mapper)
+    arrows = common.colored_actor(glyph, "VectorMagnitude", (0.0, 1.0))
 
     contour = vtkContourFilter()
     contour.SetInputConnection(source.GetOutputPort())
     contour.SetInputArrayToProcess(0, 0, 0, 0, "DipolePotential")
     for i, value in enumerate((-0.6, -0.3, -0.15, -0.05, 0.05, 0.15, 0.3, 0.6)):
         contour.SetValue(i, value)
-    contour_mapper = vtkPolyDataMapper()
-    contour_mapper.SetInputConnection(contour.GetOutputPort())
-    contour_mapper.ScalarVisibilityOff()
-    lines = vtkActor()
-    lines.SetMapper(contour_mapper)
-    lines.GetProperty().SetColor(0, 0, 0)
+    lines = common.colored_actor(contour, color=(0, 0, 0))
     lines.GetProperty().SetLineWidth(2)
 
     renderer = vtkRenderer()
     renderer.SetBackground(1, 1, 1)
     renderer.AddActor(arrows)
     renderer.AddActor(lines)
-    window = common.offscreen_window(renderer, (300, 300))
-    camera = renderer.GetActiveCamera()
-    camera.SetParallelProjection(True)
-    renderer.ResetCamera()
-    camera.Zoom(1.3)
-    window.Render()
-    return common.compare_with_baseline(window, args.baseline, args.output_dir, args.threshold)
+    # Looking down -z (VTK's default camera), parallel.
+    return common.regression_test(renderer, (0, 0, 1), (0, 1, 0), 1.3, args.baseline,
+                                  args.output_dir, args.threshold, size=(300, 300), parallel=True)
 
 
 if __name__ == "__main__":

@@ -10,22 +10,11 @@ here rather than taken from Examples/, so that restyling an example does not bre
 """
 import sys
 
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
+from vtkmodules.vtkRenderingCore import vtkRenderer
 
 from boostedsurfaces import vtkBoostedSurfaceSource
 
 import python_test_common as common
-
-
-def actor_for(source, scalar_range):
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(source.GetOutputPort())
-    mapper.SetScalarModeToUsePointFieldData()
-    mapper.SelectColorArray("lambda")
-    mapper.SetScalarRange(scalar_range)
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    return actor
 
 
 def main():
@@ -50,8 +39,8 @@ def main():
 
     renderer = vtkRenderer()
     renderer.SetBackground(1, 1, 1)
-    renderer.AddActor(actor_for(horn, (0, 1)))
-    circles_actor = actor_for(circles, (0, 2))
+    renderer.AddActor(common.colored_actor(horn, "lambda", (0, 1)))
+    circles_actor = common.colored_actor(circles, "lambda", (0, 2))
     circles_actor.GetProperty().SetLineWidth(2)
     renderer.AddActor(circles_actor)
 

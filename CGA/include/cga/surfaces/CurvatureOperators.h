@@ -99,13 +99,19 @@ public:
     double epsilon, Vec3 shift = Vec3{});
   CurvatureGenerator at(Vec3 p) const;
 
-private:
+  /// A control point with the pieces of its term that do not depend on p.
   struct Prepared
   {
     CurvatureControlPoint point; // moved by -shift
     Bivector pair;               // tau(location, normal)
     Vec3 planeNormalU, planeNormalV; // along x normal, for along = u and v = normal x u
   };
+  /// What at() sums over (and the curvature patch's jets, src/surfaces/CurvatureOperatorTerms.h).
+  const std::vector<Prepared>& prepared() const { return this->Points; }
+  double falloff() const { return this->Falloff; }
+  double epsilon() const { return this->Epsilon; }
+
+private:
   std::vector<Prepared> Points;
   double Falloff, Epsilon;
 };

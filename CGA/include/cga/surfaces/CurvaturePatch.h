@@ -77,7 +77,8 @@ struct CurvaturePatch
 
   /// generatorAt(a, b).exponent with its first and second derivatives in (a, b), ten components
   /// in Compact.h order, of the patch moved by -shift: the operators' formulas (eq 15-18, 21-22,
-  /// 24-26) run on second-order dual numbers (src/surfaces/CurvaturePatchJet.cpp). Every operator
+  /// 24-26), one template for double and for the jets (src/surfaces/CurvatureOperatorTerms.h), run
+  /// on second-order dual numbers; the value is generatorAt's bit for bit. Every operator
   /// is a sum of w_i(a, b) tau(x_i(a, b), d_i): the weights rational in p(a, b) (osculating
   /// circles, control points) or polynomial (the interpolations), the locations linear in (a, b)
   /// and tau polynomial of degree 2 in its location. Call after validate().

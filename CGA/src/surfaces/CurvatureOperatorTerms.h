@@ -1,0 +1,339 @@
+// Internal: the curvature operators of CurvatureOperators.h (eq 15-18, 21-22, 24-26) and the
+// curvature patch's choice among them, written once as templates over the number type T of the
+// patch coordinates (a, b): double for the values (CurvatureOperators.cpp, CurvaturePatch.cpp),
+// the second-order dual number of SurfaceJetDual.h for their derivatives in (a, b)
+// (CurvaturePatchJet.cpp). Every operator is a sum of w_i(a, b) tau(x_i(a, b), d_i), the null point
+// pair's closed form from NullPointPairTerms.h. The operations keep one order for every T (the
+// core has no fused multiply-add), so a jet's value is the double result bit for bit.
+#pragma once
+
+#include "cga/surfaces/CurvaturePatch.h"
+
+#include "../ForceInline.h"
+#include "../NullPointPairTerms.h"
+
+#include <array>
+
+namespace cga
+{
+namespace detail
+{
+namespace // internal linkage: no calls through the shared library's symbol table (PLT)
+{
+/// A point whose coordinates are numbers of type T.
+template <typename T>
+using PointOf = std::array<T, 3>;
+
+/// An exponent and a curvature generator on T: Bivector and CurvatureGenerator for double.
+template <typename T>
+struct CurvatureNumbers
+{
+  using Exponent = std::array<T, Bivector::Count>;
+  struct Generator
+  {
+    Exponent exponent{};
+    T weight{};
+  };
+};
+template <>
+struct CurvatureNumbers<double>
+{
+  using Exponent = Bivector;
+  using Generator = CurvatureGenerator;
+};
+template <typename T>
+using ExponentOf = typename CurvatureNumbers<T>::Exponent;
+template <typename T>
+using GeneratorOf = typename CurvatureNumbers<T>::Generator;
+
+/// The number x as a T without tangents (a dual number has its value in v, its tangents in d).
+template <typename T>
+struct Constant
+{
+  static T of(double x)
+  {
+    T r{};
+    r.v = Constant<decltype(r.v)>::of(x);
+    return r;
+  }
+};
+template <>
+struct Constant<double>
+{
+  static double of(double x) { return x; }
+};
+
+/// The value of x: x itself, or the innermost value of a dual number; and setting it.
+inline double valuePart(double x)
+{
+  return x;
+}
+template <typename T>
+double valuePart(const T& x)
+{
+  return valuePart(x.v);
+}
+inline void setValuePart(double& x, double value)
+{
+  x = value;
+}
+template <typename T>
+void setValuePart(T& x, double value)
+{
+  setValuePart(x.v, value);
+}
+
+/// Whether x and, for a dual number, every tangent of it are zero: a weight whose term adds
+/// nothing to the value or to a derivative.
+inline bool allZero(double x)
+{
+  return x == 0.0;
+}
+template <typename T>
+bool allZero(const T& x)
+{
+  if (!allZero(x.v))
+  {
+    return false;
+  }
+  for (const auto& d : x.d)
+  {
+    if (!allZero(d))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// PatchFrame::at(a, b) = origin + a u + b v, on the number types of a and b.
+template <typename A, typename B>
+BOOSTED_FORCE_INLINE auto patchPoint(const PatchFrame& frame, const A& a, const B& b)
+{
+  using T = decltype(frame.origin.x + a * frame.u.x + b * frame.v.x);
+  return PointOf<T>{ frame.origin.x + a * frame.u.x + b * frame.v.x,
+    frame.origin.y + a * frame.u.y + b * frame.v.y, frame.origin.z + a * frame.u.z + b * frame.v.z };
+}
+
+template <typename T>
+BOOSTED_FORCE_INLINE PointOf<T> pointOf(Vec3 p)
+{
+  return { p.x, p.y, p.z };
+}
+
+template <typename T>
+BOOSTED_FORCE_INLINE PointOf<T> difference(const PointOf<T>& p, Vec3 x)
+{
+  return { p[0] - x.x, p[1] - x.y, p[2] - x.z };
+}
+
+/// dot(q, v) and norm2(q) of Vec3.h, in their order of operations.
+template <typename T>
+BOOSTED_FORCE_INLINE T dotProduct(const PointOf<T>& q, Vec3 v)
+{
+  return q[0] * v.x + q[1] * v.y + q[2] * v.z;
+}
+template <typename T>
+BOOSTED_FORCE_INLINE T squaredLength(const PointOf<T>& q)
+{
+  return q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
+}
+
+/// The exponent e times s (Bivector's e * s).
+template <typename T, typename S>
+BOOSTED_FORCE_INLINE auto scaled(const ExponentOf<T>& e, const S& s)
+{
+  ExponentOf<decltype(e[0] * s)> r{};
+  for (int c = 0; c < Bivector::Count; ++c)
+  {
+    r[c] = e[c] * s;
+  }
+  return r;
+}
+
+/// tau(x, v) with its location on T (nullPointPairCompact).
+template <typename T>
+BOOSTED_FORCE_INLINE ExponentOf<T> nullPointPair(const PointOf<T>& x, Vec3 v)
+{
+  ExponentOf<T> tau{};
+  addNullPointPair(tau, 1.0, x.data(), v);
+  return tau;
+}
+
+/// The exponent -w pair of a generator of weight w, exactly zero where w is zero: tau of a
+/// far-away location may not be finite (0 * inf). Where only w's value is zero (two terms that
+/// cancel at p but not nearby), the value is +0 as for double and the tangents are -w pair's.
+template <typename T>
+BOOSTED_FORCE_INLINE ExponentOf<T> exponentOfWeight(const Bivector& pair, const T& w)
+{
+  ExponentOf<T> term{};
+  if (!allZero(w))
+  {
+    const bool zeroValue = valuePart(w) == 0.0;
+    term = scaled<double>(pair, -w);
+    for (int c = 0; zeroValue && c < Bivector::Count; ++c)
+    {
+      setValuePart(term[c], 0.0);
+    }
+  }
+  return term;
+}
+
+/// osculatingTerm's kappa / (sphere^2 + plane^2 + epsilon) of q = p - x, given |q|^2, q.n and the
+/// normal of the osculating circle's plane (along x n); zero for a flat direction.
+template <typename T>
+BOOSTED_FORCE_INLINE T osculatingWeight(
+  const PointOf<T>& q, const T& q2, const T& qn, Vec3 planeNormal, double kappa, double epsilon)
+{
+  if (kappa == 0.0)
+  {
+    return T{};
+  }
+  // Written in q, where the r^2 of |p - center|^2 - r^2 cancels exactly: for |kappa| below ~1e-154
+  // r^2 overflows and the direct form gives inf - inf = NaN instead of a weight near 0.
+  const T sphere = 0.5 * q2 + qn / kappa;
+  const T plane = dotProduct(q, planeNormal) / kappa;
+  return kappa / (sphere * sphere + plane * plane + epsilon);
+}
+
+/// Eq 15 (bentLine).
+template <typename T>
+BOOSTED_FORCE_INLINE GeneratorOf<T> bentLineOf(const PatchFrame& frame, double kappa, const T& b)
+{
+  const double weight = 0.5 * kappa;
+  GeneratorOf<T> g;
+  g.weight = Constant<T>::of(weight);
+  g.exponent = scaled<T>(nullPointPair(patchPoint(frame, 0.0, b), frame.normal), -weight);
+  return g;
+}
+
+/// Eq 16 (translatedTangents).
+template <typename T>
+BOOSTED_FORCE_INLINE GeneratorOf<T> translatedTangentsOf(
+  const PatchFrame& frame, double kappaU, double kappaV, const T& a, const T& b)
+{
+  GeneratorOf<T> g;
+  addNullPointPair(g.exponent, -0.5 * kappaU, patchPoint(frame, 0.0, b).data(), frame.normal);
+  addNullPointPair(g.exponent, -0.5 * kappaV, patchPoint(frame, a, 0.0).data(), frame.normal);
+  g.weight = Constant<T>::of(0.5 * (kappaU + kappaV));
+  return g;
+}
+
+/// Eq 17-18 (osculatingCircles).
+template <typename T>
+BOOSTED_FORCE_INLINE GeneratorOf<T> osculatingCirclesOf(const CurvatureControlPoint& c, const PointOf<T>& p, double epsilon)
+{
+  const PointOf<T> q = difference(p, c.location);
+  const T q2 = squaredLength(q), qn = dotProduct(q, c.normal);
+  GeneratorOf<T> g;
+  g.weight = osculatingWeight(q, q2, qn, cross(c.uDirection, c.normal), c.kappaU, epsilon) +
+    osculatingWeight(q, q2, qn, cross(cross(c.normal, c.uDirection), c.normal), c.kappaV, epsilon);
+  g.exponent = exponentOfWeight(nullPointPair(pointOf<double>(c.location), c.normal), g.weight);
+  return g;
+}
+
+/// Eq 21-22 (ControlPointSum::at): osculatingCirclesOf's terms with the prepared pieces, each
+/// divided by k |p - x_i|^2 + eps. PointPairField does not fit here: its generator weights are
+/// fixed, while W_i depends on p through the osculating circle distances as well as through
+/// |p - x_i|.
+template <typename T>
+BOOSTED_FORCE_INLINE GeneratorOf<T> controlPointSumOf(const ControlPointSum& sum, const PointOf<T>& p)
+{
+  GeneratorOf<T> g;
+  for (const ControlPointSum::Prepared& prepared : sum.prepared())
+  {
+    const CurvatureControlPoint& c = prepared.point;
+    const PointOf<T> q = difference(p, c.location);
+    const T q2 = squaredLength(q), qn = dotProduct(q, c.normal);
+    const T weight = osculatingWeight(q, q2, qn, prepared.planeNormalU, c.kappaU, sum.epsilon()) +
+      osculatingWeight(q, q2, qn, prepared.planeNormalV, c.kappaV, sum.epsilon());
+    const ExponentOf<T> exponent = exponentOfWeight(prepared.pair, weight);
+    // eq 22: d_p^2 = -2 up(p).up(x) = |p - x|^2
+    const T scale = 1.0 / (sum.falloff() * q2 + sum.epsilon());
+    g.weight = g.weight + weight * scale;
+    for (int k = 0; k < Bivector::Count; ++k)
+    {
+      g.exponent[k] = g.exponent[k] + exponent[k] * scale;
+    }
+  }
+  return g;
+}
+
+/// Eq 24 (linearInterpolation).
+template <typename T>
+BOOSTED_FORCE_INLINE GeneratorOf<T> linearInterpolationOf(const PointOf<T>& x1, const CornerGenerator& g1,
+  const PointOf<T>& x2, const CornerGenerator& g2, const T& t)
+{
+  GeneratorOf<T> g;
+  addNullPointPair(g.exponent, -0.5 * (1.0 - t) * g1.weight, x1.data(), g1.direction);
+  addNullPointPair(g.exponent, -0.5 * t * g2.weight, x2.data(), g2.direction);
+  g.weight =
+    0.5 * ((1.0 - t) * g1.weight * norm(g1.direction) + t * g2.weight * norm(g2.direction));
+  return g;
+}
+
+/// Eq 25-26 (bilinearInterpolation).
+template <typename T>
+BOOSTED_FORCE_INLINE GeneratorOf<T> bilinearInterpolationOf(
+  const Vec3 x[4], const CornerGenerator g[4], const T& s, const T& t)
+{
+  const T factors[4] = { (1.0 - s) * (1.0 - t), (1.0 - s) * t, s * (1.0 - t), s * t };
+  GeneratorOf<T> result;
+  for (int i = 0; i < 4; ++i)
+  {
+    result.weight = result.weight + 0.5 * factors[i] * g[i].weight * norm(g[i].direction);
+  }
+  for (int i = 0; i < 4; ++i)
+  {
+    const double location[3] = { x[i].x, x[i].y, x[i].z };
+    addNullPointPair(result.exponent, -0.5 * factors[i] * g[i].weight, location, g[i].direction);
+  }
+  return result;
+}
+
+/// The patch's E(a, b) and local weight by its method, of the patch moved by -shift
+/// (CurvaturePatch::generatorAt for shift 0).
+template <typename T>
+BOOSTED_FORCE_INLINE GeneratorOf<T> patchGeneratorOf(const CurvaturePatch& patch, const T& a, const T& b, Vec3 shift)
+{
+  PatchFrame moved = patch.frame;
+  moved.origin = patch.frame.origin - shift;
+  switch (patch.method)
+  {
+    case CurvatureMethod::BentLine:
+      return bentLineOf(moved, patch.kappaU, b);
+    case CurvatureMethod::TranslatedTangents:
+      return translatedTangentsOf(moved, patch.kappaU, patch.kappaV, a, b);
+    case CurvatureMethod::OsculatingCircles:
+    {
+      const CurvatureControlPoint c{ moved.origin, moved.normal, moved.u, patch.kappaU,
+        patch.kappaV };
+      return osculatingCirclesOf(c, patchPoint(moved, a, b), patch.epsilon);
+    }
+    case CurvatureMethod::ControlPoints:
+      return controlPointSumOf(ControlPointSum(patch.controlPoints.data(),
+                                 patch.controlPoints.size(), patch.falloff, patch.epsilon, shift),
+        patchPoint(moved, a, b));
+    case CurvatureMethod::Linear:
+    {
+      // each row carries the two generators along (x_i + b v): every row is the same curve
+      const double hu = 0.5 * patch.sizeU;
+      const T t = 0.5 + a / patch.sizeU;
+      return linearInterpolationOf(patchPoint(moved, -hu, b), patch.corners[0],
+        patchPoint(moved, hu, b), patch.corners[1], t);
+    }
+    case CurvatureMethod::Bilinear:
+    {
+      const double hu = 0.5 * patch.sizeU, hv = 0.5 * patch.sizeV;
+      const Vec3 x[4] = { moved.at(-hu, -hv), moved.at(hu, -hv), moved.at(-hu, hv),
+        moved.at(hu, hv) };
+      const T t = 0.5 + a / patch.sizeU;
+      const T s = patch.sizeV > 0.0 ? 0.5 + b / patch.sizeV : T{};
+      return bilinearInterpolationOf(x, patch.corners.data(), s, t);
+    }
+  }
+  return {};
+}
+} // namespace
+} // namespace detail
+} // namespace cga
