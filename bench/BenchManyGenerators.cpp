@@ -5,8 +5,8 @@
 // per point does not depend on which points); the tree row maps the whole mesh in chunks of 65,536
 // points, as the filter does (its target cells need the mesh's density). Both report the rate per
 // point ("points timed": how many).
-// The tree rows build the tree at every M (setTolerance's crossover, treeMinimumGenerators(), is
-// where the two rows cross). The weights are scaled by 16/M, so that B stays of the size of the M = 16 field at every M.
+// The tree rows build the tree at every M and tolerance (setTolerance's crossovers,
+// treeMinimumGenerators() and treeMinimumTolerance(), are where the two rows cross). The weights are scaled by 16/M, so that B stays of the size of the M = 16 field at every M.
 // The tree rows also report, against the direct sum on the same points:
 //   "error/displacement": the largest image error over the largest displacement, the target;
 //   "error/scale": the largest image error over s V (V = treeDisplacementScale()), which the
@@ -83,7 +83,7 @@ void ManyTree(benchmark::State& state)
   const auto generators = scaledGenerators(count);
   const cga::PointPairField direct(generators, kFalloff, kEpsilon);
   cga::PointPairField tree(generators, kFalloff, kEpsilon);
-  tree.setTolerance(tolerance, 1); // the tree at every M, below the crossover too
+  tree.setTolerance(tolerance, 1, 0.0); // the tree at every M and tolerance, below the crossovers too
   // Timed: the whole mesh, in the filter's chunks (vtkBoostedBlockLoop::SamplesPerBlock points).
   const double* mesh = benchmarkPoints();
   std::vector<double> meshOut(3 * kMeshPoints);

@@ -8,6 +8,8 @@
 #include "cga/PointPairField.h"
 #include "cga/PointPairs.h"
 
+#include "../src/TreeRemainder.h"
+
 #include <limits>
 
 namespace
@@ -51,7 +53,7 @@ Worst worstRelativeError(const std::vector<FieldGenerator>& generators,
 {
   const PointPairField direct(generators.data(), generators.size(), falloff, epsilon);
   PointPairField tree(generators.data(), generators.size(), falloff, epsilon);
-  EXPECT_TRUE(tree.setTolerance(tolerance, kTreeFrom));
+  EXPECT_TRUE(tree.setTolerance(tolerance, kTreeFrom, 0.0));
   EXPECT_GT(tree.treeDegree(), 0) << "the tree must be in use (" << generators.size() << " generators)";
   const double budget = tree.tolerance() * tree.treeDisplacementScale();
   EXPECT_TRUE(std::isfinite(budget));
@@ -181,7 +183,7 @@ TEST(GeneratorTree, DensePointsMeetTheBoundAndDoNotDependOnTheCall)
     }
   }
   PointPairField tree(generators.data(), generators.size(), kFalloff, kEpsilon);
-  ASSERT_TRUE(tree.setTolerance(1e-3, kTreeFrom));
+  ASSERT_TRUE(tree.setTolerance(1e-3, kTreeFrom, 0.0));
   std::vector<double> in;
   for (const Vec3& p : points)
   {
@@ -273,11 +275,28 @@ TEST(GeneratorTree, ToleranceDomainAndSmallFields)
     const std::vector<FieldGenerator> few(generators.begin(), generators.begin() + static_cast<long>(count));
     PointPairField direct(few.data(), few.size(), kFalloff, kEpsilon);
     PointPairField withTolerance(few.data(), few.size(), kFalloff, kEpsilon);
-    EXPECT_TRUE(withTolerance.setTolerance(1e-3, kTreeFrom));
+    EXPECT_TRUE(withTolerance.setTolerance(1e-3, kTreeFrom, 0.0));
     EXPECT_EQ(withTolerance.treeBytes(), 0u);
     const Vec3 p{ 0.3, 0.1, -0.2 };
     EXPECT_EQ(direct.generatorAt(p).c, withTolerance.generatorAt(p).c);
   }
+  // Below the tolerance crossover (treeMinimumTolerance(), where the tree stops paying on the
+  // bench's field) the field sums directly too, bit for bit, with the tolerance kept; at it the
+  // tree is built and meets its bound.
+  const PointPairField direct(generators.data(), generators.size(), kFalloff, kEpsilon);
+  PointPairField fine(generators.data(), generators.size(), kFalloff, kEpsilon);
+  ASSERT_TRUE(fine.setTolerance(0.5 * PointPairField::treeMinimumTolerance(), kTreeFrom));
+  EXPECT_EQ(fine.tolerance(), 0.5 * PointPairField::treeMinimumTolerance());
+  EXPECT_EQ(fine.treeBytes(), 0u);
+  Random pick(3);
+  for (const Vec3& p : randomPoints(pick, 20, {}, 1.5))
+  {
+    EXPECT_EQ(direct.generatorAt(p).c, fine.generatorAt(p).c);
+  }
+  ASSERT_TRUE(fine.setTolerance(PointPairField::treeMinimumTolerance(), kTreeFrom));
+  EXPECT_GT(fine.treeBytes(), 0u);
+  const auto points = randomPoints(pick, 50, {}, 1.5);
+  EXPECT_LE(worstRelativeError(generators, points, PointPairField::treeMinimumTolerance()).boundedError, 1.0);
 }
 
 TEST(GeneratorTree, NonFiniteGeneratorsAreSkippedAndNonFinitePointsLeftInPlace)
@@ -287,7 +306,7 @@ TEST(GeneratorTree, NonFiniteGeneratorsAreSkippedAndNonFinitePointsLeftInPlace)
   generators[3].location.x = std::nan("");
   generators[7].weight = std::numeric_limits<double>::infinity();
   PointPairField field(generators.data(), generators.size(), kFalloff, kEpsilon);
-  ASSERT_TRUE(field.setTolerance(1e-4, kTreeFrom));
+  ASSERT_TRUE(field.setTolerance(1e-4, kTreeFrom, 0.0));
   EXPECT_EQ(field.skippedGenerators(), 2u);
   std::vector<double> points = { 0.1, 0.2, 0.3, std::nan(""), 0.0, 0.0, 1.0, -1.0, 0.5 };
   std::vector<double> images(points.size());
@@ -327,7 +346,7 @@ TEST(GeneratorTree, ImagesFollowTheBoundThroughTheMap)
   for (const double tolerance : { 1e-3, 1e-6 })
   {
     PointPairField tree(generators.data(), generators.size(), kFalloff, kEpsilon);
-    ASSERT_TRUE(tree.setTolerance(tolerance, kTreeFrom));
+    ASSERT_TRUE(tree.setTolerance(tolerance, kTreeFrom, 0.0));
     for (const double strength : { 0.5, 2.0 })
     {
       const double scale = strength * tree.treeDisplacementScale();
@@ -415,7 +434,7 @@ TEST(GeneratorTree, BadInputsKeepTheBound)
   const FieldGenerator lone = FieldGenerator::pointPair({ 0.2, 0.1, -0.3 }, { 0.0, 1.0, 0.5 }, 0.7);
   PointPairField one(&lone, 1, kFalloff, kEpsilon);
   PointPairField oneDirect(&lone, 1, kFalloff, kEpsilon);
-  ASSERT_TRUE(one.setTolerance(1e-6, 1));
+  ASSERT_TRUE(one.setTolerance(1e-6, 1, 0.0));
   EXPECT_GT(one.treeDegree(), 0);
   for (const Vec3& p : randomPoints(random, 50, {}, 2.0))
   {
@@ -431,7 +450,7 @@ TEST(GeneratorTree, BadInputsKeepTheBound)
     g.weight *= 1e306;
   }
   PointPairField hugeTree(huge.data(), huge.size(), kFalloff, kEpsilon);
-  ASSERT_TRUE(hugeTree.setTolerance(1e-3, kTreeFrom));
+  ASSERT_TRUE(hugeTree.setTolerance(1e-3, kTreeFrom, 0.0));
   for (const Vec3& p : randomPoints(random, 20, {}, 1.5))
   {
     for (const double c : hugeTree.generatorAt(p).c)
@@ -443,13 +462,64 @@ TEST(GeneratorTree, BadInputsKeepTheBound)
   const auto far = randomPointPairs(random, 500, { 40.0, -30.0, 20.0 }, 1.0);
   PointPairField farDirect(far.data(), far.size(), kFalloff, kEpsilon);
   PointPairField farTree(far.data(), far.size(), kFalloff, kEpsilon);
-  ASSERT_TRUE(farTree.setTolerance(1e-4, kTreeFrom));
+  ASSERT_TRUE(farTree.setTolerance(1e-4, kTreeFrom, 0.0));
   for (const Vec3& p : randomPoints(random, 50, {}, 2.0))
   {
     Vec3 a, e;
     ASSERT_TRUE(farTree.map(p, 0.5, ExponentialRule::Exact, a));
     ASSERT_TRUE(farDirect.map(p, 0.5, ExponentialRule::Exact, e));
     EXPECT_LE(norm(a - e), 2.0 * 1e-4 * 0.5 * farTree.treeDisplacementScale());
+  }
+}
+// The remainder bound of the expansions (src/TreeRemainder.h) against the series' tail itself:
+// 1/(1 - 2 x q + q^2) minus its partial sums over the Chebyshev polynomials U_j (recurrence in
+// long double), for |x| <= |u| and S = 1/sqrt(1 - |u|^2), at every degree the tree uses. The tail
+// must never exceed the bound, and the bound must be attained within a factor where it is sharp
+// (x = 1 at q -> 0: the tail is about (p + 2) q^(p+1), the Chebyshev form's leading term).
+TEST(GeneratorTree, RemainderBoundHoldsForTheSeriesTail)
+{
+  for (int degree = 0; degree <= 10; ++degree)
+  {
+    for (const double q : { 0.01, 0.1, 0.3, 0.5, 0.7, 0.9 })
+    {
+      for (const double u : { 0.0, 0.3, 0.7, 0.95, 0.999, 1.0 })
+      {
+        const double S = u < 1.0 ? 1.0 / std::sqrt(1.0 - u * u) : HUGE_VAL;
+        const double bound = cga::detail::treeRemainderBound(degree, q, S);
+        double worst = 0.0;
+        for (int k = -50; k <= 50; ++k)
+        {
+          const long double x = static_cast<long double>(u) * k / 50.0L;
+          const long double qq = q;
+          // The tail summed term by term (no cancellation against the closed form where it is
+          // tiny) until its terms' bound (j + 1) q^j is below 1e-30, and the closed form minus the
+          // partial sum as the check of the recurrence.
+          long double tail = 0.0L, partial = 0.0L;
+          long double previous = 0.0L, current = 1.0L, power = 1.0L; // U_0 = 1
+          for (int j = 0; j <= degree || (j + 1) * power > 1e-30L; ++j)
+          {
+            (j <= degree ? partial : tail) += power * current;
+            const long double next = 2.0L * x * current - previous;
+            previous = current;
+            current = next;
+            power *= qq;
+          }
+          EXPECT_NEAR(static_cast<double>(1.0L / (1.0L - 2.0L * x * qq + qq * qq) - partial),
+                      static_cast<double>(tail), 1e-15 / (1.0 - q));
+          worst = std::max(worst, static_cast<double>(std::fabs(tail)));
+        }
+        EXPECT_LE(worst, bound * (1.0 + 1e-12)) << "degree " << degree << " q " << q << " |u| " << u;
+        if (u == 1.0 && q == 0.01)
+        {
+          EXPECT_GE(worst, 0.9 * bound) << "degree " << degree;
+        }
+        if (u == 0.0)
+        {
+          // S = 1: the geometric form, at most q^(p+1)/(1 - q).
+          EXPECT_LE(bound, std::pow(q, degree + 1) / (1.0 - q) * (1.0 + 1e-12));
+        }
+      }
+    }
   }
 }
 } // namespace

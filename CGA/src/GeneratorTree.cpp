@@ -1,11 +1,13 @@
 #include "GeneratorTree.h"
 
+#include "PointPairKernelDispatch.h"
+#include "TreeRemainder.h"
+
 #include "cga/Compact.h"
 #include "cga/PointPairs.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 namespace cga
 {
@@ -194,15 +196,19 @@ GeneratorTree::GeneratorTree(const double* generators,
 }
 
 // Each node's motion bound (its leaves' generators moved to the node's center; a parent's from
-// its children's, |p - c_child| <= l + |c - c_child|), the displacement scale V, and each node's
-// share of the budget t V: t V mass / (the root's mass).
+// its children's, |p - c_child| <= l + |c - c_child|), its weights (GeneratorTree.h), and the
+// displacement scale V.
 void GeneratorTree::computeBudgets(double tolerance)
 {
   if (this->Nodes.empty())
   {
     return;
   }
-  std::vector<double> masses(this->Nodes.size(), 0.0);
+  // z_i = (a_i + b_i r^2)/(k r^2 + eps) with a_i + b_i r^2 >= m0 + m1 r + m2 r^2, g_i's own motion
+  // bound about x_i (m1 r <= m1 (l/2 + r^2/(2 l)) for any l > 0; l = sqrt(eps/k), the falloff's
+  // length, where it is finite and positive).
+  const double length = std::sqrt(this->Epsilon / this->Falloff);
+  const double l = std::isfinite(length) && length > 0.0 ? length : 1.0;
   for (std::size_t index = this->Nodes.size(); index-- > 0;) // children (later in preorder) first
   {
     Node& node = this->Nodes[index];
@@ -213,9 +219,15 @@ void GeneratorTree::computeBudgets(double tolerance)
         const double* g = this->Generators.data() + i * kStride;
         Bivector b;
         std::copy_n(g + 3, kComponents, b.c.data());
-        masses[index] += b.maxAbs();
         addMotion(translatedBivector(b, { -node.center[0], -node.center[1], -node.center[2] }),
                   node.motion);
+        double own[3] = { 0.0, 0.0, 0.0 };
+        addMotion(translatedBivector(b, { -g[0], -g[1], -g[2] }), own);
+        const double a = own[0] + 0.5 * own[1] * l;
+        const double bb = this->Falloff > 0.0 ? own[2] + 0.5 * own[1] / l : 0.0;
+        const bool increasing = bb * this->Epsilon > a * this->Falloff;
+        node.weights[increasing ? 0 : 2] += a;
+        node.weights[increasing ? 1 : 3] += bb;
       }
       continue;
     }
@@ -228,7 +240,10 @@ void GeneratorTree::computeBudgets(double tolerance)
       node.motion[0] += c.motion[0] + c.motion[1] * delta + c.motion[2] * delta * delta;
       node.motion[1] += c.motion[1] + 2.0 * c.motion[2] * delta;
       node.motion[2] += c.motion[2];
-      masses[index] += masses[static_cast<std::size_t>(child)];
+      for (int w = 0; w < 4; ++w)
+      {
+        node.weights[w] += c.weights[w];
+      }
     }
   }
   // V: the direct sum's first-order displacement at the sample points.
@@ -256,28 +271,70 @@ void GeneratorTree::computeBudgets(double tolerance)
     scale = std::max(scale, norm(velocity));
   }
   this->DisplacementScale = scale;
-  // Overflow (huge weights) or no displacement at the samples: every node is opened (NaN or 0).
-  const double factor = tolerance * scale / masses[0];
-  const bool usable = std::isfinite(factor) && factor > 0.0;
-  for (std::size_t index = 0; index < this->Nodes.size(); ++index)
-  {
-    this->Nodes[index].share = usable ? factor * masses[index] : 0.0;
-  }
+  // Overflow (huge weights) or no displacement at the samples: nodes are used only where exact.
+  const double budget = tolerance * scale;
+  this->Budget = std::isfinite(budget) && budget > 0.0 ? budget : 0.0;
 }
 
-int GeneratorTree::degreeFor(const Node& node, double q, double D, double reach) const
+double GeneratorTree::nodeWeights(const Node& node, double nearest, double farthest, bool lower) const
+{
+  // Each z_i is monotone in s = r^2: the increasing ones are least at the nearest distance, the
+  // others at the farthest.
+  const double sNear = nearest * nearest, sFar = farthest * farthest;
+  const double dNear = this->Falloff * sNear + this->Epsilon, dFar = this->Falloff * sFar + this->Epsilon;
+  const double sUp = lower ? sNear : sFar, dUp = lower ? dNear : dFar;
+  const double sDown = lower ? sFar : sNear, dDown = lower ? dFar : dNear;
+  return (node.weights[0] + node.weights[1] * sUp) / dUp + (node.weights[2] + node.weights[3] * sDown) / dDown;
+}
+
+double GeneratorTree::weightSum(const double* center, double radius) const
+{
+  double sum = 0.0;
+  int stack[256];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0)
+  {
+    const Node& node = this->Nodes[static_cast<std::size_t>(stack[--top])];
+    const double dx = center[0] - node.center[0], dy = center[1] - node.center[1],
+                 dz = center[2] - node.center[2];
+    const double distance = std::sqrt(dx * dx + dy * dy + dz * dz);
+    const double nearest = std::max(0.0, distance - radius - node.radius);
+    const double farthest = distance + radius + node.radius;
+    const double largest = this->nodeWeights(node, nearest, farthest, false);
+    if (node.children[0] >= 0 && node.count >= this->DirectBelow && top < 254 &&
+        largest > kWeightSpread * this->nodeWeights(node, nearest, farthest, true))
+    {
+      stack[top++] = node.children[1];
+      stack[top++] = node.children[0];
+      continue;
+    }
+    sum += largest;
+  }
+  return sum;
+}
+
+double GeneratorTree::shareOf(const Node& node, double distance, double radius, double weightSum) const
+{
+  const double least =
+    this->nodeWeights(node, std::max(0.0, distance - radius - node.radius), distance + radius + node.radius, true);
+  const double share = this->Budget * (least / weightSum);
+  return std::isfinite(share) ? share : 0.0;
+}
+
+int GeneratorTree::degreeFor(const Node& node, double q, double D, double reach, double share) const
 {
   if (!(q <= this->QLimit))
   {
     return -1;
   }
   const double motion = node.motion[0] + (node.motion[1] + node.motion[2] * reach) * reach;
-  // R_p(q) motion <= share D, with R_p(q) = q^(p+1) ((p+2) - (p+1) q)/(1-q)^2.
-  const double allowed = node.share * D * (1.0 - q) * (1.0 - q);
-  double power = q;
-  for (int p = 0; p <= this->Degree; ++p, power *= q)
+  // R_p(q, S) motion <= share D (TreeRemainder.h), S = sqrt(D/eps) = 1/sqrt(1 - |u|^2).
+  const double allowed = share * D;
+  const double S = this->Epsilon > 0.0 ? std::sqrt(D / this->Epsilon) : HUGE_VAL;
+  for (int p = 0; p <= this->Degree; ++p)
   {
-    if (power * ((p + 2.0) - (p + 1.0) * q) * motion <= allowed)
+    if (treeRemainderBound(p, q, S) * motion <= allowed)
     {
       return p;
     }
@@ -469,7 +526,7 @@ bool GeneratorTree::computeMoments(int index)
 // expansion when usable for every point within `radius` of `center` (q at the nearest possible
 // distance), else opened; leaves and nodes without moments directly.
 void GeneratorTree::addNear(const int* starts, std::size_t count, const double* center, double radius,
-                            const double* p, double* sums) const
+                            double weightSum, const double* p, double* sums) const
 {
   int stack[256];
   for (std::size_t s = 0; s < count; ++s)
@@ -494,7 +551,7 @@ void GeneratorTree::addNear(const int* starts, std::size_t count, const double* 
       // Every point is within `radius` of `center`: at least `nearest` and at most
       // distance + radius from the node's center.
       const int degree = this->degreeFor(node, q, this->Falloff * nearest * nearest + this->Epsilon,
-                                         distance + radius);
+                                         distance + radius, this->shareOf(node, distance, radius, weightSum));
       if (degree >= 0)
       {
         this->addMultipole(node, this->Moments.data() + node.moments, degree, p, sums);
@@ -590,41 +647,16 @@ void GeneratorTree::addMultipole(const Node& node, const double* moments, int de
   }
 }
 
-// The generators of `node` summed directly for the lanes' points, in a vector of the lanes (GCC's
-// vector extension: the compiler would otherwise vectorize across the generators' components):
-// the sums stay in registers across the node's generators.
-typedef double LaneVector __attribute__((vector_size(L * sizeof(double))));
-
-BOOSTED_LANE_CLONES
+// The generators of `node` summed directly for the lanes' points: the block kernel's generator
+// loop (kernel::AddFieldBlock, compiled per instruction set with its sums in registers).
 void GeneratorTree::addDirect(const Node& node, const double* p, double* sums) const
 {
-  LaneVector x, y, z, out[kComponents];
-  std::memcpy(&x, p, sizeof x);
-  std::memcpy(&y, p + L, sizeof y);
-  std::memcpy(&z, p + 2 * L, sizeof z);
-  for (LaneVector& o : out)
-  {
-    o = LaneVector{} * 0.0;
-  }
-  const double falloff = this->Falloff, epsilon = this->Epsilon;
-  const double* g = this->Generators.data() + node.first * kStride;
-  const double* end = g + node.count * kStride;
-  for (; g != end; g += kStride)
-  {
-    const LaneVector dx = x - g[0], dy = y - g[1], dz = z - g[2];
-    const LaneVector factor = 1.0 / (falloff * (dx * dx + dy * dy + dz * dz) + epsilon);
-    for (int c = 0; c < kComponents; ++c)
-    {
-      out[c] += g[3 + c] * factor;
-    }
-  }
-  for (int c = 0; c < kComponents; ++c)
-  {
-    for (int l = 0; l < L; ++l)
-    {
-      sums[c * L + l] += out[c][l];
-    }
-  }
+  kernel::FieldArgs args;
+  args.generators = this->Generators.data() + node.first * kStride;
+  args.generatorCount = node.count;
+  args.falloff = this->Falloff;
+  args.epsilon = this->Epsilon;
+  kernel::activeAddFieldBlock()(args, p, sums);
 }
 
 void GeneratorTree::evaluate(const double* xyz, double* bivectors) const
@@ -668,7 +700,7 @@ void GeneratorTree::evaluate(const double* xyz, double* bivectors) const
     blockRadius = std::max(blockRadius, std::sqrt(distance2));
   }
   const int root = 0;
-  this->addNear(&root, 1, center, blockRadius, p, bivectors);
+  this->addNear(&root, 1, center, blockRadius, this->weightSum(center, blockRadius), p, bivectors);
   for (int l = 0; l < L; ++l)
   {
     if (!finite[l])

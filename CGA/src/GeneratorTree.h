@@ -7,14 +7,19 @@
 // For a point p, d = p - c, D = k |d|^2 + eps, kappa = k/D, u = sqrt(kappa) d, q = rho sqrt(kappa):
 //   1/(k |d - y|^2 + eps) = (1/D) sum_j D_j,  |D_j| <= (j + 1) q^j (Chebyshev U_j with |arg| <= 1),
 // so the degree-p truncation errs by at most (1/D) R_p(q), R_p(q) = q^(p+1) ((p+2) - (p+1) q)/(1-q)^2,
-// per generator. The budget is the image's: to first order a change dB of B(p) moves the image
-// by s v_p(dB), v_p(h) = 2 x (the translation part of h moved to p), and
-// |v_p(g_i)| <= m0 + m1 |p - c| + m2 |p - c|^2 with g_i's parts in the node's frame (addMotion).
-// A node is used at the least degree p with R_p(q)/D (m0 + m1 l + m2 l^2) <= t V mass/totalMass
-// (l the farthest |p - c|, V the field's displacement scale per unit strength, mass the node's
-// sum of |g_i|_max): the used nodes' shares add up to at most t V at every point. Nodes that fail
-// are opened; leaves are summed directly. The points' side (GeneratorTreeCells.cpp) uses the same
-// test with the radius of a cube of points added to rho: the cube's local expansion.
+// per generator, and also by (1/D) S q^(p+1)/(1-q), S = sqrt(D/eps) >= 1/sqrt(1 - |u|^2) >= |U_j|:
+// the remainder bound is the smaller of the two. The budget is the image's: to first order a
+// change dB of B(p) moves the image by s v_p(dB), v_p(h) = 2 x (the translation part of h moved to
+// p), and |v_p(g_i)| <= m0 + m1 |p - c| + m2 |p - c|^2 with g_i's parts in the node's frame
+// (addMotion). The budget t V (V the field's displacement scale per unit strength) is shared at
+// each point by the generators' weights z_i(p) = (a_i + b_i r^2)/(k r^2 + eps), r = |p - x_i|
+// (a_i + b_i r^2 >= g_i's own motion bound: z_i is a bound of |v_p(g_i)|/D_i): a node used for
+// every point of a cube may err by t V X/Phi, X <= sum over its generators of z_i at every point of
+// the cube, Phi >= sum over all generators of z_i there (weightSum); the nodes used at a point
+// are disjoint, so their errors add up to at most t V. A node is used at the least degree p with
+// R_p(q)/D (m0 + m1 l + m2 l^2) <= t V X/Phi (l the farthest |p - c|). Nodes that fail are opened;
+// leaves are summed directly. The points' side (GeneratorTreeCells.cpp) uses the same test with
+// the radius of a cube of points added to rho: the cube's local expansion.
 #pragma once
 
 #include "LaneClones.h"
@@ -74,6 +79,9 @@ public:
   /// The largest degree the tree chooses from.
   static constexpr int kMaxDegree = 10;
   static constexpr int kMaxMomentsOfDegree = (kMaxDegree + 1) * (kMaxDegree + 2) * (kMaxDegree + 3) / 6;
+  /// A node's weights are summed whole into Phi where their largest value is at most this times
+  /// their least one, or the node has fewer than DirectBelow generators.
+  static constexpr double kWeightSpread = 1.5;
   /// Generators per leaf at most.
   static constexpr std::size_t kLeafSize = 32;
   /// A leaf cell's width over that of the widest cell usable at any distance.
@@ -94,10 +102,11 @@ private:
     int children[2] = { -1, -1 };
     long moments = -1; // offset in Moments, or -1: the node is summed directly
     // sum_i |v_p(g_i)| <= motion[0] + motion[1] l + motion[2] l^2 for |p - center| <= l
-    // (addMotion in GeneratorTree.cpp), and the node's share of the budget, t V mass/totalMass
-    // with mass = sum_i |g_i|_max (0: the node is used only where it is exact, q = 0).
+    // (addMotion in GeneratorTree.cpp).
     double motion[3] = { 0.0, 0.0, 0.0 };
-    double share = 0.0;
+    // The generators' weights z_i = (a_i + b_i s)/(k s + eps), s = r^2, summed: {a, b} of those
+    // increasing in s (b_i eps > a_i k), then {a, b} of the others (nodeWeights).
+    double weights[4] = { 0.0, 0.0, 0.0, 0.0 };
   };
   // One term of e_b(u) = sum coefficient u^a (Taylor coefficient of the kernel for moment b).
   struct Term
@@ -121,7 +130,7 @@ private:
   void addLocal(const double* local, const double* center, double radius, const double* p,
                 double* sums) const;
   void addNear(const int* starts, std::size_t count, const double* center, double radius,
-               const double* p, double* sums) const;
+               double weightSum, const double* p, double* sums) const;
   void chooseCells();
   int build(std::size_t first, std::size_t count, std::vector<std::size_t>& order, int depth);
   bool computeMoments(int node);
@@ -135,10 +144,20 @@ private:
   int Degree = 0;
   double QLimit = 0.0;
   double DisplacementScale = 0.0;
+  double Budget = 0.0; // t V; 0 where it is not finite: nodes are used only where exact (q = 0)
   // The degree a node is used at, -1 where it is not usable: the least p <= Degree with
-  // R_p(q) (m0 + m1 l + m2 l^2) <= share D (nodes at q <= QLimit only). A NaN budget (overflow
-  // far away or with huge weights) opens the node.
-  int degreeFor(const Node& node, double q, double D, double reach) const;
+  // R_p(q, S) (m0 + m1 l + m2 l^2) <= share D (nodes at q <= QLimit only; S = sqrt(D/eps)). A NaN
+  // share (overflow far away or with huge weights) opens the node.
+  int degreeFor(const Node& node, double q, double D, double reach, double share) const;
+  // The node's weight sum for generator distances r in [nearest, farthest]: its least value
+  // (lower = true, X) or its largest (Phi's term).
+  double nodeWeights(const Node& node, double nearest, double farthest, bool lower) const;
+  // Phi for the points within `radius` of `center`: an upper bound of sum_i z_i(p) there, from
+  // the nodes' largest weights, opened while the largest is above kWeightSpread times the least.
+  double weightSum(const double* center, double radius) const;
+  // The share of the budget of a node whose center is `distance` from `center`, used for the
+  // points within `radius` of it: t V X/Phi (0 where not finite).
+  double shareOf(const Node& node, double distance, double radius, double weightSum) const;
   void computeBudgets(double tolerance);
   std::vector<double> Factorial, InverseFactorial; // beta! = beta_0! beta_1! beta_2! per monomial
   std::vector<std::size_t> ShiftRuns; // ShiftTerms of alpha: [ShiftRuns[alpha], ShiftRuns[alpha + 1])

@@ -206,6 +206,7 @@ void GeneratorTree::evaluateCell(CellWork& work, int level, std::size_t first, s
   const std::size_t localSize = static_cast<std::size_t>(this->MomentCount * kComponents);
   double* local = work.locals.data() + static_cast<std::size_t>(level) * localSize;
   bool hasLocal = parentLocal != nullptr;
+  const double weightSum = this->weightSum(center, radius);
   if (hasLocal)
   {
     this->shiftLocal(parentLocal, parentCenter, center, radius, local);
@@ -233,7 +234,9 @@ void GeneratorTree::evaluateCell(CellWork& work, int level, std::size_t first, s
     if (node.moments >= 0)
     {
       const double D = this->Falloff * distance * distance + this->Epsilon;
-      const int degree = this->degreeFor(node, (node.radius + radius) * std::sqrt(this->Falloff / D), D, reach);
+      const double share = this->shareOf(node, distance, radius, weightSum);
+      const int degree =
+        this->degreeFor(node, (node.radius + radius) * std::sqrt(this->Falloff / D), D, reach, share);
       if (degree >= 0)
       {
         this->addSourceToLocal(node, center, radius, degree, local);
@@ -246,7 +249,8 @@ void GeneratorTree::evaluateCell(CellWork& work, int level, std::size_t first, s
     const double nearest = std::max(0.0, distance - radius);
     const double nearestD = this->Falloff * nearest * nearest + this->Epsilon;
     const bool usableBelow = node.moments >= 0 &&
-      this->degreeFor(node, node.radius * std::sqrt(this->Falloff / nearestD), nearestD, reach) >= 0;
+      this->degreeFor(node, node.radius * std::sqrt(this->Falloff / nearestD), nearestD, reach,
+                      this->shareOf(node, distance, radius, weightSum)) >= 0;
     if (leaf || node.children[0] < 0 || node.moments < 0 || usableBelow || node.radius <= radius)
     {
       left.push_back(index);
@@ -291,7 +295,7 @@ void GeneratorTree::evaluateCell(CellWork& work, int level, std::size_t first, s
     {
       this->addLocal(local, center, radius, p, sums);
     }
-    this->addNear(left.data(), left.size(), center, radius, p, sums);
+    this->addNear(left.data(), left.size(), center, radius, weightSum, p, sums);
     for (std::size_t l = 0; l < n; ++l)
     {
       double* out = work.bivectors + work.keys[begin + l].index * kComponents;

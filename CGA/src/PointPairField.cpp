@@ -230,7 +230,7 @@ kernel::FieldArgs PointPairField::args(double strength, ExponentialRule rule) co
   return args;
 }
 
-bool PointPairField::setTolerance(double tolerance, std::size_t minimumGenerators)
+bool PointPairField::setTolerance(double tolerance, std::size_t minimumGenerators, double minimumTolerance)
 {
   if (!(tolerance >= 0.0))
   {
@@ -238,7 +238,8 @@ bool PointPairField::setTolerance(double tolerance, std::size_t minimumGenerator
   }
   this->Tolerance = std::min(tolerance, maximumTolerance());
   this->Tree.reset();
-  if (this->Tolerance > 0.0 && this->Count >= std::max<std::size_t>(1, minimumGenerators))
+  if (this->Tolerance > 0.0 && this->Tolerance >= minimumTolerance &&
+      this->Count >= std::max<std::size_t>(1, minimumGenerators))
   {
     this->Tree = std::make_shared<const detail::GeneratorTree>(
       this->Generators.data(), this->Count, this->Falloff, this->Epsilon, this->Tolerance);

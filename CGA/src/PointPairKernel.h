@@ -62,6 +62,10 @@ using MapBlockJacobian = void (*)(const FieldArgs& args,
                                   double* jacobian,
                                   std::uint8_t* mapped);
 
+/// Adds B(p) of args' generators (falloff and epsilon; strength and rule are not read) to
+/// bivectors, component-major (bivectors[c * kLanes + l]): the kernel's generator loop for the
+/// generator tree's near field (GeneratorTree.cpp), which sums parts of the generators.
+using AddFieldBlock = void (*)(const FieldArgs& args, const double* xyz, double* bivectors);
 /// Directions per lane of MapBlockDirectional.
 constexpr int kDirections = 2;
 
@@ -83,6 +87,7 @@ void mapBlockBy(const FieldArgs&, double*, const double*, double*, std::uint8_t*
 void mapBlockJacobian(const FieldArgs&, const double*, double*, double*, std::uint8_t*);
 void mapBlockDirectional(
   const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
+void addFieldBlock(const FieldArgs&, const double*, double*);
 }
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
 namespace avx2
@@ -92,6 +97,7 @@ void mapBlockBy(const FieldArgs&, double*, const double*, double*, std::uint8_t*
 void mapBlockJacobian(const FieldArgs&, const double*, double*, double*, std::uint8_t*);
 void mapBlockDirectional(
   const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
+void addFieldBlock(const FieldArgs&, const double*, double*);
 }
 namespace avx512
 {
@@ -100,6 +106,7 @@ void mapBlockBy(const FieldArgs&, double*, const double*, double*, std::uint8_t*
 void mapBlockJacobian(const FieldArgs&, const double*, double*, double*, std::uint8_t*);
 void mapBlockDirectional(
   const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
+void addFieldBlock(const FieldArgs&, const double*, double*);
 }
 #endif
 } // namespace kernel

@@ -19,6 +19,7 @@ struct Candidate
   MapBlockBy blockBy;
   MapBlockJacobian blockJacobian;
   MapBlockDirectional blockDirectional;
+  AddFieldBlock addField;
   bool (*supported)();
 };
 
@@ -43,12 +44,12 @@ bool hasAvx512()
 // Narrowest first.
 const Candidate kCandidates[] = {
   { "baseline", &baseline::mapBlock, &baseline::mapBlockBy, &baseline::mapBlockJacobian,
-    &baseline::mapBlockDirectional, &always },
+    &baseline::mapBlockDirectional, &baseline::addFieldBlock, &always },
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
   { "avx2", &avx2::mapBlock, &avx2::mapBlockBy, &avx2::mapBlockJacobian,
-    &avx2::mapBlockDirectional, &hasAvx2 },
+    &avx2::mapBlockDirectional, &avx2::addFieldBlock, &hasAvx2 },
   { "avx512", &avx512::mapBlock, &avx512::mapBlockBy, &avx512::mapBlockJacobian,
-    &avx512::mapBlockDirectional, &hasAvx512 },
+    &avx512::mapBlockDirectional, &avx512::addFieldBlock, &hasAvx512 },
 #endif
 };
 constexpr int kCandidateCount = sizeof(kCandidates) / sizeof(kCandidates[0]);
@@ -111,6 +112,11 @@ MapBlockJacobian activeMapBlockJacobian()
 MapBlockDirectional activeMapBlockDirectional()
 {
   return kCandidates[choice().load(std::memory_order_relaxed)].blockDirectional;
+}
+
+AddFieldBlock activeAddFieldBlock()
+{
+  return kCandidates[choice().load(std::memory_order_relaxed)].addField;
 }
 
 std::vector<std::string> availableInstructionSets()

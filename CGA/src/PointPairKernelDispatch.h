@@ -14,6 +14,7 @@ MapBlock activeMapBlock();
 MapBlockBy activeMapBlockBy();
 MapBlockJacobian activeMapBlockJacobian();
 MapBlockDirectional activeMapBlockDirectional();
+AddFieldBlock activeAddFieldBlock();
 std::vector<std::string> availableInstructionSets();
 std::string activeInstructionSet();
 bool useInstructionSet(const std::string& name);

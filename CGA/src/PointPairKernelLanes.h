@@ -345,6 +345,21 @@ void mapBlock(const FieldArgs& args, const double* xyz, double* image, std::uint
     mapped[l] = ok[l] ? 1 : 0;
   }
 }
+void addFieldBlock(const FieldArgs& args, const double* xyz, double* bivectors)
+{
+  LaneVector p[3], b[core::kBivector];
+  for (int i = 0; i < 3; ++i)
+  {
+    fromLanes(xyz + i * L, p[i]);
+  }
+  core::fieldBivector(args, p, 1.0, b);
+  for (int c = 0; c < core::kBivector; ++c)
+  {
+    LaneVector sum;
+    fromLanes(bivectors + c * L, sum);
+    toLanes(sum + b[c], bivectors + c * L);
+  }
+}
 void mapBlockBy(const FieldArgs& args, double* bivectors, const double* xyz, double* image,
   std::uint8_t* mapped)
 {

@@ -173,13 +173,17 @@ public:
   /// cubes, and mapPoints should get many points at once). 0 (the default) is the
   /// direct sum. A tolerance above maximumTolerance() is used as maximumTolerance(). Returns false,
   /// changing nothing, for a NaN or negative tolerance. Fields of fewer than `minimumGenerators`
-  /// generators (default treeMinimumGenerators(), the measured crossover below which the direct
-  /// sum is faster; tests pass smaller values) always sum directly. The tree takes O(M) memory
-  /// (treeBytes()).
-  bool setTolerance(double tolerance, std::size_t minimumGenerators = treeMinimumGenerators());
+  /// generators (default treeMinimumGenerators()), and tolerances below `minimumTolerance`
+  /// (default treeMinimumTolerance()), always sum directly: the measured crossovers below which
+  /// the direct sum is faster (tests and the bench pass smaller values). The tree takes O(M)
+  /// memory (treeBytes()).
+  bool setTolerance(double tolerance,
+                    std::size_t minimumGenerators = treeMinimumGenerators(),
+                    double minimumTolerance = treeMinimumTolerance());
   double tolerance() const { return this->Tolerance; }
   static constexpr double maximumTolerance() { return 1.0; }
   static constexpr std::size_t treeMinimumGenerators() { return 10000; }
+  static constexpr double treeMinimumTolerance() { return 1e-3; }
   /// Bytes the tree holds (0 without one), its expansion degree (0 without one), and V, the
   /// displacement scale per unit strength its budget is relative to (0 without one).
   std::size_t treeBytes() const;
