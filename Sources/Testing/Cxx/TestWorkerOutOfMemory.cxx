@@ -38,7 +38,7 @@ TEST(WorkerOutOfMemory, TheBlockLoopRethrowsOnTheCallingThreadAndRunMakesOneErro
   std::atomic<int> chunksOfLaterBlocks{ 0 }, failedOffTheCallingThread{ 0 };
   const std::thread::id caller = std::this_thread::get_id();
   // 4 blocks; every chunk of the second one fails, on whichever thread runs it.
-  const vtkIdType block = vtkBoostedBlockLoop::SamplesPerBlock;
+  const vtkIdType block = vtkBoostedBlockLoop::ItemsPerBlock(1);
   const bool ran = vtkBoostedMemoryBudget::Run(algorithm, [&] {
     vtkBoostedBlockLoop::For(algorithm, 0, 4 * block, 1, [&](vtkIdType first, vtkIdType) {
       if (first >= 2 * block)
