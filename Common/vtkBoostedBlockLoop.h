@@ -6,7 +6,7 @@
  * (ItemsPerBlock): on one thread of about SamplesPerBlock samples, run by the calling thread
  * itself; on more, of ThreadedBlocks times that per thread, each one vtkSMPTools::For over the
  * threads in chunks of a sixteenth of a thread's share, taken in turn. (VTK 9.2's STDThread
- * backend starts and joins a pool of threads for every For: about 0.13 ms of the calling thread's
+ * backend starts and joins a pool of threads for every For: about 0.15 ms of the calling thread's
  * time each, measured with bench/serial_share.py, 1 ms of a 22 ms update of 10^6 points with
  * blocks of SamplesPerBlock per thread.) Between blocks, on the calling thread only: the abort
  * check (before each block) and the progress (after each block, the fraction of items done). Each

@@ -1,6 +1,6 @@
 """The tables of one BoostedBench run: printed, and written as Markdown for the README.
 
-    bench_table.py bench.json [--markdown bench.md] [--machine NAME] [--load-before L]
+    bench_table.py bench.json [more.json ...] [--markdown bench.md] [--machine NAME] [--load-before L]
                    [--load-after L] [--date D] [--commit C] [--repetitions N] [--seconds S]
 
 tools/bench calls it after its run. Every figure is the best of the run's repetitions (the
@@ -25,10 +25,10 @@ TREE_SPEEDUP_TARGET = 20  # M = 100,000: the tree at least this many times the d
 TREE_ERROR_TARGET = 1e-6  # ... with the largest image error at most this over the largest move
 
 
-def load_runs(path):
+def load_runs(paths):
     """name -> best run: wall and CPU rates, time (ms) and counters, over the repetitions."""
     best = {}
-    for run in json.load(open(path))["benchmarks"]:
+    for run in (run for path in paths for run in json.load(open(path))["benchmarks"]):
         if run.get("run_type") != "iteration" or run.get("error_occurred"):
             continue
         name = run.get("run_name", run["name"])
@@ -238,7 +238,7 @@ def markdown(runs, options):
     tables = Tables(runs)
     parts = [
         f"Measured {options.date} at commit {options.commit} with `./tools/bench` "
-        f"(`REPETITIONS={options.repetitions}`, best of {options.repetitions}"
+        f"(repetitions: {options.repetitions}; the best of them"
         + (f", {options.seconds / 60:.0f} min" if options.seconds else "") + f") on "
         f"*{options.machine}* (lscpu model name), load average {options.load_before} before "
         f"and {options.load_after} after the run. Million points per second, wall clock and, in "
@@ -263,7 +263,7 @@ def markdown(runs, options):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("json")
+    parser.add_argument("json", nargs="+")
     parser.add_argument("--markdown")
     for option in ("machine", "load-before", "load-after", "date", "commit", "repetitions"):
         parser.add_argument(f"--{option}", default="?")
