@@ -141,8 +141,10 @@ class Tables:
     def threaded_rows(self, prefixes):
         """Rows with a 1- and a 2-thread variant: wall (CPU) each and the wall ratio."""
         rows = []
+        natural = lambda name: [int(t) if t.isdigit() else t for t in re.split(r"(\d+)", name)]
         names = sorted({re.sub(r"/threads:\d+$", "", n) for n in self.runs
-                        if re.search(r"/threads:\d+$", n) and n.split("/")[0] in prefixes})
+                        if re.search(r"/threads:\d+$", n) and n.split("/")[0] in prefixes},
+                       key=natural)
         for base in names:
             one, two = f"{base}/threads:1", f"{base}/threads:2"
             ratio = "–"
