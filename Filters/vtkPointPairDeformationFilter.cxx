@@ -124,9 +124,14 @@ struct DeformWorker
       this->mapChunkWithJacobians(in, first, count);
       return;
     }
-    const std::size_t unchanged = this->Field->mapPoints(in, this->OutPoints + 3 * first,
-      static_cast<std::size_t>(count), this->Strength, this->Rule);
-    this->finishChunk(in, first, count, unchanged);
+    // The displacements and counts in the kernel's pass over the points (not a second one).
+    const cga::PointPairField::DisplacementCounts counts =
+      this->Field->mapPointsWithDisplacements(in, this->OutPoints + 3 * first,
+        this->Displacement + 3 * first, static_cast<std::size_t>(count), this->Strength,
+        this->Rule);
+    this->Unchanged += static_cast<vtkIdType>(counts.unchanged);
+    this->NonFiniteInputs += static_cast<vtkIdType>(counts.notFinite);
+    this->BeyondOutputType += static_cast<vtkIdType>(counts.beyondRange);
   }
 
   // mapChunk with J: the batch map with Jacobians takes doubles, so float points are converted

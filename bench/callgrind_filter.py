@@ -21,37 +21,44 @@ from boostedsurfaces import vtkPointPairDeformationFilter
 from vtkmodules.vtkCommonCore import vtkFloatArray, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkStructuredGrid
 
-rule, generators, mode = sys.argv[1], int(sys.argv[2]), sys.argv[3]
-side = int(sys.argv[4]) if len(sys.argv) > 4 else 200
-points = vtkPoints()
-points.SetDataTypeToDouble()
-points.SetNumberOfPoints(side * side)
-normals = vtkFloatArray()
-normals.SetName("Normals")
-normals.SetNumberOfComponents(3)
-normals.SetNumberOfTuples(side * side)
-for j in range(side):
-    for i in range(side):
-        x = -2 + 4 * i / (side - 1)
-        y = -2 + 4 * j / (side - 1)
-        points.SetPoint(j * side + i, x, y, 0.3 * math.sin(2 * x) * math.cos(3 * y))
-        normals.SetTuple3(j * side + i, 0.0, 0.6, 0.8)
-grid = vtkStructuredGrid()
-grid.SetDimensions(side, side, 1)
-grid.SetPoints(points)
-if mode == "normals":
-    grid.GetPointData().SetNormals(normals)
-deformation = vtkPointPairDeformationFilter()
-deformation.SetInputData(grid)
-draws = random.Random(20140601)
-for _ in range(generators):
-    d = [draws.uniform(-1, 1) for _ in range(3)]
-    length = math.sqrt(sum(c * c for c in d))
-    deformation.AddGenerator(draws.uniform(-2, 2), draws.uniform(-2, 2), draws.uniform(-0.5, 0.5),
-                             d[0] / length, d[1] / length, d[2] / length, draws.uniform(0.1, 0.4))
-deformation.SetFalloff(1.0)
-deformation.SetEpsilon(0.05)
-deformation.SetStrength(0.5)
-deformation.SetExponentialRule(
-    vtkPointPairDeformationFilter.EXACT if rule == "Exact" else vtkPointPairDeformationFilter.PAPER)
-deformation.Update()
+
+def deformation(rule, generators, mode, side=200):
+    """The filter on the side x side sheet, set up as above and not yet updated."""
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    points.SetNumberOfPoints(side * side)
+    normals = vtkFloatArray()
+    normals.SetName("Normals")
+    normals.SetNumberOfComponents(3)
+    normals.SetNumberOfTuples(side * side)
+    for j in range(side):
+        for i in range(side):
+            x = -2 + 4 * i / (side - 1)
+            y = -2 + 4 * j / (side - 1)
+            points.SetPoint(j * side + i, x, y, 0.3 * math.sin(2 * x) * math.cos(3 * y))
+            normals.SetTuple3(j * side + i, 0.0, 0.6, 0.8)
+    grid = vtkStructuredGrid()
+    grid.SetDimensions(side, side, 1)
+    grid.SetPoints(points)
+    if mode == "normals":
+        grid.GetPointData().SetNormals(normals)
+    filter = vtkPointPairDeformationFilter()
+    filter.SetInputData(grid)
+    draws = random.Random(20140601)
+    for _ in range(generators):
+        d = [draws.uniform(-1, 1) for _ in range(3)]
+        length = math.sqrt(sum(c * c for c in d))
+        filter.AddGenerator(draws.uniform(-2, 2), draws.uniform(-2, 2), draws.uniform(-0.5, 0.5),
+                            d[0] / length, d[1] / length, d[2] / length, draws.uniform(0.1, 0.4))
+    filter.SetFalloff(1.0)
+    filter.SetEpsilon(0.05)
+    filter.SetStrength(0.5)
+    filter.SetExponentialRule(
+        vtkPointPairDeformationFilter.EXACT if rule == "Exact" else vtkPointPairDeformationFilter.PAPER)
+    return filter
+
+
+if __name__ == "__main__":
+    rule, generators, mode = sys.argv[1], int(sys.argv[2]), sys.argv[3]
+    side = int(sys.argv[4]) if len(sys.argv) > 4 else 200
+    deformation(rule, generators, mode, side).Update()

@@ -8,6 +8,7 @@
 #include "cga/PointPairField.h"
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -270,6 +271,69 @@ TEST(PointPairField, BatchMapEqualsThePointwiseMapInEveryPrecision)
       }
     }
   }
+}
+
+// mapPointsWithDisplacements writes mapPoints' images to the bit and, per point, the image less
+// the point computed in double and rounded to the output type (what the deformation filter's
+// Displacement array held when it was computed in a second pass); 0 for a point that is not
+// finite; the counts: points unchanged, not finite, and finite ones beyond the output's range.
+template <typename In, typename Out>
+void checkDisplacements(const PointPairField& field, const std::vector<In>& points, double strength,
+  ExponentialRule rule, std::size_t expectUnchanged, std::size_t expectNotFinite,
+  std::size_t expectBeyond)
+{
+  const std::size_t count = points.size() / 3;
+  std::vector<Out> images(points.size()), out(points.size()), displacements(points.size(), Out(7));
+  const std::size_t unchanged =
+    field.mapPoints(points.data(), images.data(), count, strength, rule);
+  const PointPairField::DisplacementCounts counts = field.mapPointsWithDisplacements(
+    points.data(), out.data(), displacements.data(), count, strength, rule);
+  EXPECT_EQ(counts.unchanged, unchanged);
+  EXPECT_EQ(counts.unchanged, expectUnchanged);
+  EXPECT_EQ(counts.notFinite, expectNotFinite);
+  EXPECT_EQ(counts.beyondRange, expectBeyond);
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    const double p = points[i];
+    // The same bits (NaN compares unequal: compare the bytes)
+    EXPECT_EQ(std::memcmp(&out[i], &images[i], sizeof(Out)), 0) << i;
+    const bool finitePoint = std::isfinite(double(points[i - i % 3])) &&
+      std::isfinite(double(points[i - i % 3 + 1])) && std::isfinite(double(points[i - i % 3 + 2]));
+    const Out expected = finitePoint ? static_cast<Out>(out[i] - p) : Out(0);
+    EXPECT_EQ(std::memcmp(&displacements[i], &expected, sizeof(Out)), 0)
+      << i << ": " << displacements[i] << " against " << expected;
+  }
+}
+
+TEST(PointPairField, DisplacementsAreTheImagesLessThePointsInEveryPrecision)
+{
+  Random random(76);
+  const PointPairField field(randomGenerators(random, 5, 1.0), 1.0, 0.05);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> points;
+  for (int i = 0; i < 3 * 21; ++i) // 21 points: two whole blocks and a part
+  {
+    points.push_back(random.uniform(-2.0, 2.0));
+  }
+  points[4] = nan; // point 1
+  points[3 * 9 + 2] = -inf; // point 9
+  const std::vector<float> pointsFloat(points.begin(), points.end());
+  for (ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
+  {
+    checkDisplacements<double, double>(field, points, 0.7, rule, 2, 2, 0);
+    checkDisplacements<double, float>(field, points, 0.7, rule, 2, 2, 0);
+    checkDisplacements<float, float>(field, pointsFloat, 0.7, rule, 2, 2, 0);
+    checkDisplacements<float, double>(field, pointsFloat, 0.7, rule, 2, 2, 0);
+    // Strength 0 copies the points (the path without the kernel): displacements 0, or the
+    // rounding of a double point to float.
+    checkDisplacements<double, double>(field, points, 0.0, rule, 2, 2, 0);
+    checkDisplacements<double, float>(field, points, 0.0, rule, 2, 2, 0);
+  }
+  // A double point beyond the largest float: finite, its float image is not.
+  std::vector<double> huge = { 1e300, 0.5, 0.25, 0.1, 0.2, 0.3 };
+  checkDisplacements<double, float>(field, huge, 0.0, ExponentialRule::Exact, 0, 0, 1);
+  checkDisplacements<double, double>(field, huge, 0.0, ExponentialRule::Exact, 0, 0, 0);
 }
 
 TEST(PointPairField, TranslatingPointsAndGeneratorsTranslatesTheImages)

@@ -44,6 +44,9 @@ Bivector halfDualLine(Vec3 x, Vec3 a)
   return b;
 }
 
+// Nothing after a point (mapPointsOf's finishPoint): mapPoints.
+const auto kNothingAfter = [](std::size_t, bool) {};
+
 // b += 1/2 d ni.
 void addHalfTranslation(Bivector& b, Vec3 d)
 {
@@ -299,7 +302,7 @@ bool PointPairField::map(Vec3 p, double strength, ExponentialRule rule, Vec3& ou
   {
     const double in[3] = { p.x, p.y, p.z };
     double image[3];
-    if (this->mapPointsOf(in, image, 1, strength, rule) != 0)
+    if (this->mapPointsOf(in, image, 1, strength, rule, kNothingAfter) != 0)
     {
       return false;
     }
@@ -325,14 +328,15 @@ bool PointPairField::map(Vec3 p, double strength, ExponentialRule rule, Vec3& ou
 namespace
 {
 // mapPoints' blocks (PointBlocks.h). With a tree, B(p) of each block comes from it and the kernel
-// maps with the given B.
-template <typename In, typename Out>
+// maps with the given B. finishPoint(index, mapped) follows each point's write.
+template <typename In, typename Out, typename FinishPoint>
 std::size_t mapPointsByKernel(const kernel::FieldArgs& args,
                               const detail::GeneratorTree* tree,
                               Vec3 c,
                               const In* in,
                               Out* out,
-                              std::size_t count)
+                              std::size_t count,
+                              FinishPoint&& finishPoint)
 {
   constexpr int L = kernel::kLanes;
   const kernel::MapBlock mapBlock = kernel::activeMapBlock();
@@ -369,45 +373,110 @@ std::size_t mapPointsByKernel(const kernel::FieldArgs& args,
     }
     mapBlockBy(args, bivectors, xyz, image, mapped);
   };
-  return mapPointsInBlocks(c, in, out, count, mapLanes, [](std::size_t, int, bool) {});
+  return mapPointsInBlocks(c, in, out, count, mapLanes,
+    [&finishPoint](std::size_t index, int, bool mapped) { finishPoint(index, mapped); });
+}
+
+bool finite3(double x, double y, double z)
+{
+  return std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
 }
 
 } // namespace
 
-template <typename In, typename Out>
-std::size_t PointPairField::mapPointsOf(
-  const In* in, Out* out, std::size_t count, double strength, ExponentialRule rule) const
+// finishPoint(index, mapped) after each point is written (mapped: the point is finite).
+template <typename In, typename Out, typename FinishPoint>
+std::size_t PointPairField::mapPointsOf(const In* in, Out* out, std::size_t count,
+  double strength, ExponentialRule rule, FinishPoint&& finishPoint) const
 {
   if (this->Count == 0 || strength == 0.0)
   {
-    return copyPoints(in, out, count, [](std::size_t, bool) {});
+    return copyPoints(in, out, count, finishPoint);
   }
   return mapPointsByKernel(
-    this->args(strength, rule), this->Tree.get(), this->Center, in, out, count);
+    this->args(strength, rule), this->Tree.get(), this->Center, in, out, count, finishPoint);
+}
+
+template <typename In, typename Out>
+PointPairField::DisplacementCounts PointPairField::mapPointsWithDisplacementsOf(const In* in,
+  Out* out, Out* displacements, std::size_t count, double strength, ExponentialRule rule) const
+{
+  DisplacementCounts counts;
+  std::size_t beyondRange = 0;
+  // Each point right after its image is written, while its block is in cache (not in a second
+  // pass over memory). `mapped` tells that the point is finite.
+  const auto finishPoint = [&](std::size_t index, bool mapped) {
+    const In* p = in + 3 * index;
+    const Out* o = out + 3 * index;
+    Out* d = displacements + 3 * index;
+    const double x = p[0], y = p[1], z = p[2];
+    if (!mapped && !finite3(x, y, z))
+    {
+      ++counts.notFinite;
+      d[0] = d[1] = d[2] = Out(0);
+      return;
+    }
+    d[0] = static_cast<Out>(o[0] - x);
+    d[1] = static_cast<Out>(o[1] - y);
+    d[2] = static_cast<Out>(o[2] - z);
+    // An image beyond the largest float, or a difference that overflows: v - v is 0 for a finite
+    // v and NaN otherwise, so one comparison checks all six values without a branch each.
+    const double check = (double(o[0]) - double(o[0])) + (double(o[1]) - double(o[1])) +
+      (double(o[2]) - double(o[2])) + (double(d[0]) - double(d[0])) +
+      (double(d[1]) - double(d[1])) + (double(d[2]) - double(d[2]));
+    beyondRange += check == 0.0 ? 0 : 1;
+  };
+  counts.unchanged = this->mapPointsOf(in, out, count, strength, rule, finishPoint);
+  counts.beyondRange = beyondRange;
+  return counts;
 }
 
 std::size_t PointPairField::mapPoints(
   const double* in, double* out, std::size_t count, double strength, ExponentialRule rule) const
 {
-  return this->mapPointsOf(in, out, count, strength, rule);
+  return this->mapPointsOf(in, out, count, strength, rule, kNothingAfter);
 }
 
 std::size_t PointPairField::mapPoints(
   const float* in, float* out, std::size_t count, double strength, ExponentialRule rule) const
 {
-  return this->mapPointsOf(in, out, count, strength, rule);
+  return this->mapPointsOf(in, out, count, strength, rule, kNothingAfter);
 }
 
 std::size_t PointPairField::mapPoints(
   const float* in, double* out, std::size_t count, double strength, ExponentialRule rule) const
 {
-  return this->mapPointsOf(in, out, count, strength, rule);
+  return this->mapPointsOf(in, out, count, strength, rule, kNothingAfter);
 }
 
 std::size_t PointPairField::mapPoints(
   const double* in, float* out, std::size_t count, double strength, ExponentialRule rule) const
 {
-  return this->mapPointsOf(in, out, count, strength, rule);
+  return this->mapPointsOf(in, out, count, strength, rule, kNothingAfter);
+}
+
+PointPairField::DisplacementCounts PointPairField::mapPointsWithDisplacements(const double* in,
+  double* out, double* displacements, std::size_t count, double strength, ExponentialRule rule) const
+{
+  return this->mapPointsWithDisplacementsOf(in, out, displacements, count, strength, rule);
+}
+
+PointPairField::DisplacementCounts PointPairField::mapPointsWithDisplacements(const float* in,
+  float* out, float* displacements, std::size_t count, double strength, ExponentialRule rule) const
+{
+  return this->mapPointsWithDisplacementsOf(in, out, displacements, count, strength, rule);
+}
+
+PointPairField::DisplacementCounts PointPairField::mapPointsWithDisplacements(const float* in,
+  double* out, double* displacements, std::size_t count, double strength, ExponentialRule rule) const
+{
+  return this->mapPointsWithDisplacementsOf(in, out, displacements, count, strength, rule);
+}
+
+PointPairField::DisplacementCounts PointPairField::mapPointsWithDisplacements(const double* in,
+  float* out, float* displacements, std::size_t count, double strength, ExponentialRule rule) const
+{
+  return this->mapPointsWithDisplacementsOf(in, out, displacements, count, strength, rule);
 }
 
 std::vector<std::string> mapPointsInstructionSets()

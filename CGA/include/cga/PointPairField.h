@@ -218,6 +218,27 @@ public:
   std::size_t mapPoints(
     const double* in, float* out, std::size_t count, double strength, ExponentialRule rule) const;
 
+  /// What mapPointsWithDisplacements found among its points.
+  struct DisplacementCounts
+  {
+    std::size_t unchanged = 0;  ///< points copied unchanged: mapPoints' return value
+    std::size_t notFinite = 0;  ///< of those, the points that are NaN or infinite
+    std::size_t beyondRange = 0; ///< finite points whose image or displacement is not finite in Out
+  };
+
+  /// mapPoints, and in the same pass over the points each displacement out - in, computed in
+  /// double from the written image and rounded to Out (0 for a point that is not finite): the
+  /// deformation filter's Displacement array without a second pass over memory, while each
+  /// block of points is still in cache. `out` and `displacements` must not overlap `in`.
+  DisplacementCounts mapPointsWithDisplacements(const double* in, double* out,
+    double* displacements, std::size_t count, double strength, ExponentialRule rule) const;
+  DisplacementCounts mapPointsWithDisplacements(const float* in, float* out,
+    float* displacements, std::size_t count, double strength, ExponentialRule rule) const;
+  DisplacementCounts mapPointsWithDisplacements(const float* in, double* out,
+    double* displacements, std::size_t count, double strength, ExponentialRule rule) const;
+  DisplacementCounts mapPointsWithDisplacements(const double* in, float* out,
+    float* displacements, std::size_t count, double strength, ExponentialRule rule) const;
+
   // The derivatives of the map (docs/conventions.md section 3 item 15): forward-mode automatic
   // differentiation of the same computation as map() (every branch and frame the value takes),
   // exact to rounding, with the direct sum (a tolerance's tree is not used). Each returns false,
@@ -268,9 +289,12 @@ private:
     Vec3 p, double strength, ExponentialRule rule, Vec3& out, double* byExponent) const;
   void add(const FieldGenerator* generators, const GeneratorParameters* rows, std::size_t count);
   kernel::FieldArgs args(double strength, ExponentialRule rule) const;
+  template <typename In, typename Out, typename FinishPoint>
+  std::size_t mapPointsOf(const In* in, Out* out, std::size_t count, double strength,
+    ExponentialRule rule, FinishPoint&& finishPoint) const;
   template <typename In, typename Out>
-  std::size_t mapPointsOf(
-    const In* in, Out* out, std::size_t count, double strength, ExponentialRule rule) const;
+  DisplacementCounts mapPointsWithDisplacementsOf(const In* in, Out* out, Out* displacements,
+    std::size_t count, double strength, ExponentialRule rule) const;
 
   // The one layout of the generators, read by map() and the block kernel alike: per generator 13
   // doubles, the location x_i - c, then the ten components of w_i G_i moved by -c.

@@ -23,6 +23,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRectilinearGrid.h"
+#include "vtkSMPTools.h"
 #include "vtkSOADataArrayTemplate.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
@@ -37,6 +38,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <map>
@@ -1211,5 +1213,61 @@ TEST(PointPairDeformationFilter, SinglePrecisionBeyondTheLargestFloatIsAnError)
     filter->Update();
     EXPECT_EQ(events.errors, 1) << events.lastError;
     EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), mesh->GetNumberOfPoints()) << strength;
+  }
+}
+
+// The output is the same, bit for bit, on vtkSMPTools' Sequential backend and on STDThread with
+// one and two threads (vtkBoostedBlockLoop's blocks and chunks depend on the thread count), with
+// and without the normals' derivative path, on a mesh of more than one block of two threads
+// (vtkBoostedBlockLoop: 4 x 65,536 points per thread, 524,288) and of nine of one thread.
+TEST(PointPairDeformationFilter, TheOutputIsTheSameOnEveryBackendAndThreadCount)
+{
+  Random random(91);
+  const vtkIdType blocks = 524288;
+  vtkNew<vtkPolyData> mesh = randomMesh(random, static_cast<int>(blocks / 3 + 10000), 2.0);
+  const std::vector<Generator> generators = randomGenerators(random, 3, 0.4);
+  for (const bool normals : { false, true })
+  {
+    vtkNew<vtkPointPairDeformationFilter> filter;
+    filter->SetInputData(mesh);
+    addGenerators(filter, generators);
+    filter->SetExponentialRule(vtkPointPairDeformationFilter::EXACT);
+    filter->SetTransformNormals(normals);
+    std::vector<vtkSmartPointer<vtkPointSet>> outputs;
+    for (const auto& [backend, threads] :
+      { std::make_pair("Sequential", 1), std::make_pair("STDThread", 1),
+        std::make_pair("STDThread", 2) })
+    {
+      vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, backend, false }, [&] {
+        filter->Modified();
+        filter->Update();
+      });
+      outputs.push_back(vtkSmartPointer<vtkPointSet>::Take(
+        vtkPointSet::SafeDownCast(filter->GetOutputDataObject(0))->NewInstance()));
+      outputs.back()->DeepCopy(filter->GetOutputDataObject(0));
+    }
+    ASSERT_GT(outputs[0]->GetNumberOfPoints(), blocks);
+    for (std::size_t run = 1; run < outputs.size(); ++run)
+    {
+      for (const std::string name : { "points", "Displacement", "Normals" })
+      {
+        if (name == "Normals" && !normals)
+        {
+          continue; // dropped when not transformed
+        }
+        vtkDataArray* expected = name == "points" ? outputs[0]->GetPoints()->GetData()
+                                                  : outputs[0]->GetPointData()->GetArray(name.c_str());
+        vtkDataArray* actual = name == "points" ? outputs[run]->GetPoints()->GetData()
+                                                : outputs[run]->GetPointData()->GetArray(name.c_str());
+        ASSERT_NE(expected, nullptr) << name;
+        ASSERT_NE(actual, nullptr) << name;
+        ASSERT_EQ(expected->GetDataType(), actual->GetDataType()) << name;
+        ASSERT_EQ(expected->GetDataSize(), actual->GetDataSize()) << name;
+        EXPECT_EQ(std::memcmp(expected->GetVoidPointer(0), actual->GetVoidPointer(0),
+                    expected->GetDataSize() * expected->GetDataTypeSize()),
+          0)
+          << name << " of run " << run << (normals ? " with normals" : "");
+      }
+    }
   }
 }

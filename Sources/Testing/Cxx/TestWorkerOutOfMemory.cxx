@@ -37,12 +37,11 @@ TEST(WorkerOutOfMemory, TheBlockLoopRethrowsOnTheCallingThreadAndRunMakesOneErro
   EventCounter events(algorithm);
   std::atomic<int> chunksOfLaterBlocks{ 0 }, failedOffTheCallingThread{ 0 };
   const std::thread::id caller = std::this_thread::get_id();
-  // 3 blocks: [0, 1), [1, 3) and [3, 4) times SamplesPerBlock (each block twice the one before);
-  // every chunk of the second one fails, on whichever thread runs it.
-  const vtkIdType block = vtkBoostedBlockLoop::SamplesPerBlock;
+  // 4 blocks; every chunk of the second one fails, on whichever thread runs it.
+  const vtkIdType block = vtkBoostedBlockLoop::ItemsPerBlock(1);
   const bool ran = vtkBoostedMemoryBudget::Run(algorithm, [&] {
     vtkBoostedBlockLoop::For(algorithm, 0, 4 * block, 1, [&](vtkIdType first, vtkIdType) {
-      if (first >= 3 * block)
+      if (first >= 2 * block)
       {
         ++chunksOfLaterBlocks;
       }
