@@ -92,5 +92,9 @@ TEST(DoubleDouble, NonFiniteValuesStayNonFinite)
   DoubleDouble s, c;
   cga::core::laneSinCos(DoubleDouble(__builtin_nan("")), s, c);
   EXPECT_TRUE(std::isnan(s.hi) && std::isnan(c.hi));
+  // a huge angle (beyond every integer type's range of k): finite values in [-1, 1], no overflow
+  cga::core::laneSinCos(DoubleDouble(1e300), s, c);
+  EXPECT_LE(std::fabs(s.hi), 1.0);
+  EXPECT_LE(std::fabs(c.hi), 1.0);
 }
 } // namespace

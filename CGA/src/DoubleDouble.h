@@ -336,7 +336,7 @@ inline void sinCosReduced(const DD& r, DD& s, DD& c)
 }
 
 /// sin and cos by the reduction x = k pi/2 + r (pi/2 to 107 bits: r carries an error of about
-/// |x| 2^-107, relative to the result |x| times the functions' own).
+/// |x| 2^-107, relative to the result |x| times the functions' own), double's above |x| = 2^30.
 inline void laneSinCos(const DD& x, DD& s, DD& c)
 {
   if (!isFiniteValue(x.hi))
@@ -344,11 +344,23 @@ inline void laneSinCos(const DD& x, DD& s, DD& c)
     s = c = DD(__builtin_nan(""));
     return;
   }
+  if (__builtin_fabs(x.hi) > 0x1p30)
+  {
+    // The reduction would lose more than 30 bits; the angle itself is then known only to
+    // ulp(x) >= 2^-22: double's functions (exact reduction) are as good.
+    double sine, cosine;
+    laneSinCos(x.hi, sine, cosine);
+    s = DD(sine);
+    c = DD(cosine);
+    return;
+  }
   const double k = __builtin_nearbyint(x.hi / kHalfPiHi);
   const DD r = x - DD(kHalfPiHi, kHalfPiLo) * DD(k);
   DD sr, cr;
   sinCosReduced(r, sr, cr);
-  const long long quadrant = static_cast<long long>(k) & 3;
+  // k mod 4 by fmod (exact): k may exceed every integer type for a huge x
+  const double modulo = __builtin_fmod(k, 4.0);
+  const int quadrant = static_cast<int>(modulo < 0.0 ? modulo + 4.0 : modulo);
   s = quadrant == 0 ? sr : quadrant == 1 ? cr : quadrant == 2 ? -sr : -cr;
   c = quadrant == 0 ? cr : quadrant == 1 ? -sr : quadrant == 2 ? -cr : sr;
 }

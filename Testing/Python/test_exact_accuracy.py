@@ -1,7 +1,7 @@
 """The Exact rule against a high-precision reference (exact_reference.py: the 5x5 matrix exponential
 of the versor's action in mpmath, computed from the same double inputs), on adversarial fields:
-points on a generator and 1e-9 ... 1e-3 from one, epsilon down to 1e-10, clustered generators, huge
-weights and strengths (docs/conventions.md section 2 item 12 states the bound tested here).
+points on a generator and 1e-9 ... 1e-3 from one, epsilon from 1e-10 to 1e3, clustered generators,
+huge weights and strengths (of either sign) (docs/conventions.md section 2 item 12 states the bound tested here).
 
 Each image, from the batch path (PointPairField::mapPoints) and the pointwise path (map), printed by
 the ExactAccuracyProbe program, must lie within
@@ -81,6 +81,13 @@ def configurations():
            around1 + around2 + FAR, False)
     yield ("two pairs, strength 1e5, falloff 4, eps 1e-6", 4.0, 1e-6, 1e5,
            [(X1, V1, 0.5), (X2, V2, 0.3)], around1 + around2 + FAR, False)
+    # every epsilon >= 1e-10: large ones too (B small and smooth: the field's frame)
+    for eps in (1.0, 1e3):
+        yield (f"two pairs, eps {eps:g}", 1.0, eps, 1.0, [(X1, V1, 0.5), (X2, V2, 0.3)],
+               around1 + around2 + FAR, False)
+    yield ("lone pair, strength 1e8, eps 1e-10", 1.0, 1e-10, 1e8, [(X1, V1, 0.5)], around1 + FAR, True)
+    yield ("two pairs, strength -1e6, eps 1e-8", 1.0, 1e-8, -1e6, [(X1, V1, 0.5), (X2, V2, 0.3)],
+           around1 + around2 + FAR, False)
 
 
 def run_probe(probe, cases):
@@ -99,7 +106,7 @@ def check_jacobian(name, p, jacobian, generators, falloff, eps, strength, verbos
     ref = reference.jacobian(generators, p, falloff, eps, strength)
     with reference.mp.workdps(reference.DIGITS):
         b = reference.field_bivector(generators, p, falloff, eps)
-        exponent = float(max(abs(c) for row in b for c in row)) * strength
+        exponent = float(max(abs(c) for row in b for c in row)) * abs(strength)
     size = max(1.0, max(abs(c) for c in ref))
     error = max(abs(a - r) for a, r in zip(jacobian, ref))
     bound = size * (RELATIVE + JACOBIAN_EXPONENT_FACTOR * max(1.0, exponent))
