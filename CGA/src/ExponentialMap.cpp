@@ -1,6 +1,7 @@
 #include "cga/ExponentialMap.h"
 
 #include "DualNumber.h"
+#include "PointBlocks.h"
 #include "PointMapCore.h"
 #include "PointPairKernel.h"
 #include "PointPairKernelDispatch.h"
@@ -24,18 +25,13 @@ std::size_t mapPointsByExponentials(const Bivector* b,
   const kernel::MapBlockBy mapBlockBy = kernel::activeMapBlockBy();
   kernel::FieldArgs args; // no field: only the rule is read
   args.exactRule = rule == ExponentialRule::Exact;
-  std::size_t unmapped = 0;
   alignas(64) double bivectors[kBivector * L];
   alignas(64) double xyz[3 * L];
   alignas(64) double image[3 * L];
   std::uint8_t ok[L];
-  for (std::size_t first = 0; first < count; first += L)
-  {
-    const int n = static_cast<int>(std::min<std::size_t>(L, count - first));
-    for (int l = 0; l < L; ++l)
-    {
-      // The last block repeats its last point in the unused lanes.
-      const std::size_t i = first + static_cast<std::size_t>(std::min(l, n - 1));
+  return forEachBlock(
+    count,
+    [&](int l, std::size_t i) {
       for (int c = 0; c < kBivector; ++c)
       {
         bivectors[c * L + l] = b[i].c[c];
@@ -43,22 +39,16 @@ std::size_t mapPointsByExponentials(const Bivector* b,
       xyz[l] = p[i].x;
       xyz[L + l] = p[i].y;
       xyz[2 * L + l] = p[i].z;
-    }
-    mapBlockBy(args, bivectors, xyz, image, ok);
-    for (int l = 0; l < n; ++l)
-    {
-      mapped[first + l] = ok[l] != 0;
+    },
+    [&](std::size_t, int) { mapBlockBy(args, bivectors, xyz, image, ok); },
+    [&](std::size_t i, int l) {
+      mapped[i] = ok[l] != 0;
       if (ok[l])
       {
-        out[first + l] = { image[l], image[L + l], image[2 * L + l] };
+        out[i] = { image[l], image[L + l], image[2 * L + l] };
       }
-      else
-      {
-        ++unmapped;
-      }
-    }
-  }
-  return unmapped;
+      return mapped[i];
+    });
 }
 
 using Second = core::SurfaceJetDual;

@@ -150,6 +150,14 @@ inline double powerOfTwoOf(double k)
   return r;
 }
 
+/// The unit in the last place of 1 of a number type's values (double's, the lanes' and a Dual's:
+/// 2^-52), against which PointMapCore.h tells rounding from a value; DoubleDouble.h has its own.
+template <typename T>
+struct RoundingUnit
+{
+  static constexpr double value = 0x1p-52;
+};
+
 /// A number type's value c on every lane.
 template <typename T>
 inline T splat(double c)

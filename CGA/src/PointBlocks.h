@@ -1,11 +1,13 @@
-// Internal: the one block loop of PointPairField's batch maps (mapPoints, mapPointsWithJacobians,
-// mapPointsWithDirectionalDerivatives): kernel::kLanes points at a time, relative to the field's
-// center c (as map()), each image written back as p + (image - (p - c)), so that a point the map
-// leaves in place comes back to the bit.
+// Internal: the one block loop of the batch maps (forEachBlock): PointPairField's (mapPoints,
+// mapPointsWithJacobians, mapPointsWithDirectionalDerivatives: mapPointsInBlocks, kernel::kLanes
+// points at a time relative to the field's center c, as map(), each image written back as
+// p + (image - (p - c)), so that a point the map leaves in place comes back to the bit) and
+// mapPointsByExponentials (given exponents, no center).
 //
 // Internal linkage only (see PointMapCore.h).
 #pragma once
 
+#include "ForceInline.h"
 #include "PointPairKernel.h"
 
 #include "cga/Vec3.h"
@@ -41,6 +43,33 @@ std::size_t copyPoints(const In* in, Out* out, std::size_t count, FinishPoint&& 
   return unchanged;
 }
 
+/// The block loop of every batch map (mapPointsInBlocks, mapPointsByExponentials): for each block
+/// of kernel::kLanes points first ... first + n - 1, fillLane(lane, index) for every lane (the
+/// unused lanes of the last block repeat its last point), then mapBlock(first, n), then
+/// writePoint(index, lane) for each point of the block, which returns whether it was mapped.
+/// Returns the count of points not mapped.
+template <typename FillLane, typename MapBlock, typename WritePoint>
+BOOSTED_FORCE_INLINE std::size_t forEachBlock(
+  std::size_t count, FillLane&& fillLane, MapBlock&& mapBlock, WritePoint&& writePoint)
+{
+  constexpr int L = kernel::kLanes;
+  std::size_t unmapped = 0;
+  for (std::size_t first = 0; first < count; first += L)
+  {
+    const int n = static_cast<int>(std::min<std::size_t>(L, count - first));
+    for (int l = 0; l < L; ++l)
+    {
+      fillLane(l, first + static_cast<std::size_t>(std::min(l, n - 1)));
+    }
+    mapBlock(first, n);
+    for (int l = 0; l < n; ++l)
+    {
+      unmapped += writePoint(first + static_cast<std::size_t>(l), l) ? 0 : 1;
+    }
+  }
+  return unmapped;
+}
+
 /// Maps `count` points, xyz interleaved, from `in` to `out` (which may be `in`). For each block,
 /// mapLanes(first, n, xyz, image, mapped) maps the block's lanes (the points first ... first + n - 1
 /// relative to c in xyz, component-major; the unused lanes of the last block repeat its last
@@ -52,25 +81,21 @@ std::size_t mapPointsInBlocks(Vec3 c, const In* in, Out* out, std::size_t count,
   MapLanes&& mapLanes, FinishPoint&& finishPoint)
 {
   constexpr int L = kernel::kLanes;
-  std::size_t unchanged = 0;
   alignas(64) double xyz[3 * L];
   alignas(64) double image[3 * L];
   std::uint8_t mapped[L];
-  for (std::size_t first = 0; first < count; first += L)
-  {
-    const int n = static_cast<int>(std::min<std::size_t>(L, count - first));
-    for (int l = 0; l < L; ++l)
-    {
-      const In* p = in + 3 * (first + std::min(l, n - 1));
+  return forEachBlock(
+    count,
+    [&](int l, std::size_t i) {
+      const In* p = in + 3 * i;
       xyz[l] = static_cast<double>(p[0]) - c.x;
       xyz[L + l] = static_cast<double>(p[1]) - c.y;
       xyz[2 * L + l] = static_cast<double>(p[2]) - c.z;
-    }
-    mapLanes(first, n, xyz, image, mapped);
-    for (int l = 0; l < n; ++l)
-    {
-      Out* o = out + 3 * (first + l);
-      const In* p = in + 3 * (first + l);
+    },
+    [&](std::size_t first, int n) { mapLanes(first, n, xyz, image, mapped); },
+    [&](std::size_t i, int l) {
+      Out* o = out + 3 * i;
+      const In* p = in + 3 * i;
       if (mapped[l])
       {
         o[0] = static_cast<Out>(static_cast<double>(p[0]) + (image[l] - xyz[l]));
@@ -83,12 +108,10 @@ std::size_t mapPointsInBlocks(Vec3 c, const In* in, Out* out, std::size_t count,
         o[0] = static_cast<Out>(p[0]);
         o[1] = static_cast<Out>(p[1]);
         o[2] = static_cast<Out>(p[2]);
-        ++unchanged;
       }
-      finishPoint(first + l, l, mapped[l] != 0);
-    }
-  }
-  return unchanged;
+      finishPoint(i, l, mapped[l] != 0);
+      return mapped[l] != 0;
+    });
 }
 } // namespace
 } // namespace cga

@@ -19,6 +19,7 @@
 // linker keeps for the baseline code too, which would then fault on an older CPU.
 #pragma once
 
+#include "AccurateImage.h"
 #include "ForceInline.h"
 #include "DualNumber.h"
 #include "ExponentialScalars.h"
@@ -212,14 +213,15 @@ void paperExponential(T* b, T& c, bool divideByCosh)
 /// Relative size, against the sum of the magnitudes of its terms, below which an invariant of the
 /// unit-scaled u = B/m is rounding: B's components carry a few units in the last place of their
 /// sums, the quadratic forms add their own (docs/conventions.md section 2 item 12).
-constexpr double kInvariantNoise = 32.0 * 0x1p-52;
+/// (in units of the number type's RoundingUnit: 2^-52 for double).
+constexpr double kInvariantNoise = 32.0;
 
-/// q where |q| exceeds kInvariantNoise times `terms` (the sum of its terms' magnitudes), else 0
+/// q where |q| exceeds kInvariantNoise RoundingUnit<T> times `terms` (the sum of its terms' magnitudes), else 0
 /// (its value: a Dual keeps its tangents, which need not vanish where the invariant does).
 template <typename T>
 BOOSTED_FORCE_INLINE T dropRounding(const T& q, const T& terms)
 {
-  return zeroValue(lessEqual(magnitude(q), kInvariantNoise * terms), q);
+  return zeroValue(lessEqual(magnitude(q), (kInvariantNoise * RoundingUnit<T>::value) * terms), q);
 }
 
 /// The invariants of u = B/m: W = u ^ u, w2 = W W, s = <u u>_0, each 0 where it is below the
@@ -545,6 +547,69 @@ BOOSTED_FORCE_INLINE ValueOf<T> balanceByDilation(T* b)
 /// nilpotent part (a generator next to p with a small epsilon) plus a small rest.
 constexpr double kNearlyNilpotent = 1e-4;
 
+/// Scale of the balanced, translated B (the largest component m' of B about p, balanced) above
+/// which a nearly nilpotent B's image is computed in double-double: its terms of size m'^2 cancel
+/// to the image, so double loses about m'^2 units of 2^-53 of the scale: beyond m' ~ 800 more than
+/// the tested bound (docs/conventions.md section 2 item 12), at 64 about 150 times less.
+constexpr double kExtendedPrecisionScale = 64.0;
+
+/// Per lane, whether the image of a nearly nilpotent B, balanced about p and unit-scaled (unit),
+/// needs more than double precision: its scale m' above kExtendedPrecisionScale.
+template <typename T>
+BOOSTED_FORCE_INLINE Mask<T> needsExtendedPrecision(const UnitBivector<T>& unit)
+{
+  using V = ValueOf<T>;
+  return maskAnd(unit.scale.usable, lessThan(splat<V>(kExtendedPrecisionScale), unit.scale.m));
+}
+
+/// The image (and whether mapped) of the lanes of `lanes` replaced by accurateImageAroundPoint's
+/// (AccurateImage.h): their values, with a Dual's tangents of the double computation.
+template <typename T>
+Mask<T> imageInExtendedPrecision(const Mask<T>& lanes, const T* p, const T* b, T* image, const Mask<T>& mapped)
+{
+  using V = ValueOf<T>;
+  constexpr int L = kLanesOf<V>;
+  const LaneArray<V> which(select(lanes, splat<V>(1.0), V{}));
+  LaneArray<V> flags(select(mapped, splat<V>(1.0), V{}));
+  LaneArray<V> bLanes[kBivector], pLanes[3], out[3];
+  for (int c = 0; c < kBivector; ++c)
+  {
+    bLanes[c] = LaneArray<V>(valueOf(b[c]));
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    pLanes[i] = LaneArray<V>(valueOf(p[i]));
+    out[i] = LaneArray<V>(valueOf(image[i]));
+  }
+  for (int l = 0; l < L; ++l)
+  {
+    if (which.v[l] == 0.0)
+    {
+      continue;
+    }
+    double bl[kBivector], pl[3], il[3];
+    for (int c = 0; c < kBivector; ++c)
+    {
+      bl[c] = bLanes[c].v[l];
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      pl[i] = pLanes[i].v[l];
+    }
+    const bool ok = accurateImageAroundPoint(bl, pl, il);
+    for (int i = 0; i < 3; ++i)
+    {
+      out[i].v[l] = il[i];
+    }
+    flags.v[l] = ok ? 1.0 : 0.0;
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    image[i] = withValueOf(lanes, asNumber<T>(out[i].value()), image[i]);
+  }
+  return lessThan(V{}, flags.value());
+}
+
 /// The Exact image of p computed relative to p (up(p) becomes no) and balanced by a dilation about
 /// p, for a nearly nilpotent B: there the closed form of exp(B) in the field's frame would cancel
 /// terms of size |B|^2 / sqrt|l| (docs/conventions.md section 2 item 12).
@@ -600,6 +665,14 @@ Mask<T> exactImageAroundPoint(const T* p, const T* b, T* image)
   {
     image[i] = p[i] + scale * offset[i];
     mapped = maskAnd(mapped, finiteLanes(valueOf(p[i])));
+  }
+  if constexpr (RoundingUnit<T>::value == RoundingUnit<double>::value)
+  {
+    const Mask<T> accurate = needsExtendedPrecision(unit);
+    if (anyLane(accurate))
+    {
+      mapped = imageInExtendedPrecision(accurate, p, b, image, mapped);
+    }
   }
   return mapped;
 }
