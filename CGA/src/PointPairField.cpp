@@ -58,18 +58,20 @@ void addHalfTranslation(Bivector& b, Vec3 d)
 
 FieldGenerator FieldGenerator::pointPair(Vec3 location, Vec3 direction, double weight)
 {
-  return { location, nullPointPairCompact(location, direction), weight };
+  return { location, nullPointPairCompact(location, direction), weight,
+           nullPointPairCompact(Vec3{ 0.0, 0.0, 0.0 }, direction) };
 }
 
 FieldGenerator FieldGenerator::rotation(Vec3 location, Vec3 axis, double weight)
 {
-  return { location, halfDualLine(location, axis), weight };
+  return { location, halfDualLine(location, axis), weight, halfDualLine(Vec3{ 0.0, 0.0, 0.0 }, axis) };
 }
 
 FieldGenerator FieldGenerator::twist(Vec3 location, Vec3 axis, double pitch, double weight)
 {
   FieldGenerator g = rotation(location, axis, weight);
   addHalfTranslation(g.bivector, pitch * axis);
+  addHalfTranslation(*g.atOrigin, pitch * axis); // a translation is the same about every point
   return g;
 }
 
@@ -77,6 +79,7 @@ FieldGenerator FieldGenerator::dilation(Vec3 location, double weight)
 {
   FieldGenerator g{ location, Bivector{}, weight };
   g.bivector[Bivector::NONI] = -0.5;
+  g.atOrigin = g.bivector;
   addHalfTranslation(g.bivector, -1.0 * location); // -1/2 x ^ ni
   return g;
 }
@@ -85,6 +88,7 @@ FieldGenerator FieldGenerator::translation(Vec3 location, Vec3 direction, double
 {
   FieldGenerator g{ location, Bivector{}, weight };
   addHalfTranslation(g.bivector, direction);
+  g.atOrigin = g.bivector;
   return g;
 }
 
@@ -109,6 +113,7 @@ FieldGenerator FieldGenerator::of(
       // The length multiplies the bivector, as the direction's does for the other kinds.
       FieldGenerator g = dilation(location, weight);
       g.bivector *= length;
+      *g.atOrigin *= length;
       return g;
     }
     case GeneratorKind::Translation:
@@ -208,6 +213,10 @@ void PointPairField::add(
       GeneratorParameters row = rows[i];
       row.location = location;
       relative = row.field().bivector;
+    }
+    else if (g.atOrigin)
+    {
+      relative = translatedBivector(*g.atOrigin, location);
     }
     else
     {

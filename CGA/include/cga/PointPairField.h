@@ -22,6 +22,7 @@
 #include <cstddef>
 #include <memory>
 #include <string>
+#include <optional>
 #include <vector>
 
 namespace cga
@@ -72,14 +73,19 @@ bool isGeneratorKind(int kind);
 ///   translation: the translation by c v/|v|; the location only places the falloff.
 /// Directions and axes of any finite non-zero length; a zero or non-finite one gives a NaN weight,
 /// which PointPairField skips (and counts), as it does any non-finite bivector.
-/// G is given in space; the field moves it to its center c (translatedBivector), which rounds
-/// like |G| |x|^2, so far from the origin build G at x - c instead (rows given as
-/// PointPairGenerator or GeneratorParameters are: eps |x|).
+/// G is given in space; the field moves it to its center c: the named constructors keep it about
+/// the origin too (atOrigin), which the field moves by x - c (eps |x|, exact for a lone generator,
+/// as rows given as PointPairGenerator or GeneratorParameters are built at x - c); a bivector given
+/// without it is moved by -c (translatedBivector), which rounds like |G| |x|^2.
 struct FieldGenerator
 {
   Vec3 location;
   Bivector bivector;
   double weight = 1.0;
+  /// The same generator built about the origin, when known (every named constructor and of()
+  /// set it): the field then moves it by x - c, which is exact for a lone generator (x = c), so a
+  /// point on it stays on it to the bit, as with rows. Without it the field moves `bivector` by -c.
+  std::optional<Bivector> atOrigin;
 
   /// The null point pair tau(location, direction) (nullPointPairCompact).
   static FieldGenerator pointPair(Vec3 location, Vec3 direction, double weight = 1.0);
