@@ -272,23 +272,63 @@ BOOSTED_FORCE_INLINE GeneratorOf<T> linearInterpolationOf(const PointOf<T>& x1, 
   return g;
 }
 
+/// Eq 25-26's pieces that do not depend on (s, t): each corner's tau terms and direction length,
+/// computed once for a whole grid (CurvaturePatch::mapRow) instead of at every sample.
+struct BilinearCorners
+{
+  NullPointPairTerms<double> terms[4];
+  double weights[4], lengths[4];
+
+  BilinearCorners(const Vec3 x[4], const CornerGenerator g[4])
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      const double location[3] = { x[i].x, x[i].y, x[i].z };
+      terms[i] = nullPointPairTerms(location, g[i].direction);
+      weights[i] = g[i].weight;
+      lengths[i] = norm(g[i].direction);
+    }
+  }
+};
+
 /// Eq 25-26 (bilinearInterpolation).
 template <typename T>
 BOOSTED_FORCE_INLINE GeneratorOf<T> bilinearInterpolationOf(
-  const Vec3 x[4], const CornerGenerator g[4], const T& s, const T& t)
+  const BilinearCorners& corners, const T& s, const T& t)
 {
   const T factors[4] = { (1.0 - s) * (1.0 - t), (1.0 - s) * t, s * (1.0 - t), s * t };
   GeneratorOf<T> result;
   for (int i = 0; i < 4; ++i)
   {
-    result.weight = result.weight + 0.5 * factors[i] * g[i].weight * norm(g[i].direction);
+    result.weight = result.weight + 0.5 * factors[i] * corners.weights[i] * corners.lengths[i];
   }
   for (int i = 0; i < 4; ++i)
   {
-    const double location[3] = { x[i].x, x[i].y, x[i].z };
-    addNullPointPair(result.exponent, -0.5 * factors[i] * g[i].weight, location, g[i].direction);
+    addNullPointPairTerms(result.exponent, -0.5 * factors[i] * corners.weights[i], corners.terms[i]);
   }
   return result;
+}
+
+/// The moved patch's corner locations (cornerLocations() of the patch moved by -shift).
+inline BilinearCorners bilinearCornersOf(const CurvaturePatch& patch, Vec3 shift)
+{
+  PatchFrame moved = patch.frame;
+  moved.origin = patch.frame.origin - shift;
+  const double hu = 0.5 * patch.sizeU, hv = 0.5 * patch.sizeV;
+  const Vec3 x[4] = { moved.at(-hu, -hv), moved.at(hu, -hv), moved.at(-hu, hv), moved.at(hu, hv) };
+  return BilinearCorners(x, patch.corners.data());
+}
+
+/// The Bilinear method's (s, t) of the patch point (a, b).
+template <typename T>
+BOOSTED_FORCE_INLINE T bilinearS(const CurvaturePatch& patch, const T& b)
+{
+  return patch.sizeV > 0.0 ? 0.5 + b / patch.sizeV : T{};
+}
+template <typename T>
+BOOSTED_FORCE_INLINE T bilinearT(const CurvaturePatch& patch, const T& a)
+{
+  return 0.5 + a / patch.sizeU;
 }
 
 /// The patch's E(a, b) and local weight by its method, of the patch moved by -shift
@@ -323,14 +363,8 @@ BOOSTED_FORCE_INLINE GeneratorOf<T> patchGeneratorOf(const CurvaturePatch& patch
         patchPoint(moved, hu, b), patch.corners[1], t);
     }
     case CurvatureMethod::Bilinear:
-    {
-      const double hu = 0.5 * patch.sizeU, hv = 0.5 * patch.sizeV;
-      const Vec3 x[4] = { moved.at(-hu, -hv), moved.at(hu, -hv), moved.at(-hu, hv),
-        moved.at(hu, hv) };
-      const T t = 0.5 + a / patch.sizeU;
-      const T s = patch.sizeV > 0.0 ? 0.5 + b / patch.sizeV : T{};
-      return bilinearInterpolationOf(x, patch.corners.data(), s, t);
-    }
+      return bilinearInterpolationOf(
+        bilinearCornersOf(patch, shift), bilinearS(patch, b), bilinearT(patch, a));
   }
   return {};
 }

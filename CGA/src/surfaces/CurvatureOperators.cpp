@@ -129,6 +129,6 @@ CurvatureGenerator linearInterpolation(Vec3 x1, const CornerGenerator& g1, Vec3 
 
 CurvatureGenerator bilinearInterpolation(const Vec3 x[4], const CornerGenerator g[4], double s, double t)
 {
-  return detail::bilinearInterpolationOf(x, g, s, t);
+  return detail::bilinearInterpolationOf(detail::BilinearCorners(x, g), s, t);
 }
 } // namespace cga

@@ -124,6 +124,10 @@ void CurvaturePatch::mapRow(
     frame.origin);
   PatchFrame moved = frame; // as patchGeneratorOf moves it
   moved.origin = frame.origin - frame.origin;
+  // Bilinear: the corners' terms once for the row, not at every sample (the same values).
+  const bool bilinear = method == CurvatureMethod::Bilinear;
+  const detail::BilinearCorners corners = detail::bilinearCornersOf(*this, frame.origin);
+  const double s = detail::bilinearS(*this, b);
   Bivector exponents[kChunk];
   Vec3 points[kChunk], images[kChunk];
   double chunkWeights[kChunk];
@@ -135,7 +139,8 @@ void CurvaturePatch::mapRow(
     {
       const CurvatureGenerator g = method == CurvatureMethod::ControlPoints
         ? controlPointSum.at(moved.at(a[first + i], b))
-        : generatorAbout(a[first + i], b, frame.origin);
+        : bilinear ? detail::bilinearInterpolationOf(corners, s, detail::bilinearT(*this, a[first + i]))
+                   : generatorAbout(a[first + i], b, frame.origin);
       exponents[i] = g.exponent;
       chunkWeights[i] = g.weight;
       points[i] = Vec3{} + a[first + i] * frame.u + b * frame.v;
