@@ -402,6 +402,14 @@ std::unique_ptr<long long[]> vtkBoostedGridBuilder::WritePoints(
     array->SetNumberOfTuples(total);
     sampleArrays.push_back(array);
   }
+  // Their values, fetched once: GetPointer per point and array cost a call each (and copy_n of a
+  // run-time length a memmove call), 15 % of a boosted surface update with its four curvature
+  // arrays.
+  std::vector<double*> sampleOutputs;
+  for (const auto& array : sampleArrays)
+  {
+    sampleOutputs.push_back(array->GetPointer(0));
+  }
   auto* doublePoints = vtkDoubleArray::FastDownCast(points->GetData());
   auto* floatPoints = vtkFloatArray::FastDownCast(points->GetData());
 
@@ -453,11 +461,16 @@ std::unique_ptr<long long[]> vtkBoostedGridBuilder::WritePoints(
         {
           integerParameters[k]->SetValue(id, this->IntegerParameters[k].second[r]);
         }
-        for (size_t k = 0; k < sampleArrays.size(); ++k)
+        for (size_t k = 0; k < sampleOutputs.size(); ++k)
         {
           const SampleArray& values = this->SampleArrays[k];
-          std::copy_n(&values.Values[static_cast<size_t>(values.Components) * this->Index(r, c)],
-            values.Components, sampleArrays[k]->GetPointer(values.Components * id));
+          const int n = values.Components;
+          const double* from = &values.Values[static_cast<size_t>(n) * this->Index(r, c)];
+          double* to = sampleOutputs[k] + static_cast<size_t>(n) * id;
+          for (int j = 0; j < n; ++j)
+          {
+            to[j] = from[j];
+          }
         }
         return static_cast<long long>(id);
       },

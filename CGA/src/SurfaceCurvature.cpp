@@ -1,5 +1,7 @@
 #include "cga/SurfaceCurvature.h"
 
+#include "ForceInline.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -29,9 +31,24 @@ int scaleExponent(double m)
   return (m >= 0x1p-100 && m <= 0x1p100) ? 0 : exponentOf(m);
 }
 
-Vec3 scaled(Vec3 v, int e)
+Vec3 scaledBy(Vec3 v, int e)
 {
-  return e == 0 ? v : Vec3{ std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e) };
+  return Vec3{ std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e) };
+}
+
+// v / 2^e; inline, so that the common e = 0 costs no call.
+BOOSTED_FORCE_INLINE Vec3 scaled(Vec3 v, int e)
+{
+  return e == 0 ? v : scaledBy(v, e);
+}
+
+// hypot(a, b) (to an ulp) as sqrt(a^2 + b^2) where neither square can overflow nor lose the
+// result to underflow: hypot's call and scaling cost more than the rest of a curvature's
+// eigenvalues.
+double radiusOf(double a, double b)
+{
+  const double larger = std::max(std::fabs(a), std::fabs(b));
+  return (larger >= 0x1p-450 && larger <= 0x1p450) ? std::sqrt(a * a + b * b) : std::hypot(a, b);
 }
 
 // x_u and x_v, divided by 2^e where their squared lengths are outside [2^-200, 2^200] (e the
@@ -120,10 +137,10 @@ SurfaceCurvature surfaceCurvature(const SurfaceDerivatives& x)
   const double w12 = (m * alpha - l * beta) / (alpha * alpha * gamma);
   const double w22 = (l * beta * beta - 2.0 * m * alpha * beta + nn * alpha * alpha) /
     (alpha * alpha * gamma * gamma);
-  // Eigenvalues of the symmetric 2x2 W as mean +- radius: the radius by hypot, so that k1 - k2
-  // is accurate to rounding of W's entries even at an umbilic.
+  // Eigenvalues of the symmetric 2x2 W as mean +- radius: the radius as a hypotenuse, so that
+  // k1 - k2 is accurate to rounding of W's entries even at an umbilic.
   const double half = 0.5 * (w11 - w22);
-  const double radius = std::hypot(half, w12);
+  const double radius = radiusOf(half, w12);
   const double center = 0.5 * (w11 + w22);
   const int scale = e2 - 2 * e1;
   const double k1 = scale == 0 ? center + radius : std::ldexp(center + radius, scale);

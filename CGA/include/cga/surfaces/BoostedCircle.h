@@ -90,5 +90,7 @@ private:
 
   PointMap Boost;
   std::array<double, 25> Commutator;
+  // The two matrices transposed (column after column), for the derivatives' products.
+  std::array<double, 25> BoostColumns, CommutatorColumns;
 };
 } // namespace cga
