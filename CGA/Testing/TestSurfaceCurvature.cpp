@@ -341,4 +341,33 @@ TEST(SurfaceCurvature, PlaneHasZeroCurvature)
   EXPECT_EQ(k.k2, 0.0);
   EXPECT_EQ(k.gaussian, 0.0);
 }
+
+TEST(SurfaceCurvature, TinyCurvaturesUnderLargeTangentialSecondDerivativesKeepTheirSize)
+{
+  // z = c u v (the u, v plane bent by c) with a large tangential second derivative: the second
+  // derivatives are scaled by their largest component (1), so the shape operator's entries are
+  // c itself, down to 1e-300, where c^2 underflows: the eigenvalues' radius must still be |c|.
+  for (const double c : { 1.0, 1e-100, 1e-160, 1e-200, 1e-300 })
+  {
+    SurfaceDerivatives x;
+    x.du = { 1.0, 0.0, 0.0 };
+    x.dv = { 0.0, 1.0, 0.0 };
+    x.duu = { 1.0, 0.0, 0.0 };
+    x.duv = { 0.0, 0.0, c };
+    const SurfaceCurvature k = surfaceCurvature(x);
+    ASSERT_TRUE(k.regular) << c;
+    // The normal is +z: curvatures c along (1, -1) and -c along (1, 1).
+    EXPECT_NEAR(k.k1, c, 1e-15 * c) << c;
+    EXPECT_NEAR(k.k2, -c, 1e-15 * c) << c;
+    EXPECT_EQ(k.mean, 0.0) << c;
+    // z = c u^2 / 2 bends toward the normal along u: curvatures 0 and -c.
+    x.duu = { 1.0, 0.0, c };
+    x.duv = { 0.0, 0.0, 0.0 };
+    const SurfaceCurvature along = surfaceCurvature(x);
+    ASSERT_TRUE(along.regular) << c;
+    EXPECT_EQ(along.k1, 0.0) << c;
+    EXPECT_NEAR(along.k2, -c, 1e-15 * c) << c;
+    EXPECT_NEAR(along.mean, -0.5 * c, 1e-15 * c) << c;
+  }
+}
 } // namespace
