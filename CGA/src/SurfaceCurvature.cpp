@@ -42,13 +42,14 @@ BOOSTED_FORCE_INLINE Vec3 scaled(Vec3 v, int e)
   return e == 0 ? v : scaledBy(v, e);
 }
 
-// hypot(a, b) (to an ulp) as sqrt(a^2 + b^2) where neither square can overflow nor lose the
-// result to underflow: hypot's call and scaling cost more than the rest of a curvature's
-// eigenvalues.
+// hypot(a, b) (to an ulp) as sqrt(a^2 + b^2) where both are 0 or neither square can overflow
+// nor lose the result to underflow: hypot's call and scaling cost more than the rest of a
+// curvature's eigenvalues.
 double radiusOf(double a, double b)
 {
   const double larger = std::max(std::fabs(a), std::fabs(b));
-  return (larger >= 0x1p-450 && larger <= 0x1p450) ? std::sqrt(a * a + b * b) : std::hypot(a, b);
+  return ((larger >= 0x1p-450 || larger == 0.0) && larger <= 0x1p450) ? std::sqrt(a * a + b * b)
+                                                                      : std::hypot(a, b);
 }
 
 // x_u and x_v, divided by 2^e where their squared lengths are outside [2^-200, 2^200] (e the
@@ -159,8 +160,13 @@ SurfaceCurvature surfaceCurvature(const SurfaceDerivatives& x)
   // principal: e1.
   const double size = std::max({ std::fabs(w11), std::fabs(w12), std::fabs(w22) });
   const bool umbilic = radius <= 64.0 * std::numeric_limits<double>::epsilon() * size;
-  const double phi = umbilic ? 0.0 : 0.5 * std::atan2(w12, half);
-  double along1 = std::cos(phi), along2 = std::sin(phi);
+  double along1 = 1.0, along2 = 0.0; // cos and sin of phi = 0, without the calls
+  if (!umbilic)
+  {
+    const double phi = 0.5 * std::atan2(w12, half);
+    along1 = std::cos(phi);
+    along2 = std::sin(phi);
+  }
   if (std::fabs(along2) > along1 && along2 < 0.0)
   {
     along1 = -along1;
