@@ -101,13 +101,15 @@ private:
     std::size_t first = 0, count = 0;
     int children[2] = { -1, -1 };
     long moments = -1; // offset in Moments, or -1: the node is summed directly
-    // sum_i |v_p(g_i)| <= motion[0] + motion[1] l + motion[2] l^2 for |p - center| <= l
-    // (addMotion in GeneratorTree.cpp).
-    double motion[3] = { 0.0, 0.0, 0.0 };
     // The generators' weights z_i = (a_i + b_i s)/(k s + eps), s = r^2, summed: {a, b} of those
     // increasing in s (b_i eps > a_i k), then {a, b} of the others (nodeWeights).
     double weights[4] = { 0.0, 0.0, 0.0, 0.0 };
+    // Offset in Spread of the node's absolute moments (nodes with moments only, else -1):
+    // Spread[spread + part * kSpreadPowers + j] = sum_i m_part,i (|x_i - center|/radius)^j, with
+    // m_0,i + m_1,i l + m_2,i l^2 >= |v_p(g_i)| for |p - center| <= l (addMotion about the center).
+    long spread = -1;
   };
+  static constexpr int kSpreadPowers = kMaxDegree + 2;
   // One term of e_b(u) = sum coefficient u^a (Taylor coefficient of the kernel for moment b).
   struct Term
   {
@@ -140,15 +142,19 @@ private:
   std::vector<double> Generators; // permuted, kGeneratorStride doubles each
   std::vector<Node> Nodes;
   std::vector<double> Moments; // per node: MomentCount x Bivector::Count
+  std::vector<double> Spread;  // per node with moments: 3 x kSpreadPowers absolute moments
   double Falloff, Epsilon;
   int Degree = 0;
   double QLimit = 0.0;
   double DisplacementScale = 0.0;
   double Budget = 0.0; // t V; 0 where it is not finite: nodes are used only where exact (q = 0)
   // The degree a node is used at, -1 where it is not usable: the least p <= Degree with
-  // R_p(q, S) (m0 + m1 l + m2 l^2) <= share D (nodes at q <= QLimit only; S = sqrt(D/eps)). A NaN
-  // share (overflow far away or with huge weights) opens the node.
-  int degreeFor(const Node& node, double q, double D, double reach, double share) const;
+  // R_p(q, S) sum_i |v_p(g_i)| ((|x_i - c| + r)/(rho + r))^(p+1) <= share D, the motions bounded
+  // at l = reach (nodes at q <= QLimit only; S = sqrt(D/eps); r = targetRadius, the cube's for a
+  // local expansion, 0 for points). A NaN share (overflow far away or with huge weights) opens
+  // the node.
+  int degreeFor(const Node& node, double q, double D, double reach, double share,
+                double targetRadius) const;
   // The node's weight sum for generator distances r in [nearest, farthest]: its least value
   // (lower = true, X) or its largest (Phi's term).
   double nodeWeights(const Node& node, double nearest, double farthest, bool lower) const;
