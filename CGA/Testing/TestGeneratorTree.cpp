@@ -281,23 +281,27 @@ TEST(GeneratorTree, ToleranceDomainAndSmallFields)
     const Vec3 p{ 0.3, 0.1, -0.2 };
     EXPECT_EQ(direct.generatorAt(p).c, withTolerance.generatorAt(p).c);
   }
-  // Below the tolerance crossover (treeMinimumTolerance(), where the tree stops paying on the
+  // Below the tolerance crossover (treeMinimumTolerance(M), where the tree stops paying on the
   // bench's field) the field sums directly too, bit for bit, with the tolerance kept; at it the
-  // tree is built and meets its bound.
+  // tree is built and meets its bound. The crossover falls with M (1e-4 at 10,000 generators).
+  EXPECT_EQ(PointPairField::treeMinimumTolerance(10000), 1e-4);
+  EXPECT_NEAR(PointPairField::treeMinimumTolerance(100000), 1e-4 / std::pow(10.0, 1.5), 1e-20);
+  EXPECT_EQ(PointPairField::treeMinimumTolerance(0), PointPairField::maximumTolerance());
+  const double crossover = PointPairField::treeMinimumTolerance(generators.size());
   const PointPairField direct(generators.data(), generators.size(), kFalloff, kEpsilon);
   PointPairField fine(generators.data(), generators.size(), kFalloff, kEpsilon);
-  ASSERT_TRUE(fine.setTolerance(0.5 * PointPairField::treeMinimumTolerance(), kTreeFrom));
-  EXPECT_EQ(fine.tolerance(), 0.5 * PointPairField::treeMinimumTolerance());
+  ASSERT_TRUE(fine.setTolerance(0.5 * crossover, kTreeFrom));
+  EXPECT_EQ(fine.tolerance(), 0.5 * crossover);
   EXPECT_EQ(fine.treeBytes(), 0u);
   Random pick(3);
   for (const Vec3& p : randomPoints(pick, 20, {}, 1.5))
   {
     EXPECT_EQ(direct.generatorAt(p).c, fine.generatorAt(p).c);
   }
-  ASSERT_TRUE(fine.setTolerance(PointPairField::treeMinimumTolerance(), kTreeFrom));
+  ASSERT_TRUE(fine.setTolerance(crossover, kTreeFrom));
   EXPECT_GT(fine.treeBytes(), 0u);
   const auto points = randomPoints(pick, 50, {}, 1.5);
-  EXPECT_LE(worstRelativeError(generators, points, PointPairField::treeMinimumTolerance()).boundedError, 1.0);
+  EXPECT_LE(worstRelativeError(generators, points, crossover).boundedError, 1.0);
 }
 
 TEST(GeneratorTree, NonFiniteGeneratorsAreSkippedAndNonFinitePointsLeftInPlace)

@@ -667,12 +667,18 @@ void GeneratorTree::addMultipole(const Node& node, const double* moments, int de
         scale[l] *= q[l];
       }
     }
+    // e scale once per monomial (the same bits: (e scale) mu, left to right, as before).
     const double* mu = moments + m * kComponents;
+    double term[L];
+    for (int l = 0; l < L; ++l)
+    {
+      term[l] = e[m][l] * scale[l];
+    }
     for (int c = 0; c < kComponents; ++c)
     {
       for (int l = 0; l < L; ++l)
       {
-        out[c][l] += e[m][l] * scale[l] * mu[c];
+        out[c][l] += term[l] * mu[c];
       }
     }
   }

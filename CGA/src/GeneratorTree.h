@@ -85,7 +85,7 @@ public:
   /// Generators per leaf at most.
   static constexpr std::size_t kLeafSize = 32;
   /// A leaf cell's width over that of the widest cell usable at any distance.
-  static constexpr double kLeafShare = 0.5;
+  static constexpr double kLeafShare = 0.25;
   /// The largest q a node is used at (the series converges for q < 1; its terms' bound grows
   /// like (j + 1) q^j).
   static constexpr double kLargestOpening = 0.5;
