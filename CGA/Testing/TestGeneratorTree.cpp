@@ -300,6 +300,11 @@ TEST(GeneratorTree, ToleranceDomainAndSmallFields)
   }
   ASSERT_TRUE(fine.setTolerance(crossover, kTreeFrom));
   EXPECT_GT(fine.treeBytes(), 0u);
+  // Below kHighDegreeFrom generators the largest degree is kDegree at every tolerance.
+  using Tree = cga::detail::GeneratorTree;
+  EXPECT_EQ(fine.treeDegree(), Tree::kDegree);
+  ASSERT_TRUE(fine.setTolerance(1e-9, kTreeFrom, 0.0));
+  EXPECT_EQ(fine.treeDegree(), Tree::kDegree);
   const auto points = randomPoints(pick, 50, {}, 1.5);
   EXPECT_LE(worstRelativeError(generators, points, crossover).boundedError, 1.0);
 }
@@ -483,7 +488,7 @@ TEST(GeneratorTree, BadInputsKeepTheBound)
 // (x = 1 at q -> 0: the tail is about (p + 2) q^(p+1), the Chebyshev form's leading term).
 TEST(GeneratorTree, RemainderBoundHoldsForTheSeriesTail)
 {
-  for (int degree = 0; degree <= 10; ++degree)
+  for (int degree = 0; degree <= cga::detail::GeneratorTree::kMaxDegree; ++degree)
   {
     for (const double q : { 0.01, 0.1, 0.3, 0.5, 0.7, 0.9 })
     {
@@ -651,5 +656,28 @@ TEST(GeneratorTree, SpreadRemainderBoundHoldsForTheGeneratorsTails)
         }
       }
     }
+  }
+}
+
+// From kHighDegreeFrom generators and below kHighDegreeBelow the tree expands to kMaxDegree: the
+// bound at points through and around the generators, against the direct sum.
+TEST(GeneratorTree, ManyGeneratorsAtTightTolerancesUseTheHighDegreeAndMeetTheBound)
+{
+  using Tree = cga::detail::GeneratorTree;
+  Random random(100);
+  const auto generators = randomPointPairs(random, Tree::kHighDegreeFrom, {}, 1.5);
+  std::vector<Vec3> points = randomPoints(random, 8, {}, 2.0);
+  for (int i = 0; i < 4; ++i)
+  {
+    points.push_back(generators[static_cast<std::size_t>(i * 997)].location);
+  }
+  PointPairField field(generators.data(), generators.size(), kFalloff, kEpsilon);
+  ASSERT_TRUE(field.setTolerance(Tree::kHighDegreeBelow, kTreeFrom, 0.0));
+  EXPECT_EQ(field.treeDegree(), Tree::kDegree);
+  for (const double tolerance : { 1e-4, 1e-7 })
+  {
+    ASSERT_TRUE(field.setTolerance(tolerance, kTreeFrom, 0.0));
+    EXPECT_EQ(field.treeDegree(), Tree::kMaxDegree);
+    EXPECT_LE(worstRelativeError(generators, points, tolerance).boundedError, 1.0) << "tolerance " << tolerance;
   }
 }

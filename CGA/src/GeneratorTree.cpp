@@ -74,8 +74,8 @@ GeneratorTree::GeneratorTree(const double* generators,
   , Epsilon(epsilon)
 {
   // The largest degree: each use of a node takes the least degree its budget allows (degreeFor),
-  // so a higher one costs only where it lets a larger node be used.
-  this->Degree = kMaxDegree;
+  // but the nodes worth moments grow with it (DirectBelow), which pays only at tight budgets.
+  this->Degree = tolerance < kHighDegreeBelow && count >= kHighDegreeFrom ? kMaxDegree : kDegree;
   this->QLimit = kLargestOpening;
   const int P = this->Degree;
   // Monomials in graded order, each one power above a lower one.
