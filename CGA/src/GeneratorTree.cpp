@@ -588,8 +588,8 @@ void GeneratorTree::addNear(const int* starts, std::size_t count, const double* 
         : 0.0;
       // Every point is within `radius` of `center`: at least `nearest` and at most
       // distance + radius from the node's center.
-      const int degree = this->degreeFor(node, q, this->Falloff * nearest * nearest + this->Epsilon,
-                                         distance + radius, this->shareOf(node, distance, radius, weightSum), 0.0);
+      const int degree = this->degreeFor(node, q, this->Falloff * nearest * nearest + this->Epsilon, distance + radius,
+                                         this->shareOf(node, distance, radius, weightSum), 0.0);
       if (degree >= 0)
       {
         this->addMultipole(node, this->Moments.data() + node.moments, degree, p, sums);

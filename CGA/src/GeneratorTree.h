@@ -2,7 +2,7 @@
 // (g_i = w_i G_i) behind PointPairField::setTolerance (docs/conventions.md section 3 item 14).
 //
 // A binary tree over the generators (split at the median of the widest extent, leaves of at most
-// kLeafSize); each node holds the Cartesian moments mu_b = sum_i g_i yhat_i^b, |b| <= P = 10, of
+// kLeafSize); each node holds the Cartesian moments mu_b = sum_i g_i yhat_i^b, |b| <= P (10, 12), of
 // its generators about its center c (yhat = (x - c)/s, s its radius rho, so no moment overflows).
 // For a point p, d = p - c, D = k |d|^2 + eps, kappa = k/D, u = sqrt(kappa) d, q = rho sqrt(kappa):
 //   1/(k |d - y|^2 + eps) = (1/D) sum_j D_j,  |D_j| <= (j + 1) q^j (Chebyshev U_j with |arg| <= 1),
@@ -13,12 +13,13 @@
 // p), and |v_p(g_i)| <= m0 + m1 |p - x_i| + m2 |p - x_i|^2 with g_i's parts about x_i (addMotion),
 // <= A0 + A1 l + A2 l^2 about the node's center (|p - x_i| <= l + r_i). Generator i, at r_i from
 // the center, errs by at most (r_i/rho)^(p+1) times the node's R_p(q) (Salmon and Warren's
-// absolute moments: each node keeps sum_i A_k,i (r_i/rho)^j, j <= P + 1, its spread). The budget t V (V the field's displacement scale per unit strength) is shared at
-// each point by the generators' weights z_i(p) = (a_i + b_i r^2)/(k r^2 + eps), r = |p - x_i|
-// (a_i + b_i r^2 >= g_i's own motion bound: z_i is a bound of |v_p(g_i)|/D_i): a node used for
-// every point of a cube may err by t V X/Phi, X <= sum over its generators of z_i at every point of
-// the cube, Phi >= sum over all generators of z_i there (weightSum); the nodes used at a point
-// are disjoint, so their errors add up to at most t V. A node is used at the least degree p with
+// absolute moments: each node keeps sum_i A_k,i (r_i/rho)^j, j <= P + 1, its spread). The budget
+// t V (V the field's displacement scale per unit strength) is shared at each point by the
+// generators' weights z_i(p) = (a_i + b_i r^2)/(k r^2 + eps), r = |p - x_i| (a_i + b_i r^2 >=
+// g_i's own motion bound: z_i is a bound of |v_p(g_i)|/D_i): a node used for every point of a
+// cube may err by t V X/Phi, X <= sum over its generators of z_i at every point of the cube,
+// Phi >= sum over all generators of z_i there (weightSum); the nodes used at a point are
+// disjoint, so their errors add up to at most t V. A node is used at the least degree p with
 // R_p(q)/D sum_i (A0 + A1 l + A2 l^2)_i (r_i/rho)^(p+1) <= t V X/Phi (l the farthest |p - c|).
 // Nodes that fail are opened; leaves are summed directly. The points' side (GeneratorTreeCells.cpp)
 // uses the same test with the radius r of a cube of points added to rho and r_i (the weights
