@@ -6,7 +6,7 @@
 // points, as the filter does (its target cells need the mesh's density). Both report the rate per
 // point ("points timed": how many).
 // The tree rows build the tree at every M and tolerance (setTolerance's crossovers,
-// treeMinimumGenerators() and treeMinimumTolerance(), are where the two rows cross). The weights are scaled by 16/M, so that B stays of the size of the M = 16 field at every M.
+// treeMinimumGenerators() and treeMinimumTolerance(M), are where the two rows cross). The weights are scaled by 16/M, so that B stays of the size of the M = 16 field at every M.
 // The tree rows also report, against the direct sum on the same points:
 //   "error/displacement": the largest image error over the largest displacement, the target;
 //   "error/scale": the largest image error over s V (V = treeDisplacementScale()), which the

@@ -8,6 +8,7 @@
 #include "cga/PointPairField.h"
 #include "cga/PointPairs.h"
 
+#include "../src/GeneratorTree.h"
 #include "../src/TreeRemainder.h"
 
 #include <limits>
@@ -125,7 +126,7 @@ TEST(GeneratorTree, ClusteredGeneratorsOfEveryKindMeetTheBound)
   auto points = randomPoints(random, 150, { 0.0, 0.0, 1.0 }, 5.0);
   for (int i = 0; i < 60; ++i)
   {
-    points.push_back(generators[static_cast<std::size_t>(i * 17)].location);
+    points.push_back(generators[static_cast<std::size_t>(i * 15)].location); // 60 of the 900
   }
   for (const double tolerance : { 1e-3, 1e-7 })
   {
@@ -280,23 +281,32 @@ TEST(GeneratorTree, ToleranceDomainAndSmallFields)
     const Vec3 p{ 0.3, 0.1, -0.2 };
     EXPECT_EQ(direct.generatorAt(p).c, withTolerance.generatorAt(p).c);
   }
-  // Below the tolerance crossover (treeMinimumTolerance(), where the tree stops paying on the
+  // Below the tolerance crossover (treeMinimumTolerance(M), where the tree stops paying on the
   // bench's field) the field sums directly too, bit for bit, with the tolerance kept; at it the
-  // tree is built and meets its bound.
+  // tree is built and meets its bound. The crossover falls with M (1e-4 at 10,000 generators).
+  EXPECT_EQ(PointPairField::treeMinimumTolerance(10000), 1e-4);
+  EXPECT_NEAR(PointPairField::treeMinimumTolerance(100000), 1e-4 / std::pow(10.0, 1.5), 1e-20);
+  EXPECT_EQ(PointPairField::treeMinimumTolerance(0), PointPairField::maximumTolerance());
+  const double crossover = PointPairField::treeMinimumTolerance(generators.size());
   const PointPairField direct(generators.data(), generators.size(), kFalloff, kEpsilon);
   PointPairField fine(generators.data(), generators.size(), kFalloff, kEpsilon);
-  ASSERT_TRUE(fine.setTolerance(0.5 * PointPairField::treeMinimumTolerance(), kTreeFrom));
-  EXPECT_EQ(fine.tolerance(), 0.5 * PointPairField::treeMinimumTolerance());
+  ASSERT_TRUE(fine.setTolerance(0.5 * crossover, kTreeFrom));
+  EXPECT_EQ(fine.tolerance(), 0.5 * crossover);
   EXPECT_EQ(fine.treeBytes(), 0u);
   Random pick(3);
   for (const Vec3& p : randomPoints(pick, 20, {}, 1.5))
   {
     EXPECT_EQ(direct.generatorAt(p).c, fine.generatorAt(p).c);
   }
-  ASSERT_TRUE(fine.setTolerance(PointPairField::treeMinimumTolerance(), kTreeFrom));
+  ASSERT_TRUE(fine.setTolerance(crossover, kTreeFrom));
   EXPECT_GT(fine.treeBytes(), 0u);
+  // Below kHighDegreeFrom generators the largest degree is kDegree at every tolerance.
+  using Tree = cga::detail::GeneratorTree;
+  EXPECT_EQ(fine.treeDegree(), Tree::kDegree);
+  ASSERT_TRUE(fine.setTolerance(1e-9, kTreeFrom, 0.0));
+  EXPECT_EQ(fine.treeDegree(), Tree::kDegree);
   const auto points = randomPoints(pick, 50, {}, 1.5);
-  EXPECT_LE(worstRelativeError(generators, points, PointPairField::treeMinimumTolerance()).boundedError, 1.0);
+  EXPECT_LE(worstRelativeError(generators, points, crossover).boundedError, 1.0);
 }
 
 TEST(GeneratorTree, NonFiniteGeneratorsAreSkippedAndNonFinitePointsLeftInPlace)
@@ -478,7 +488,7 @@ TEST(GeneratorTree, BadInputsKeepTheBound)
 // (x = 1 at q -> 0: the tail is about (p + 2) q^(p+1), the Chebyshev form's leading term).
 TEST(GeneratorTree, RemainderBoundHoldsForTheSeriesTail)
 {
-  for (int degree = 0; degree <= 10; ++degree)
+  for (int degree = 0; degree <= cga::detail::GeneratorTree::kMaxDegree; ++degree)
   {
     for (const double q : { 0.01, 0.1, 0.3, 0.5, 0.7, 0.9 })
     {
@@ -523,3 +533,151 @@ TEST(GeneratorTree, RemainderBoundHoldsForTheSeriesTail)
   }
 }
 } // namespace
+
+namespace
+{
+// sum_{j > degree} q^j U_j(x) term by term in long double, until the terms' bound (j + 1) q^j is
+// below 1e-30 (the Chebyshev polynomials by their recurrence).
+long double chebyshevTail(int degree, long double q, long double x)
+{
+  long double tail = 0.0L, previous = 0.0L, current = 1.0L, power = 1.0L;
+  for (int j = 0; j <= degree || (j + 1) * power > 1e-30L; ++j)
+  {
+    if (j > degree)
+    {
+      tail += power * current;
+    }
+    const long double next = 2.0L * x * current - previous;
+    previous = current;
+    current = next;
+    power *= q;
+  }
+  return tail;
+}
+} // namespace
+
+// The absolute moments' combination (src/TreeRemainder.h) against the sum it stands for,
+// sum_i m_i (a s_i + b)^n, summed per generator in long double.
+TEST(GeneratorTree, SpreadMomentIsTheSumOverTheGenerators)
+{
+  Random random(11);
+  constexpr int kPowers = 12;
+  std::vector<double> s(300), m(300);
+  double moments[kPowers] = {};
+  for (std::size_t i = 0; i < s.size(); ++i)
+  {
+    s[i] = i == 0 ? 1.0 : (i == 1 ? 0.0 : random.uniform(0.0, 1.0));
+    m[i] = random.uniform(0.0, 2.0);
+    for (int k = 0; k < kPowers; ++k)
+    {
+      moments[k] += m[i] * std::pow(s[i], k);
+    }
+  }
+  for (const double r : { 0.0, 0.25, 1.0, 3.0 })
+  {
+    const double a = 1.0 / (1.0 + r), b = r / (1.0 + r);
+    for (int n = 0; n < kPowers; ++n)
+    {
+      long double direct = 0.0L;
+      for (std::size_t i = 0; i < s.size(); ++i)
+      {
+        direct += m[i] * std::pow(static_cast<long double>(a) * s[i] + b, n);
+      }
+      EXPECT_NEAR(cga::detail::treeSpreadMoment(moments, n, a, b), static_cast<double>(direct),
+                  1e-13 * static_cast<double>(direct))
+        << "power " << n << " r " << r;
+    }
+  }
+  // Coincident generators (radius 0): a = 0, b = 1 gives the plain sum at every power.
+  EXPECT_EQ(cga::detail::treeSpreadMoment(moments, 7, 0.0, 1.0), moments[0]);
+}
+
+// The node's bound with its generators' spread: for generators y_i within rho of a node's center
+// and a point y_t within r of a cube's center (d between the centers), each kernel
+// 1/(k |d - w_i|^2 + eps), w_i = y_i - y_t, is D^-1 sum_j (sqrt(kappa) |w_i|)^j U_j(x_i); the
+// weighted sum of the degree-p tails (long double, term by term) must stay within
+// R_p(q, S) treeSpreadMoment(A, p + 1, rho/(rho + r), r/(rho + r)), q = (rho + r) sqrt(kappa), and
+// for generators spread through the node the spread must be well below the plain sum of weights
+// the bound used before (sum_i m_i, a node of all its generators at its rim).
+TEST(GeneratorTree, SpreadRemainderBoundHoldsForTheGeneratorsTails)
+{
+  Random random(5);
+  constexpr int kPowers = cga::detail::GeneratorTree::kMaxDegree + 2;
+  const double rho = 1.0, falloff = 1.0;
+  for (const double epsilon : { 0.05, 1e-3 })
+  {
+    for (const double r : { 0.0, 0.3, 1.2 })
+    {
+      for (const double distance : { 2.0, 3.5, 8.0 })
+      {
+        const Vec3 d = distance * random.unit();
+        const double D = falloff * dot(d, d) + epsilon;
+        const double rootKappa = std::sqrt(falloff / D);
+        const double q = (rho + r) * rootKappa;
+        if (q > 0.9)
+        {
+          continue;
+        }
+        const double S = std::sqrt(D / epsilon);
+        const Vec3 target = r * random.uniform(0.0, 1.0) * random.unit();
+        std::vector<Vec3> y;
+        std::vector<double> m;
+        double moments[kPowers] = {}, plain = 0.0;
+        for (int i = 0; i < 200; ++i)
+        {
+          // One generator at the rim, toward the point (the collinear worst case), the others spread.
+          const Vec3 at = i == 0 ? -rho * d / norm(d) : rho * std::cbrt(random.uniform(0.0, 1.0)) * random.unit();
+          y.push_back(at);
+          m.push_back(random.uniform(0.1, 1.0));
+          for (int k = 0; k < kPowers; ++k)
+          {
+            moments[k] += m.back() * std::pow(norm(at) / rho, k);
+          }
+          plain += m.back();
+        }
+        for (int degree = 0; degree <= cga::detail::GeneratorTree::kMaxDegree; ++degree)
+        {
+          long double tails = 0.0L;
+          for (std::size_t i = 0; i < y.size(); ++i)
+          {
+            const Vec3 w = y[i] - target;
+            const double length = norm(w);
+            const long double x = length > 0.0 ? rootKappa * dot(d, w) / length : 0.0;
+            tails += m[i] * std::fabs(chebyshevTail(degree, static_cast<long double>(rootKappa) * length, x));
+          }
+          const double remainder = cga::detail::treeRemainderBound(degree, q, S);
+          const double spread = cga::detail::treeSpreadMoment(moments, degree + 1, rho / (rho + r), r / (rho + r));
+          EXPECT_LE(static_cast<double>(tails), remainder * spread * (1.0 + 1e-12))
+            << "degree " << degree << " r " << r << " |d| " << distance << " eps " << epsilon;
+          if (r == 0.0 && degree >= 5)
+          {
+            EXPECT_LT(spread, 0.5 * plain) << "degree " << degree;
+          }
+        }
+      }
+    }
+  }
+}
+
+// From kHighDegreeFrom generators and below kHighDegreeBelow the tree expands to kMaxDegree: the
+// bound at points through and around the generators, against the direct sum.
+TEST(GeneratorTree, ManyGeneratorsAtTightTolerancesUseTheHighDegreeAndMeetTheBound)
+{
+  using Tree = cga::detail::GeneratorTree;
+  Random random(100);
+  const auto generators = randomPointPairs(random, Tree::kHighDegreeFrom, {}, 1.5);
+  std::vector<Vec3> points = randomPoints(random, 8, {}, 2.0);
+  for (int i = 0; i < 4; ++i)
+  {
+    points.push_back(generators[static_cast<std::size_t>(i * 997)].location);
+  }
+  PointPairField field(generators.data(), generators.size(), kFalloff, kEpsilon);
+  ASSERT_TRUE(field.setTolerance(Tree::kHighDegreeBelow, kTreeFrom, 0.0));
+  EXPECT_EQ(field.treeDegree(), Tree::kDegree);
+  for (const double tolerance : { 1e-4, 1e-7 })
+  {
+    ASSERT_TRUE(field.setTolerance(tolerance, kTreeFrom, 0.0));
+    EXPECT_EQ(field.treeDegree(), Tree::kMaxDegree);
+    EXPECT_LE(worstRelativeError(generators, points, tolerance).boundedError, 1.0) << "tolerance " << tolerance;
+  }
+}

@@ -74,8 +74,8 @@ GeneratorTree::GeneratorTree(const double* generators,
   , Epsilon(epsilon)
 {
   // The largest degree: each use of a node takes the least degree its budget allows (degreeFor),
-  // so a higher one costs only where it lets a larger node be used.
-  this->Degree = kMaxDegree;
+  // but the nodes worth moments grow with it (DirectBelow), which pays only at tight budgets.
+  this->Degree = tolerance < kHighDegreeBelow && count >= kHighDegreeFrom ? kMaxDegree : kDegree;
   this->QLimit = kLargestOpening;
   const int P = this->Degree;
   // Monomials in graded order, each one power above a lower one.
@@ -195,9 +195,8 @@ GeneratorTree::GeneratorTree(const double* generators,
   this->chooseCells();
 }
 
-// Each node's motion bound (its leaves' generators moved to the node's center; a parent's from
-// its children's, |p - c_child| <= l + |c - c_child|), its weights (GeneratorTree.h), and the
-// displacement scale V.
+// Each node's weights (GeneratorTree.h; a parent's are its children's), its absolute moments,
+// and the displacement scale V.
 void GeneratorTree::computeBudgets(double tolerance)
 {
   if (this->Nodes.empty())
@@ -209,6 +208,7 @@ void GeneratorTree::computeBudgets(double tolerance)
   // length, where it is finite and positive).
   const double length = std::sqrt(this->Epsilon / this->Falloff);
   const double l = std::isfinite(length) && length > 0.0 ? length : 1.0;
+  std::vector<double> ownMotions(3 * this->Nodes[0].count); // per generator, about its location
   for (std::size_t index = this->Nodes.size(); index-- > 0;) // children (later in preorder) first
   {
     Node& node = this->Nodes[index];
@@ -219,9 +219,7 @@ void GeneratorTree::computeBudgets(double tolerance)
         const double* g = this->Generators.data() + i * kStride;
         Bivector b;
         std::copy_n(g + 3, kComponents, b.c.data());
-        addMotion(translatedBivector(b, { -node.center[0], -node.center[1], -node.center[2] }),
-                  node.motion);
-        double own[3] = { 0.0, 0.0, 0.0 };
+        double* own = ownMotions.data() + 3 * i;
         addMotion(translatedBivector(b, { -g[0], -g[1], -g[2] }), own);
         const double a = own[0] + 0.5 * own[1] * l;
         const double bb = this->Falloff > 0.0 ? own[2] + 0.5 * own[1] / l : 0.0;
@@ -234,15 +232,44 @@ void GeneratorTree::computeBudgets(double tolerance)
     for (int child : node.children)
     {
       const Node& c = this->Nodes[static_cast<std::size_t>(child)];
-      const double dx = c.center[0] - node.center[0], dy = c.center[1] - node.center[1],
-                   dz = c.center[2] - node.center[2];
-      const double delta = std::sqrt(dx * dx + dy * dy + dz * dz);
-      node.motion[0] += c.motion[0] + c.motion[1] * delta + c.motion[2] * delta * delta;
-      node.motion[1] += c.motion[1] + 2.0 * c.motion[2] * delta;
-      node.motion[2] += c.motion[2];
       for (int w = 0; w < 4; ++w)
       {
         node.weights[w] += c.weights[w];
+      }
+    }
+  }
+  // The absolute moments of the nodes with moments: each generator's motion bound about the node's
+  // center, weighted by powers of its distance r from it over the radius. With |p - x_i| <= l + r
+  // for |p - center| <= l, its own bound about x_i gives
+  //   m0 + m1 (l + r) + m2 (l + r)^2 = (m0 + m1 r + m2 r^2) + (m1 + 2 m2 r) l + m2 l^2,
+  // exact for the transversion of a point pair about its location (the parts moved to the center
+  // bound it alike), and no more than the triangle inequality's loss for the other parts.
+  for (Node& node : this->Nodes)
+  {
+    if (node.moments < 0)
+    {
+      continue;
+    }
+    node.spread = static_cast<long>(this->Spread.size());
+    this->Spread.resize(this->Spread.size() + 3 * kSpreadPowers, 0.0);
+    double* spread = this->Spread.data() + node.spread;
+    for (std::size_t i = node.first; i < node.first + node.count; ++i)
+    {
+      const double* g = this->Generators.data() + i * kStride;
+      const double dx = g[0] - node.center[0], dy = g[1] - node.center[1], dz = g[2] - node.center[2];
+      const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+      const double* own = ownMotions.data() + 3 * i;
+      const double motion[3] = { own[0] + (own[1] + own[2] * r) * r, own[1] + 2.0 * own[2] * r, own[2] };
+      // s <= 1: the radius is the largest of these distances, computed alike (build).
+      const double s = node.radius > 0.0 ? r / node.radius : 0.0;
+      double power = 1.0;
+      for (int j = 0; j < kSpreadPowers; ++j)
+      {
+        for (int part = 0; part < 3; ++part)
+        {
+          spread[part * kSpreadPowers + j] += motion[part] * power;
+        }
+        power *= s;
       }
     }
   }
@@ -322,19 +349,30 @@ double GeneratorTree::shareOf(const Node& node, double distance, double radius, 
   return std::isfinite(share) ? share : 0.0;
 }
 
-int GeneratorTree::degreeFor(const Node& node, double q, double D, double reach, double share) const
+int GeneratorTree::degreeFor(const Node& node, double q, double D, double reach, double share,
+                             double targetRadius) const
 {
   if (!(q <= this->QLimit))
   {
     return -1;
   }
-  const double motion = node.motion[0] + (node.motion[1] + node.motion[2] * reach) * reach;
-  // R_p(q, S) motion <= share D (TreeRemainder.h), S = sqrt(D/eps) = 1/sqrt(1 - |u|^2).
+  // The generators' motions at l = reach, weighted by their distances' powers (TreeRemainder.h:
+  // a generator at |x_i - c| errs by ((|x_i - c| + r)/(rho + r))^(p+1) times the node's bound).
+  const double* spread = this->Spread.data() + node.spread;
+  double motions[kSpreadPowers];
+  for (int j = 0; j < kSpreadPowers; ++j)
+  {
+    motions[j] = spread[j] + (spread[kSpreadPowers + j] + spread[2 * kSpreadPowers + j] * reach) * reach;
+  }
+  const double extent = node.radius + targetRadius;
+  const double a = extent > 0.0 ? node.radius / extent : 1.0;
+  const double b = extent > 0.0 ? targetRadius / extent : 0.0;
+  // R_p(q, S) spread_(p+1) <= share D (TreeRemainder.h), S = sqrt(D/eps) = 1/sqrt(1 - |u|^2).
   const double allowed = share * D;
   const double S = this->Epsilon > 0.0 ? std::sqrt(D / this->Epsilon) : HUGE_VAL;
   for (int p = 0; p <= this->Degree; ++p)
   {
-    if (treeRemainderBound(p, q, S) * motion <= allowed)
+    if (treeRemainderBound(p, q, S) * treeSpreadMoment(motions, p + 1, a, b) <= allowed)
     {
       return p;
     }
@@ -550,8 +588,8 @@ void GeneratorTree::addNear(const int* starts, std::size_t count, const double* 
         : 0.0;
       // Every point is within `radius` of `center`: at least `nearest` and at most
       // distance + radius from the node's center.
-      const int degree = this->degreeFor(node, q, this->Falloff * nearest * nearest + this->Epsilon,
-                                         distance + radius, this->shareOf(node, distance, radius, weightSum));
+      const int degree = this->degreeFor(node, q, this->Falloff * nearest * nearest + this->Epsilon, distance + radius,
+                                         this->shareOf(node, distance, radius, weightSum), 0.0);
       if (degree >= 0)
       {
         this->addMultipole(node, this->Moments.data() + node.moments, degree, p, sums);
@@ -629,12 +667,18 @@ void GeneratorTree::addMultipole(const Node& node, const double* moments, int de
         scale[l] *= q[l];
       }
     }
+    // e scale once per monomial (the same bits: (e scale) mu, left to right, as before).
     const double* mu = moments + m * kComponents;
+    double term[L];
+    for (int l = 0; l < L; ++l)
+    {
+      term[l] = e[m][l] * scale[l];
+    }
     for (int c = 0; c < kComponents; ++c)
     {
       for (int l = 0; l < L; ++l)
       {
-        out[c][l] += e[m][l] * scale[l] * mu[c];
+        out[c][l] += term[l] * mu[c];
       }
     }
   }
@@ -716,7 +760,8 @@ void GeneratorTree::evaluate(const double* xyz, double* bivectors) const
 std::size_t GeneratorTree::bytes() const
 {
   return this->Generators.capacity() * sizeof(double) + this->Nodes.capacity() * sizeof(Node) +
-    this->Moments.capacity() * sizeof(double) + this->Terms.capacity() * sizeof(Term) +
+    this->Moments.capacity() * sizeof(double) + this->Spread.capacity() * sizeof(double) +
+    this->Terms.capacity() * sizeof(Term) +
     this->MonomialPowers.capacity() * sizeof(std::array<int, 3>) +
     4 * this->MonomialIndex.capacity() * sizeof(int) + this->ShiftTerms.capacity() * sizeof(ShiftTerm);
 }

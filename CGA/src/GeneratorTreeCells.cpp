@@ -236,7 +236,7 @@ void GeneratorTree::evaluateCell(CellWork& work, int level, std::size_t first, s
       const double D = this->Falloff * distance * distance + this->Epsilon;
       const double share = this->shareOf(node, distance, radius, weightSum);
       const int degree =
-        this->degreeFor(node, (node.radius + radius) * std::sqrt(this->Falloff / D), D, reach, share);
+        this->degreeFor(node, (node.radius + radius) * std::sqrt(this->Falloff / D), D, reach, share, radius);
       if (degree >= 0)
       {
         this->addSourceToLocal(node, center, radius, degree, local);
@@ -250,7 +250,7 @@ void GeneratorTree::evaluateCell(CellWork& work, int level, std::size_t first, s
     const double nearestD = this->Falloff * nearest * nearest + this->Epsilon;
     const bool usableBelow = node.moments >= 0 &&
       this->degreeFor(node, node.radius * std::sqrt(this->Falloff / nearestD), nearestD, reach,
-                      this->shareOf(node, distance, radius, weightSum)) >= 0;
+                      this->shareOf(node, distance, radius, weightSum), 0.0) >= 0;
     if (leaf || node.children[0] < 0 || node.moments < 0 || usableBelow || node.radius <= radius)
     {
       left.push_back(index);

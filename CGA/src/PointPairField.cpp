@@ -10,6 +10,7 @@
 #include "PointMapCore.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace cga
 {
@@ -250,6 +251,10 @@ bool PointPairField::setTolerance(double tolerance, std::size_t minimumGenerator
   }
   this->Tolerance = std::min(tolerance, maximumTolerance());
   this->Tree.reset();
+  if (minimumTolerance < 0.0)
+  {
+    minimumTolerance = treeMinimumTolerance(this->Count);
+  }
   if (this->Tolerance > 0.0 && this->Tolerance >= minimumTolerance &&
       this->Count >= std::max<std::size_t>(1, minimumGenerators))
   {
@@ -257,6 +262,12 @@ bool PointPairField::setTolerance(double tolerance, std::size_t minimumGenerator
       this->Generators.data(), this->Count, this->Falloff, this->Epsilon, this->Tolerance);
   }
   return true;
+}
+
+double PointPairField::treeMinimumTolerance(std::size_t generators)
+{
+  const double count = static_cast<double>(std::max<std::size_t>(generators, 1));
+  return std::min(maximumTolerance(), 1e-4 * std::pow(10000.0 / count, 1.5));
 }
 
 std::size_t PointPairField::treeBytes() const

@@ -20,5 +20,32 @@ inline double treeRemainderBound(int degree, double q, double S)
   const double geometric = S < HUGE_VAL ? S * power / (1.0 - q) : HUGE_VAL;
   return geometric < chebyshev ? geometric : chebyshev;
 }
+
+/// The spread of a node's generators (Salmon and Warren's absolute moments): given
+/// moments[k] = sum_i m_i s_i^k for k = 0..power (m_i >= 0, s_i = |x_i - c|/rho in [0, 1]), returns
+///   sum_i m_i (a s_i + b)^power = sum_k C(power, k) a^k b^(power - k) moments[k]   (a, b >= 0).
+/// With a = rho/(rho + r), b = r/(rho + r) it is sum_i m_i ((|x_i - c| + r)/(rho + r))^power: the
+/// generators' own distances where the remainder bound takes the node's radius rho (plus r, a cube
+/// of points' radius). Each term of the remainder's series grows like q_i^j, so a generator at
+/// q_i = q (a s_i + b) <= q errs by at most (a s_i + b)^(p+1) times treeRemainderBound(p, q, S)
+/// (its factors besides q^(p+1) increase with q): the node errs by at most that bound times
+/// treeSpreadMoment(moments, p + 1, a, b) instead of times sum_i m_i.
+inline double treeSpreadMoment(const double* moments, int power, double a, double b)
+{
+  double sum = 0.0, binomial = 1.0, aPower = 1.0;
+  for (int k = 0; k <= power; ++k)
+  {
+    // b^(power - k) by repeated products (b = 0 gives 0^0 = 1 at k = power).
+    double bPower = 1.0;
+    for (int j = k; j < power; ++j)
+    {
+      bPower *= b;
+    }
+    sum += binomial * aPower * bPower * moments[k];
+    binomial = binomial * (power - k) / (k + 1);
+    aPower *= a;
+  }
+  return sum;
+}
 } // namespace detail
 } // namespace cga
