@@ -2,11 +2,15 @@
 // them with a high-precision reference (Testing/Python/exact_reference.py). Reads from stdin, for
 // each configuration:
 //   falloff epsilon strength generators points
-//   x y z dx dy dz weight        (one line per point-pair generator)
-//   px py pz                     (one line per point)
-// and prints per point the batch image (mapPoints), the pointwise image (map) and the Jacobian
-// d image / d p (mapWithJacobian, row-major), 17 digits each, or "unmapped" for a point any of
-// them leaves unchanged.
+//   kind x y z dx dy dz pitch weight     (one line per generator, kind 0 ... 4: GeneratorKind)
+//   5 x y z c0 ... c9 weight             (or a bivector given in space: its ten components)
+//   px py pz                             (one line per point)
+// and builds the field twice where it can: from FieldGenerator::of (the named constructors, which
+// the field moves from about the origin) or the given bivector, and from GeneratorParameters rows
+// (as the VTK classes pass them, built at x - c) when every generator has a kind. It prints per
+// point the first field's batch image (mapPoints), pointwise image (map) and Jacobian
+// d image / d p (mapWithJacobian, row-major), then the rows field's batch and pointwise images
+// (when there is one), 17 digits each, or "unmapped" for a point any of them leaves unchanged.
 //
 // With the argument "exponents" it maps given exponents instead (mapPointsByExponentials, the
 // curvature patch's map), reading "count" and then per point the ten Bivector components of b and
@@ -65,6 +69,52 @@ int mapExponents()
 }
 } // namespace
 
+namespace
+{
+constexpr int kBivectorGenerator = 5;
+
+// One generator line: its FieldGenerator, and its row when it has a kind. False on bad input.
+bool readGenerator(cga::FieldGenerator& field, cga::GeneratorParameters& row, bool& hasRow)
+{
+  int kind;
+  cga::Vec3 x;
+  if (std::scanf("%d %lf %lf %lf", &kind, &x.x, &x.y, &x.z) != 4)
+  {
+    return false;
+  }
+  if (kind == kBivectorGenerator)
+  {
+    cga::Bivector b;
+    for (double& c : b.c)
+    {
+      if (std::scanf("%lf", &c) != 1)
+      {
+        return false;
+      }
+    }
+    double weight;
+    if (std::scanf("%lf", &weight) != 1)
+    {
+      return false;
+    }
+    field = cga::FieldGenerator{ x, b, weight };
+    hasRow = false;
+    return true;
+  }
+  row.kind = static_cast<cga::GeneratorKind>(kind);
+  row.location = x;
+  if (!cga::isGeneratorKind(kind) ||
+    std::scanf("%lf %lf %lf %lf %lf", &row.direction.x, &row.direction.y, &row.direction.z,
+      &row.pitch, &row.weight) != 5)
+  {
+    return false;
+  }
+  field = cga::FieldGenerator::of(row.kind, x, row.direction, row.pitch, row.weight);
+  hasRow = true;
+  return true;
+}
+} // namespace
+
 int main(int argc, char** argv)
 {
   if (argc > 1 && std::strcmp(argv[1], "exponents") == 0)
@@ -76,16 +126,19 @@ int main(int argc, char** argv)
   while (std::scanf("%lf %lf %lf %d %d", &falloff, &epsilon, &strength, &generatorCount,
                     &pointCount) == 5)
   {
-    std::vector<cga::PointPairGenerator> generators(generatorCount);
-    for (cga::PointPairGenerator& g : generators)
+    std::vector<cga::FieldGenerator> generators(generatorCount);
+    std::vector<cga::GeneratorParameters> rows(generatorCount);
+    bool everyRow = true;
+    for (int g = 0; g < generatorCount; ++g)
     {
-      if (std::scanf("%lf %lf %lf %lf %lf %lf %lf", &g.location.x, &g.location.y, &g.location.z,
-                     &g.direction.x, &g.direction.y, &g.direction.z, &g.weight) != 7)
+      bool hasRow = false;
+      if (!readGenerator(generators[g], rows[g], hasRow))
       {
         return 2;
       }
+      everyRow = everyRow && hasRow;
     }
-    std::vector<double> points(3 * pointCount), batch(3 * pointCount);
+    std::vector<double> points(3 * pointCount), batch(3 * pointCount), rowsBatch(3 * pointCount);
     for (double& c : points)
     {
       if (std::scanf("%lf", &c) != 1)
@@ -93,15 +146,20 @@ int main(int argc, char** argv)
         return 2;
       }
     }
-    const cga::PointPairField field(generators, falloff, epsilon);
+    const cga::PointPairField field(generators.data(), generators.size(), falloff, epsilon);
+    const cga::PointPairField rowsField(everyRow ? rows.data() : nullptr,
+      everyRow ? rows.size() : 0, falloff, epsilon);
     field.mapPoints(points.data(), batch.data(), pointCount, strength, cga::ExponentialRule::Exact);
+    rowsField.mapPoints(
+      points.data(), rowsBatch.data(), pointCount, strength, cga::ExponentialRule::Exact);
     for (int i = 0; i < pointCount; ++i)
     {
       const cga::Vec3 p{ points[3 * i], points[3 * i + 1], points[3 * i + 2] };
-      cga::Vec3 pointwise, withJacobian;
+      cga::Vec3 pointwise, withJacobian, rowsPointwise;
       double jacobian[9];
       if (!field.map(p, strength, cga::ExponentialRule::Exact, pointwise) ||
-        !field.mapWithJacobian(p, strength, cga::ExponentialRule::Exact, withJacobian, jacobian))
+        !field.mapWithJacobian(p, strength, cga::ExponentialRule::Exact, withJacobian, jacobian) ||
+        (everyRow && !rowsField.map(p, strength, cga::ExponentialRule::Exact, rowsPointwise)))
       {
         std::printf("unmapped\n");
         continue;
@@ -111,6 +169,11 @@ int main(int argc, char** argv)
       for (const double entry : jacobian)
       {
         std::printf(" %.17g", entry);
+      }
+      if (everyRow)
+      {
+        std::printf(" %.17g %.17g %.17g %.17g %.17g %.17g", rowsBatch[3 * i], rowsBatch[3 * i + 1],
+          rowsBatch[3 * i + 2], rowsPointwise.x, rowsPointwise.y, rowsPointwise.z);
       }
       std::printf("\n");
     }

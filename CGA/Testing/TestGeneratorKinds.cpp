@@ -167,6 +167,65 @@ TEST(GeneratorKinds, PointOnALoneFixingGeneratorStaysOnItExactly)
   }
 }
 
+TEST(GeneratorKinds, AnEditedGeneratorIsUsedAsEditedNotItsStaleAtOrigin)
+{
+  // A named constructor's atOrigin is the same generator about the origin; a caller who edits the
+  // public bivector, location or atOrigin afterwards must get the edited generator, not the stale
+  // pair: the field then uses the bivector as given (as a FieldGenerator without atOrigin), to
+  // the bit. (The field used atOrigin unchecked before: every edit below was ignored.)
+  const Vec3 x{ 0.3, -1.7, 2.9 }, v{ 0.6, -0.8, 1.5 }, elsewhere{ -0.4, 0.2, 1.1 };
+  std::vector<FieldGenerator> edited;
+  FieldGenerator replaced = FieldGenerator::pointPair(x, v, 0.5);
+  replaced.bivector = FieldGenerator::rotation(x, v).bivector;
+  edited.push_back(replaced);
+  FieldGenerator scaled = FieldGenerator::of(GeneratorKind::Twist, x, v, 0.3, 0.5);
+  scaled.bivector *= 2.0;
+  edited.push_back(scaled);
+  FieldGenerator moved = FieldGenerator::dilation(x, 0.5);
+  moved.location = elsewhere;
+  edited.push_back(moved);
+  FieldGenerator staleOrigin = FieldGenerator::rotation(x, v, 0.5);
+  *staleOrigin.atOrigin *= 3.0;
+  edited.push_back(staleOrigin);
+  const Vec3 points[] = { x, elsewhere, { 1.0, 0.5, -0.25 }, x + Vec3{ 1e-3, 0.0, 2e-3 } };
+  for (const FieldGenerator& g : edited)
+  {
+    const FieldGenerator asGiven{ g.location, g.bivector, g.weight };
+    for (const double epsilon : { 1e-6, 1.0 })
+    {
+      const PointPairField field(&g, 1, 1.0, epsilon), reference(&asGiven, 1, 1.0, epsilon);
+      for (const Vec3 p : points)
+      {
+        const Bivector b = field.generatorAt(p), expected = reference.generatorAt(p);
+        for (int k = 0; k < Bivector::Count; ++k)
+        {
+          EXPECT_EQ(b[k], expected[k]) << k;
+        }
+        // (the dilation at eps 1e-6 refuses the points next to it, both fields alike)
+        Vec3 image, expectedImage;
+        const bool mapped = field.map(p, 0.7, ExponentialRule::Exact, image);
+        ASSERT_EQ(mapped, reference.map(p, 0.7, ExponentialRule::Exact, expectedImage));
+        if (!mapped)
+        {
+          continue;
+        }
+        EXPECT_EQ(image.x, expectedImage.x);
+        EXPECT_EQ(image.y, expectedImage.y);
+        EXPECT_EQ(image.z, expectedImage.z);
+      }
+    }
+  }
+  // Unedited, atOrigin is kept (the check accepts the named constructor's own pair): a point on
+  // the lone generator stays on it to the bit.
+  const FieldGenerator kept = FieldGenerator::pointPair(x, v, 0.5);
+  const PointPairField withOrigin(&kept, 1, 1.0, 1e-10);
+  Vec3 onKept;
+  ASSERT_TRUE(withOrigin.map(x, 1.0, ExponentialRule::Exact, onKept));
+  EXPECT_EQ(onKept.x, x.x);
+  EXPECT_EQ(onKept.y, x.y);
+  EXPECT_EQ(onKept.z, x.z);
+}
+
 TEST(GeneratorKinds, OneRotationTurnsAboutItsAxisByTheDocumentedAngle)
 {
   // The angle c, right-handed about v.

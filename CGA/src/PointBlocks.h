@@ -22,10 +22,10 @@ namespace cga
 namespace
 {
 /// Copies `count` points, xyz interleaved, from `in` to `out` (which may be `in`): the map without
-/// generators or at strength 0. finishPoint(index, finite) is called for each. Returns the count
+/// generators or at strength 0. onPointWritten(index, finite) is called for each. Returns the count
 /// of points not finite.
-template <typename In, typename Out, typename FinishPoint>
-std::size_t copyPoints(const In* in, Out* out, std::size_t count, FinishPoint&& finishPoint)
+template <typename In, typename Out, typename OnPointWritten>
+std::size_t copyPoints(const In* in, Out* out, std::size_t count, OnPointWritten&& onPointWritten)
 {
   std::size_t unchanged = 0;
   for (std::size_t i = 0; i < count; ++i)
@@ -38,7 +38,7 @@ std::size_t copyPoints(const In* in, Out* out, std::size_t count, FinishPoint&& 
     o[0] = static_cast<Out>(p[0]);
     o[1] = static_cast<Out>(p[1]);
     o[2] = static_cast<Out>(p[2]);
-    finishPoint(i, finite);
+    onPointWritten(i, finite);
   }
   return unchanged;
 }
@@ -75,10 +75,10 @@ BOOSTED_FORCE_INLINE std::size_t forEachBlock(
 /// relative to c in xyz, component-major; the unused lanes of the last block repeat its last
 /// point) into image and sets mapped[l] for each lane whose image (and whatever else it computes)
 /// is usable; then each point is written, its image or itself (counted) where not mapped, and
-/// finishPoint(index, lane, mapped) is called for it. Returns the count of points not mapped.
-template <typename In, typename Out, typename MapLanes, typename FinishPoint>
+/// onPointWritten(index, lane, mapped) is called for it. Returns the count of points not mapped.
+template <typename In, typename Out, typename MapLanes, typename OnPointWritten>
 std::size_t mapPointsInBlocks(Vec3 c, const In* in, Out* out, std::size_t count,
-  MapLanes&& mapLanes, FinishPoint&& finishPoint)
+  MapLanes&& mapLanes, OnPointWritten&& onPointWritten)
 {
   constexpr int L = kernel::kLanes;
   alignas(64) double xyz[3 * L];
@@ -109,7 +109,7 @@ std::size_t mapPointsInBlocks(Vec3 c, const In* in, Out* out, std::size_t count,
         o[1] = static_cast<Out>(p[1]);
         o[2] = static_cast<Out>(p[2]);
       }
-      finishPoint(i, l, mapped[l] != 0);
+      onPointWritten(i, l, mapped[l] != 0);
       return mapped[l] != 0;
     });
 }

@@ -45,7 +45,7 @@ Bivector halfDualLine(Vec3 x, Vec3 a)
   return b;
 }
 
-// Nothing after a point (mapPointsOf's finishPoint): mapPoints.
+// Nothing when a point is written (mapPointsOf's onPointWritten): mapPoints.
 const auto kNothingAfter = [](std::size_t, bool) {};
 
 // b += 1/2 d ni.
@@ -178,8 +178,32 @@ PointPairField::PointPairField(const FieldGenerator* generators,
   this->add(generators, nullptr, count);
 }
 
+namespace
+{
+// True when atOrigin moved to `location` is `bivector` to rounding: each component within 64 units
+// of 2^-53 of |atOrigin|max (1 + |location|)^2, the size of the translation's terms (a named
+// constructor's pair differs by a few units). A caller who edited `bivector`, `location` or
+// `atOrigin` after construction fails it by far.
+bool atOriginIsBivector(const FieldGenerator& g)
+{
+  const Bivector moved = translatedBivector(*g.atOrigin, g.location);
+  const double reach = 1.0 + norm(g.location);
+  const double tolerance = 64.0 * 0x1p-53 * g.atOrigin->maxAbs() * reach * reach;
+  for (int k = 0; k < Bivector::Count; ++k)
+  {
+    if (!(std::abs(moved[k] - g.bivector[k]) <= tolerance))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+} // namespace
+
 // `rows`, when given, are the rows `generators` were made of: their relative generators are built
-// at x_i - c rather than moved there (eps |x_i| instead of eps |x_i|^2).
+// at x_i - c rather than moved there (eps |x_i| instead of eps |x_i|^2). A FieldGenerator's
+// atOrigin is used only where it is its bivector to rounding (atOriginIsBivector): otherwise the
+// bivector, which the caller may have edited, is moved as given.
 void PointPairField::add(
   const FieldGenerator* generators, const GeneratorParameters* rows, std::size_t count)
 {
@@ -215,7 +239,7 @@ void PointPairField::add(
       row.location = location;
       relative = row.field().bivector;
     }
-    else if (g.atOrigin)
+    else if (g.atOrigin && atOriginIsBivector(g))
     {
       relative = translatedBivector(*g.atOrigin, location);
     }
@@ -348,15 +372,15 @@ bool PointPairField::map(Vec3 p, double strength, ExponentialRule rule, Vec3& ou
 namespace
 {
 // mapPoints' blocks (PointBlocks.h). With a tree, B(p) of each block comes from it and the kernel
-// maps with the given B. finishPoint(index, mapped) follows each point's write.
-template <typename In, typename Out, typename FinishPoint>
+// maps with the given B. onPointWritten(index, mapped) follows each point's write.
+template <typename In, typename Out, typename OnPointWritten>
 std::size_t mapPointsByKernel(const kernel::FieldArgs& args,
                               const detail::GeneratorTree* tree,
                               Vec3 c,
                               const In* in,
                               Out* out,
                               std::size_t count,
-                              FinishPoint&& finishPoint)
+                              OnPointWritten&& onPointWritten)
 {
   constexpr int L = kernel::kLanes;
   const kernel::MapBlock mapBlock = kernel::activeMapBlock();
@@ -394,7 +418,7 @@ std::size_t mapPointsByKernel(const kernel::FieldArgs& args,
     mapBlockBy(args, bivectors, xyz, image, mapped);
   };
   return mapPointsInBlocks(c, in, out, count, mapLanes,
-    [&finishPoint](std::size_t index, int, bool mapped) { finishPoint(index, mapped); });
+    [&onPointWritten](std::size_t index, int, bool mapped) { onPointWritten(index, mapped); });
 }
 
 bool finite3(double x, double y, double z)
@@ -404,17 +428,17 @@ bool finite3(double x, double y, double z)
 
 } // namespace
 
-// finishPoint(index, mapped) after each point is written (mapped: the point is finite).
-template <typename In, typename Out, typename FinishPoint>
+// onPointWritten(index, mapped) after each point is written (mapped: the point is finite).
+template <typename In, typename Out, typename OnPointWritten>
 std::size_t PointPairField::mapPointsOf(const In* in, Out* out, std::size_t count,
-  double strength, ExponentialRule rule, FinishPoint&& finishPoint) const
+  double strength, ExponentialRule rule, OnPointWritten&& onPointWritten) const
 {
   if (this->Count == 0 || strength == 0.0)
   {
-    return copyPoints(in, out, count, finishPoint);
+    return copyPoints(in, out, count, onPointWritten);
   }
   return mapPointsByKernel(
-    this->args(strength, rule), this->Tree.get(), this->Center, in, out, count, finishPoint);
+    this->args(strength, rule), this->Tree.get(), this->Center, in, out, count, onPointWritten);
 }
 
 template <typename In, typename Out>
@@ -425,7 +449,7 @@ PointPairField::DisplacementCounts PointPairField::mapPointsWithDisplacementsOf(
   std::size_t beyondRange = 0;
   // Each point right after its image is written, while its block is in cache (not in a second
   // pass over memory). `mapped` tells that the point is finite.
-  const auto finishPoint = [&](std::size_t index, bool mapped) {
+  const auto onPointWritten = [&](std::size_t index, bool mapped) {
     const In* p = in + 3 * index;
     const Out* o = out + 3 * index;
     Out* d = displacements + 3 * index;
@@ -446,7 +470,7 @@ PointPairField::DisplacementCounts PointPairField::mapPointsWithDisplacementsOf(
       (double(d[1]) - double(d[1])) + (double(d[2]) - double(d[2]));
     beyondRange += check == 0.0 ? 0 : 1;
   };
-  counts.unchanged = this->mapPointsOf(in, out, count, strength, rule, finishPoint);
+  counts.unchanged = this->mapPointsOf(in, out, count, strength, rule, onPointWritten);
   counts.beyondRange = beyondRange;
   return counts;
 }

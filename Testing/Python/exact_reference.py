@@ -1,11 +1,13 @@
-"""An independent high-precision reference for the Exact point map of a field of point pairs
-(docs/conventions.md section 3 item 9), from the definitions alone: no code of the project.
+"""An independent high-precision reference for the Exact point map of a field of generators of
+every kind (docs/conventions.md section 3 item 9, section 2 item 11), from the definitions alone:
+no code of the project.
 
 Vectors of R^{4,1} are 5-tuples over e1, e2, e3, e+, e- (metric +, +, +, +, -), no = (e- + e+)/2,
-ni = e- - e+, up(x) = no + x + |x|^2/2 ni, tau(x, v) = up(x) ^ (v + (v.x) ni). A bivector B acts on
+ni = e- - e+, up(x) = no + x + |x|^2/2 ni, tau(x, v) = up(x) ^ (v + (v.x) ni), and the other kinds from their definitions (generator_bivector).
+A bivector B acts on
 vectors by X -> B X - X B = -2 X.B, with X.(a ^ b) = (X.a) b - (X.b) a, so the versor exp(B) acts as
 the matrix exponential of that 5x5 map (mpmath.expm). The image of p under
-K = exp(-strength B(p)), B(p) = sum_i w_i tau(x_i, v_i) / (k |p - x_i|^2 + eps), is fn(expm(-strength
+K = exp(-strength B(p)), B(p) = sum_i w_i G_i / (k |p - x_i|^2 + eps), is fn(expm(-strength
 A(B)) up(p)): the Euclidean part divided by -ni.Y. Every input double enters exactly (mpf(float)).
 """
 import random
@@ -39,12 +41,61 @@ def up(x):
     return combine((1, NO), (1, _vector(x)), (half_square, NI))
 
 
-def point_pair(x, v):
-    """tau(x, v) as the antisymmetric 5x5 array S of a ^ b (S[i][j] = a_i b_j - a_j b_i)."""
-    a = up(x)
-    vx = sum(mpf(v[i]) * mpf(x[i]) for i in range(3))
-    b = combine((1, _vector(v)), (vx, NI))
+def wedge(a, b):
+    """a ^ b as the antisymmetric 5x5 array S (S[i][j] = a_i b_j - a_j b_i)."""
     return [[a[i] * b[j] - a[j] * b[i] for j in range(5)] for i in range(5)]
+
+
+def add_to(total, coefficient, s):
+    for i in range(5):
+        for j in range(5):
+            total[i][j] += coefficient * s[i][j]
+
+
+def point_pair(x, v):
+    """tau(x, v) = up(x) ^ (v + (v.x) ni)."""
+    vx = sum(mpf(v[i]) * mpf(x[i]) for i in range(3))
+    return wedge(up(x), combine((1, _vector(v)), (vx, NI)))
+
+
+def translated(e, x):
+    """T(x) e ~T(x) for a vector e: e_i -> e_i + x_i ni, no -> up(x), ni -> ni (so up(y) -> up(x + y))."""
+    no_part = e[3] + e[4]                # e = ... + a no + b ni: e+ = a/2 - b, e- = a/2 + b
+    euclidean = sum(e[i] * mpf(x[i]) for i in range(3))
+    return combine((1, e), (no_part, up(x)), (-no_part, NO), (euclidean, NI))
+
+
+def half_dual_line(x, a):
+    """1/2 T(x) (a I3) ~T(x), I3 = e1 e2 e3: a I3 = a_z e1^e2 - a_y e1^e3 + a_x e2^e3."""
+    e = [translated(_vector(u), x) for u in ((1, 0, 0), (0, 1, 0), (0, 0, 1))]
+    total = [[mpf(0)] * 5 for _ in range(5)]
+    for coefficient, (i, j) in ((a[2], (0, 1)), (-a[1], (0, 2)), (a[0], (1, 2))):
+        add_to(total, mpf(coefficient) / 2, wedge(e[i], e[j]))
+    return total
+
+
+def generator_bivector(generator):
+    """G of a generator (kind, location, direction, pitch, weight) as an antisymmetric array, by
+    the definitions of docs/conventions.md section 2 item 11 (the direction's length multiplies G
+    for every kind); kind "bivector" takes the ten null-basis components as its direction."""
+    kind, x, v, pitch, _ = generator
+    if kind == "bivector":
+        return bivector_from_components(v)
+    if kind == "pair":
+        return point_pair(x, v)
+    if kind == "dilation":                  # -1/2 |v| up(x) ^ ni
+        length = mpmath.sqrt(sum(mpf(c) ** 2 for c in v))
+        s = wedge(up(x), NI)
+        return [[-length / 2 * c for c in row] for row in s]
+    if kind == "translation":               # 1/2 v ^ ni
+        s = wedge(_vector(v), NI)
+        return [[c / 2 for c in row] for row in s]
+    total = half_dual_line(x, v)           # rotation; a twist adds 1/2 pitch v ^ ni
+    if kind == "twist":
+        add_to(total, mpf(pitch) / 2, wedge(_vector(v), NI))
+    elif kind != "rotation":
+        raise ValueError(f"unknown kind {kind}")
+    return total
 
 
 def action(s):
@@ -53,21 +104,22 @@ def action(s):
 
 
 def field_bivector(generators, p, falloff, epsilon):
-    """B(p) as an antisymmetric array; generators are (location, direction, weight) of doubles."""
+    """B(p) as an antisymmetric array; generators are (kind, location, direction, pitch, weight)
+    of doubles (generator_bivector)."""
     total = [[mpf(0)] * 5 for _ in range(5)]
-    for x, v, w in generators:
+    for generator in generators:
+        x, w = generator[1], generator[4]
         d2 = sum((mpf(p[i]) - mpf(x[i])) ** 2 for i in range(3))
-        factor = mpf(w) / (mpf(falloff) * d2 + mpf(epsilon))
-        s = point_pair(x, v)
-        for i in range(5):
-            for j in range(5):
-                total[i][j] += factor * s[i][j]
+        add_to(total, mpf(w) / (mpf(falloff) * d2 + mpf(epsilon)), generator_bivector(generator))
     return total
 
 
 def image_of_bivector(s, p, strength, digits=DIGITS):
     """fn(expm(-strength A(s)) up(p)) as mpf triple. The entries of expm reach |A|^2 (and more)
-    while the image is of order 1, so the precision grows with |A|: 3 digits per decade."""
+    while the image is of order 1, so the precision grows with |A|: 3 digits per decade. (A
+    hyperbolic part's entries e^c and e^-c cancel next to its fixed points, a dilation's location:
+    there a rounding of B moves the image by e^c times it, far below double precision for the
+    tests' dilations, c <= 5.)"""
     scaled = [[-mpf(strength) * s[i][j] for j in range(5)] for i in range(5)]
     size = max(abs(c) for row in scaled for c in row)
     extra = 3 * max(0, int(mpmath.log10(size)) + 1) if size > 0 else 0

@@ -76,7 +76,9 @@ bool isGeneratorKind(int kind);
 /// G is given in space; the field moves it to its center c: the named constructors keep it about
 /// the origin too (atOrigin), which the field moves by x - c (eps |x|, exact for a lone generator,
 /// as rows given as PointPairGenerator or GeneratorParameters are built at x - c); a bivector given
-/// without it is moved by -c (translatedBivector), which rounds like |G| |x|^2.
+/// without it is moved by -c (translatedBivector), which rounds like |G| |x|^2. The fields are
+/// public: a caller may edit any of them, and the field then uses what was edited (atOrigin only
+/// where, moved to the location, it is the bivector to rounding; otherwise it is ignored).
 struct FieldGenerator
 {
   Vec3 location;
@@ -84,7 +86,10 @@ struct FieldGenerator
   double weight = 1.0;
   /// The same generator built about the origin, when known (every named constructor and of()
   /// set it): the field then moves it by x - c, which is exact for a lone generator (x = c), so a
-  /// point on it stays on it to the bit, as with rows. Without it the field moves `bivector` by -c.
+  /// point on it stays on it to the bit, as with rows. Without it, or when it is stale (moved to
+  /// `location` it differs from `bivector` by more than 64 units of 2^-53 of |atOrigin|
+  /// (1 + |location|)^2 in a component: `bivector`, `location` or it edited after construction),
+  /// the field moves `bivector` by -c.
   std::optional<Bivector> atOrigin;
 
   /// The null point pair tau(location, direction) (nullPointPairCompact).
@@ -300,9 +305,9 @@ private:
     Vec3 p, double strength, ExponentialRule rule, Vec3& out, double* byExponent) const;
   void add(const FieldGenerator* generators, const GeneratorParameters* rows, std::size_t count);
   kernel::FieldArgs args(double strength, ExponentialRule rule) const;
-  template <typename In, typename Out, typename FinishPoint>
+  template <typename In, typename Out, typename OnPointWritten>
   std::size_t mapPointsOf(const In* in, Out* out, std::size_t count, double strength,
-    ExponentialRule rule, FinishPoint&& finishPoint) const;
+    ExponentialRule rule, OnPointWritten&& onPointWritten) const;
   template <typename In, typename Out>
   DisplacementCounts mapPointsWithDisplacementsOf(const In* in, Out* out, Out* displacements,
     std::size_t count, double strength, ExponentialRule rule) const;
