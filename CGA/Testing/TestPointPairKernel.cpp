@@ -1,10 +1,14 @@
 // The vectorized block kernel behind PointPairField::mapPoints (src/PointPairKernel.h) against the
 // pointwise map(), on every instruction set this CPU runs: random fields of 1 to 64 generators,
-// both rules, points on generators, NaN and infinite points, huge weights, strength 0.
+// both rules, points on generators, NaN and infinite points, huge weights, strength 0; its
+// generator sum against the fused formula and a long double sum.
 #include "TestSupport.h"
 
 #include "cga/PointPairField.h"
 
+#include "PointPairKernelDispatch.h"
+
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -174,7 +178,8 @@ TEST(PointPairKernel, IllConditionedFieldsStayAccurateAndEqualThePointwiseMap)
 
 TEST(PointPairKernel, InstructionSetsGiveIdenticalBits)
 {
-  // Compiled without fused multiply-add, every instruction set rounds alike.
+  // No multiply-add the compiler fuses, explicit fused ones correctly rounded: every instruction
+  // set rounds alike.
   InstructionSetScope scope;
   Random random(82);
   const Case c = randomCase(random, 9, 1.0, 999);
@@ -282,5 +287,87 @@ TEST(PointPairKernel, UnknownInstructionSetIsRefused)
   const std::string before = mapPointsInstructionSet();
   EXPECT_FALSE(useMapPointsInstructionSet("no-such-isa"));
   EXPECT_EQ(mapPointsInstructionSet(), before);
+}
+
+// The generator sum B(p) of the kernel's pair loop (core::fieldBivector through
+// kernel::AddFieldBlock), on every instruction set: the same bits as the documented formula of
+// explicit fused multiply-adds (std::fma, correctly rounded: the test's own, not the kernel's),
+//   d2 = fma(dz, dz, fma(dy, dy, dx dx)), f = 1 / fma(d2, k, eps), sum_c = fma(f, g_c, sum_c),
+// and within its rounding bound of the sum in long double (the independent reference).
+TEST(PointPairKernel, GeneratorSumIsFusedAndTheSameOnEveryInstructionSet)
+{
+  InstructionSetScope scope;
+  constexpr int L = kernel::kLanes, kStride = kernel::kGeneratorStride, kComponents = 10;
+  Random random(83);
+  for (int generatorCount : { 1, 5, 64 })
+  {
+    std::vector<double> generators;
+    for (int i = 0; i < generatorCount; ++i)
+    {
+      const Vec3 x = random.vec3(1.5);
+      generators.insert(generators.end(), { x.x, x.y, x.z });
+      for (int c = 0; c < kComponents; ++c)
+      {
+        generators.push_back(random.uniform(-2.0, 2.0));
+      }
+    }
+    kernel::FieldArgs args;
+    args.generators = generators.data();
+    args.generatorCount = static_cast<std::size_t>(generatorCount);
+    args.falloff = random.uniform(0.1, 3.0);
+    args.epsilon = random.uniform(1e-3, 0.5);
+    double xyz[3 * L];
+    for (int l = 0; l < L; ++l)
+    {
+      const Vec3 p = random.vec3(2.0);
+      xyz[l] = p.x;
+      xyz[L + l] = p.y;
+      xyz[2 * L + l] = p.z;
+    }
+    // One lane on the first generator: d2 = 0.
+    for (int k = 0; k < 3; ++k)
+    {
+      xyz[k * L + L - 1] = generators[k];
+    }
+    double fused[kComponents * L] = {}, bound[kComponents * L] = {};
+    long double exact[kComponents * L] = {};
+    for (int l = 0; l < L; ++l)
+    {
+      for (int i = 0; i < generatorCount; ++i)
+      {
+        const double* g = generators.data() + i * kStride;
+        const double dx = xyz[l] - g[0], dy = xyz[L + l] - g[1], dz = xyz[2 * L + l] - g[2];
+        const double f = 1.0 / std::fma(std::fma(dz, dz, std::fma(dy, dy, dx * dx)), args.falloff, args.epsilon);
+        const long double dxe = static_cast<long double>(xyz[l]) - g[0];
+        const long double dye = static_cast<long double>(xyz[L + l]) - g[1];
+        const long double dze = static_cast<long double>(xyz[2 * L + l]) - g[2];
+        const long double fe = 1.0L / (args.falloff * (dxe * dxe + dye * dye + dze * dze) + args.epsilon);
+        for (int c = 0; c < kComponents; ++c)
+        {
+          fused[c * L + l] = std::fma(f, g[3 + c], fused[c * L + l]);
+          exact[c * L + l] += fe * g[3 + c];
+          bound[c * L + l] += std::fabs(f * g[3 + c]);
+        }
+      }
+    }
+    for (const std::string& set : kernel::availableInstructionSets())
+    {
+      ASSERT_TRUE(kernel::useInstructionSet(set));
+      double sums[kComponents * L] = {};
+      kernel::activeAddFieldBlock()(args, xyz, sums);
+      int differing = 0;
+      double worst = 0.0;
+      for (int j = 0; j < kComponents * L; ++j)
+      {
+        differing += sums[j] == fused[j] ? 0 : 1;
+        // Each term errs by a few units of 2^-53 (distance, denominator, division, product), the
+        // running sum by one per generator: (M + 8) 2^-53 of the sum of the terms' magnitudes.
+        const double error = static_cast<double>(std::fabs(sums[j] - exact[j]));
+        worst = std::max(worst, error / ((generatorCount + 8) * 0x1p-53 * bound[j]));
+      }
+      EXPECT_EQ(differing, 0) << set << " M=" << generatorCount;
+      EXPECT_LE(worst, 1.0) << set << " M=" << generatorCount;
+    }
+  }
 }
 } // namespace

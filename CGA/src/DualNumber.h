@@ -173,6 +173,29 @@ BOOSTED_FORCE_INLINE Dual<T, N> operator/(double a, const Dual<T, N>& b)
   return r;
 }
 
+/// a b + c with the value rounded once (LaneMath.h's fusedMultiplyAdd) and the tangents
+/// a' b + a b' + c' as fused multiply-adds too; the second factor a constant or a Dual.
+template <typename T, int N>
+BOOSTED_FORCE_INLINE Dual<T, N> fusedMultiplyAdd(const Dual<T, N>& a, double b, Dual<T, N> c)
+{
+  c.v = fusedMultiplyAdd(a.v, b, c.v);
+  for (int k = 0; k < N; ++k)
+  {
+    c.d[k] = fusedMultiplyAdd(a.d[k], b, c.d[k]);
+  }
+  return c;
+}
+template <typename T, int N>
+BOOSTED_FORCE_INLINE Dual<T, N> fusedMultiplyAdd(const Dual<T, N>& a, const Dual<T, N>& b, Dual<T, N> c)
+{
+  c.v = fusedMultiplyAdd(a.v, b.v, c.v);
+  for (int k = 0; k < N; ++k)
+  {
+    c.d[k] = fusedMultiplyAdd(a.d[k], b.v, fusedMultiplyAdd(a.v, b.d[k], c.d[k]));
+  }
+  return c;
+}
+
 // Comparisons and masks: the value's.
 template <typename T, int N>
 BOOSTED_FORCE_INLINE Mask<T> lessThan(const Dual<T, N>& a, const Dual<T, N>& b)

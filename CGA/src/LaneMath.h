@@ -1,6 +1,6 @@
 // Internal: what the templates of ExponentialScalars.h and PointMapCore.h need of their number type
-// T beyond + - * /: the lanes as an array (LaneArray), per-lane masks and selection, and the
-// elementary functions sqrt, cosh, sinh, tanh and sincos.
+// T beyond + - * /: the lanes as an array (LaneArray), per-lane masks and selection, the fused
+// multiply-add and the elementary functions sqrt, cosh, sinh, tanh and sincos.
 //
 // T is double (one lane: PointPairField::map, expExact, ...) or the block kernel's vector of lanes,
 // whose overloads PointPairKernelLanes.h defines in its instruction set's namespace (found by
@@ -163,6 +163,16 @@ template <typename T>
 inline T splat(double c)
 {
   return T{} + c;
+}
+
+/// a b + c rounded once (fused multiply-add): correctly rounded, so every instruction set gives the
+/// same bits, as the lane vector's (PointPairKernelLanes.h). Where the compiler may not assume the
+/// instruction (the baseline build) this is a call to libm's fma, which glibc resolves to the
+/// instruction on a CPU that has it and to an exact software fma otherwise (about 1.5 ns a call:
+/// hence PointPairField::map takes its B(p) from the kernel, kernel::activeFieldBivector).
+inline double fusedMultiplyAdd(double a, double b, double c)
+{
+  return __builtin_fma(a, b, c);
 }
 
 // The elementary functions for one lane: the same as every lane of the block kernel computes.

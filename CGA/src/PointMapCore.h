@@ -3,8 +3,9 @@
 // T is double (PointPairField::map, expPaper, expExact, sandwichGrade1) or the block kernel's
 // vector of lanes (PointPairKernelLanes.h, one point per lane): the pointwise map and the batch
 // kernel are two instantiations of these functions, so they agree bit for bit by construction
-// (the whole library is compiled with -ffp-contract=off: no fused multiply-add may round one
-// instantiation differently from the other).
+// (the whole library is compiled with -ffp-contract=off: no multiply-add the compiler fuses may
+// round one instantiation differently from the other; the explicit fusedMultiplyAdd of LaneMath.h
+// is correctly rounded, the same in both).
 //
 // T needs +, -, * and / (also with a double on either side), unary -, T{} == 0, and what
 // LaneMath.h lists (lanes, masks, selection, the elementary functions), found by
@@ -115,8 +116,10 @@ BOOSTED_FORCE_INLINE ValueOf<T> maxAbs(const T* b)
   return select(nan, splat<V>(__builtin_nan("")), m);
 }
 
-/// b = -strength B(p), B(p) = sum_i w_i G_i / (k |p - x_i|^2 + eps) (PointPairField::generatorAt
-/// without the factor).
+/// b = scale B(p), B(p) = sum_i w_i G_i / (k |p - x_i|^2 + eps) (PointPairField::generatorAt
+/// without the factor). The squared distance, the denominator and the sums are explicit fused
+/// multiply-adds (rounded once, so still the same bits on every instruction set): on the FMA pipes
+/// they leave the add pipes, which bound the loop otherwise, only the three subtractions.
 template <typename T>
 BOOSTED_FORCE_INLINE void fieldBivector(const kernel::FieldArgs& args, const T* p, double scale, T* b)
 {
@@ -125,17 +128,19 @@ BOOSTED_FORCE_INLINE void fieldBivector(const kernel::FieldArgs& args, const T* 
   {
     sum[c] = T{};
   }
-  const double falloff = args.falloff, epsilon = args.epsilon;
+  const double falloff = args.falloff;
+  const T epsilon = splat<T>(args.epsilon);
   for (std::size_t i = 0; i < args.generatorCount; ++i)
   {
     const double* g = args.generators + i * kernel::kGeneratorStride;
     const T dx = p[0] - g[0];
     const T dy = p[1] - g[1];
     const T dz = p[2] - g[2];
-    const T factor = 1.0 / (falloff * (dx * dx + dy * dy + dz * dz) + epsilon);
+    const T distance2 = fusedMultiplyAdd(dz, dz, fusedMultiplyAdd(dy, dy, dx * dx));
+    const T factor = 1.0 / fusedMultiplyAdd(distance2, falloff, epsilon);
     for (int c = 0; c < kBivector; ++c)
     {
-      sum[c] = sum[c] + g[3 + c] * factor;
+      sum[c] = fusedMultiplyAdd(factor, g[3 + c], sum[c]);
     }
   }
   for (int c = 0; c < kBivector; ++c)

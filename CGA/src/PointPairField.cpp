@@ -321,7 +321,7 @@ Bivector PointPairField::generatorAt(Vec3 p) const
   else
   {
     const double xyz[3] = { relative.x, relative.y, relative.z };
-    core::fieldBivector(this->args(1.0, ExponentialRule::Exact), xyz, 1.0, b.c.data());
+    kernel::activeFieldBivector(this->args(1.0, ExponentialRule::Exact), xyz, 1.0, b.c.data());
   }
   return translatedBivector(b, this->Center); // back in space
 }
@@ -353,14 +353,18 @@ bool PointPairField::map(Vec3 p, double strength, ExponentialRule rule, Vec3& ou
     out = { image[0], image[1], image[2] };
     return true;
   }
-  // core::mapPoint for one point: the block kernel instantiates the same template for its lanes.
-  // Relative to the center, as the block kernel's lanes (PointBlocks.h); the image is p plus
-  // the relative displacement, so that a point the map leaves in place comes back to the bit.
+  // core::mapPoint for one point (the block kernel instantiates the same template for its lanes),
+  // its B(p) by the kernel's generator loop (activeFieldBivector: the same bits, on the FMA
+  // instruction). Relative to the center, as the block kernel's lanes (PointBlocks.h); the image
+  // is p plus the relative displacement, so that a point the map leaves in place comes back to
+  // the bit.
   const Vec3 c = this->Center;
   const double xyz[3] = { p.x - c.x, p.y - c.y, p.z - c.z };
-  double image[3];
+  const kernel::FieldArgs args = this->args(strength, rule);
+  double b[kernel::kBivectorComponents], image[3];
+  kernel::activeFieldBivector(args, xyz, -strength, b);
   bool mapped = false;
-  core::mapPoint(this->args(strength, rule), xyz, image, &mapped);
+  core::mapPointBy(args, b, xyz, image, &mapped);
   if (!mapped)
   {
     return false;

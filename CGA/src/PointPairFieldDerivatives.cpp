@@ -209,7 +209,7 @@ bool PointPairField::mapWithExponentDerivative(
   const double relative[3] = { p.x - c.x, p.y - c.y, p.z - c.z };
   const kernel::FieldArgs args = this->args(strength, rule);
   double b[kBivector];
-  core::fieldBivector(args, relative, -strength, b);
+  kernel::activeFieldBivector(args, relative, -strength, b);
   Tangent exponent[kBivector], xyz[3], image[3];
   for (int k = 0; k < kBivector; ++k)
   {

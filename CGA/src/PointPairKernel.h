@@ -21,9 +21,12 @@ namespace kernel
 /// Points per block. Eight doubles fill one AVX-512 register, two AVX2 or four SSE2 registers.
 constexpr int kLanes = 8;
 
+/// Components of a bivector (Compact.h order): of B(p) and of each weighted generator w G.
+constexpr int kBivectorComponents = 10;
+
 /// Doubles per generator in FieldArgs::generators, the field's one layout: location x, y, z,
 /// then the ten Bivector components (Compact.h order) of the weighted generator w G.
-constexpr int kGeneratorStride = 13;
+constexpr int kGeneratorStride = 3 + kBivectorComponents;
 
 /// B(p) = sum_i w_i G_i / (k |p - x_i|^2 + eps) and what K = exp(-strength B(p)) needs: everything
 /// one evaluation of the map, pointwise (PointPairField::map) or per block, reads.

@@ -6,4 +6,5 @@
 #define BOOSTED_KERNEL_VECTOR_BYTES 32
 #define BOOSTED_KERNEL_SLEEF(name) Sleef_cinz_##name##d4_u10avx
 #define BOOSTED_KERNEL_SQRT _mm256_sqrt_pd
+#define BOOSTED_KERNEL_FMA _mm256_fmadd_pd
 #include "PointPairKernelLanes.h"

@@ -119,6 +119,24 @@ AddFieldBlock activeAddFieldBlock()
   return kCandidates[choice().load(std::memory_order_relaxed)].addField;
 }
 
+void activeFieldBivector(const FieldArgs& args, const double* p, double scale, double* b)
+{
+  // Every lane holds p; the sums start at +0, so adding them to 0 changes no bit.
+  double xyz[3 * kLanes], sums[kBivectorComponents * kLanes] = {};
+  for (int k = 0; k < 3; ++k)
+  {
+    for (int l = 0; l < kLanes; ++l)
+    {
+      xyz[k * kLanes + l] = p[k];
+    }
+  }
+  activeAddFieldBlock()(args, xyz, sums);
+  for (int c = 0; c < kBivectorComponents; ++c)
+  {
+    b[c] = sums[c * kLanes] * scale;
+  }
+}
+
 std::vector<std::string> availableInstructionSets()
 {
   std::vector<std::string> names;

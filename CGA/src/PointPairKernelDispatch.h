@@ -15,6 +15,11 @@ MapBlockBy activeMapBlockBy();
 MapBlockJacobian activeMapBlockJacobian();
 MapBlockDirectional activeMapBlockDirectional();
 AddFieldBlock activeAddFieldBlock();
+/// b = scale B(p) of one point p (3 doubles) by the active kernel's generator loop: the bits of
+/// core::fieldBivector for double (its fused multiply-adds are correctly rounded), but on the
+/// FMA instruction where the CPU has one, not a call to libm's fma per term as the pointwise
+/// code compiled for the baseline makes.
+void activeFieldBivector(const FieldArgs& args, const double* p, double scale, double* b);
 std::vector<std::string> availableInstructionSets();
 std::string activeInstructionSet();
 bool useInstructionSet(const std::string& name);

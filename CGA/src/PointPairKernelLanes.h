@@ -92,6 +92,44 @@ BOOSTED_FORCE_INLINE LaneVector operator-(LaneVector a)
   return a;
 }
 
+// LaneMath.h's fusedMultiplyAdd on every lane: a b + c rounded once, the bits of the scalar fma.
+// The including file names its instruction (BOOSTED_KERNEL_FMA) where the instruction set has one;
+// elsewhere (the baseline: SSE2 has none) each lane calls libm's fma, correct and much slower.
+BOOSTED_FORCE_INLINE NativeVector fusedMultiplyAddPart(NativeVector a, NativeVector b, NativeVector c)
+{
+#ifdef BOOSTED_KERNEL_FMA
+  return BOOSTED_KERNEL_FMA(a, b, c);
+#else
+  for (int l = 0; l < static_cast<int>(sizeof(NativeVector) / sizeof(double)); ++l)
+  {
+    c[l] = __builtin_fma(a[l], b[l], c[l]);
+  }
+  return c;
+#endif
+}
+
+BOOSTED_FORCE_INLINE LaneVector fusedMultiplyAdd(const LaneVector& a, const LaneVector& b, LaneVector c)
+{
+  for (int i = 0; i < kParts; ++i)
+  {
+    c.part[i] = fusedMultiplyAddPart(a.part[i], b.part[i], c.part[i]);
+  }
+  return c;
+}
+
+BOOSTED_FORCE_INLINE LaneVector fusedMultiplyAdd(const LaneVector& a, double b, LaneVector c)
+{
+  // b in every lane as b - 0, which is b for every b (-0 included), so the compiler drops the
+  // subtraction and broadcasts b from memory; 0 + b is not b for b = -0 and would cost one add
+  // per call on the add pipes, copies into the lanes became a load and permutations.
+  const NativeVector factor = b - NativeVector{};
+  for (int i = 0; i < kParts; ++i)
+  {
+    c.part[i] = fusedMultiplyAddPart(a.part[i], factor, c.part[i]);
+  }
+  return c;
+}
+
 // The comparisons, mask logic and selection of LaneMath.h, lane by lane in vector instructions.
 #define BOOSTED_LANE_COMPARISON(name, op)                                                        \
   BOOSTED_FORCE_INLINE LaneMask name(const LaneVector& a, const LaneVector& b)                    \
