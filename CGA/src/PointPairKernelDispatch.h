@@ -15,6 +15,7 @@ MapBlockBy activeMapBlockBy();
 MapBlockJacobian activeMapBlockJacobian();
 MapBlockDirectional activeMapBlockDirectional();
 AddFieldBlock activeAddFieldBlock();
+MapDisplacedBlock activeMapDisplacedBlock();
 std::vector<std::string> availableInstructionSets();
 std::string activeInstructionSet();
 bool useInstructionSet(const std::string& name);
