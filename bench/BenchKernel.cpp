@@ -1,10 +1,12 @@
 // The batch kernel, PointPairField::mapPoints, on the 1,000,000 points of the shared mesh:
-// Kernel/<rule>/M:<generators>/threads:<n> (runOnThreads: chunks of 8192 points); and on the same
-// sheet at N = 10^4 ... 10^7 points, M = 16: KernelSize/Exact/M:16/N:<points>/threads:<n>; the
-// images with their Jacobians (mapPointsWithJacobians, the derivative's cost per point):
+// Kernel/<rule>/M:<generators>/threads:<n> (runOnThreads: guided chunks, 8192 to 1024 points);
+// and on the same sheet at N = 10^4 ... 10^7 points, M = 16:
+// KernelSize/Exact/M:16/N:<points>/threads:<n>; the images with their Jacobians
+// (mapPointsWithJacobians, the derivative's cost per point):
 // KernelJacobian/<rule>/M:<generators>/threads:<n>; the images with the derivatives along two
 // directions per point (mapPointsWithDirectionalDerivatives, what the filter's normals take):
-// KernelDirectional/<rule>/M:<generators>/threads:<n>.
+// KernelDirectional/<rule>/M:<generators>/threads:<n>; the images with the filter's
+// displacements (mapPointsWithDisplacements): KernelDisplacements/<rule>/M:<generators>/threads:<n>.
 #include "BenchSupport.h"
 
 #include <algorithm>
