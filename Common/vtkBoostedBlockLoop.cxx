@@ -30,7 +30,8 @@ std::vector<vtkIdType> vtkBoostedBlockLoop::ChunkBounds(
   for (vtkIdType begin = first; begin < last;)
   {
     const vtkIdType left = last - begin;
-    const vtkIdType size = std::min(left, std::max(smallest, std::min(largest, left / (4 * threads))));
+    const vtkIdType size =
+      std::min(left, std::max(smallest, std::min(largest, left / (4 * threads))));
     begin += size;
     bounds.push_back(begin);
   }

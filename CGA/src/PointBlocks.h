@@ -114,6 +114,18 @@ std::size_t mapPointsInBlocks(Vec3 c, const In* in, Out* out, std::size_t count,
     });
 }
 
+/// Whether a written image o and its displacement d are finite in Out (an image beyond the largest
+/// float, or a difference that overflows, is not): v - v is 0 for a finite v and NaN otherwise,
+/// so one comparison checks all six values without a branch each.
+template <typename Out>
+bool finiteImageAndDisplacement(const Out* o, const Out* d)
+{
+  const double check = (double(o[0]) - double(o[0])) + (double(o[1]) - double(o[1])) +
+    (double(o[2]) - double(o[2])) + (double(d[0]) - double(d[0])) +
+    (double(d[1]) - double(d[1])) + (double(d[2]) - double(d[2]));
+  return check == 0.0;
+}
+
 /// What mapPointsAndDisplacementsInBlocks found (PointPairField::DisplacementCounts).
 struct BlockDisplacementCounts
 {
@@ -202,10 +214,7 @@ BlockDisplacementCounts mapPointsAndDisplacementsInBlocks(Vec3 c, const In* in, 
       d[0] = static_cast<Out>(static_cast<double>(o[0]) - x);
       d[1] = static_cast<Out>(static_cast<double>(o[1]) - y);
       d[2] = static_cast<Out>(static_cast<double>(o[2]) - z);
-      const double check = (double(o[0]) - double(o[0])) + (double(o[1]) - double(o[1])) +
-        (double(o[2]) - double(o[2])) + (double(d[0]) - double(d[0])) +
-        (double(d[1]) - double(d[1])) + (double(d[2]) - double(d[2]));
-      beyondRange += check == 0.0 ? 0 : 1;
+      beyondRange += finiteImageAndDisplacement(o, d) ? 0 : 1;
       return false;
     });
   counts.beyondRange = beyondRange;

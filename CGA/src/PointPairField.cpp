@@ -486,12 +486,7 @@ PointPairField::DisplacementCounts PointPairField::mapPointsWithDisplacementsOf(
     d[0] = static_cast<Out>(o[0] - x);
     d[1] = static_cast<Out>(o[1] - y);
     d[2] = static_cast<Out>(o[2] - z);
-    // An image beyond the largest float, or a difference that overflows: v - v is 0 for a finite
-    // v and NaN otherwise, so one comparison checks all six values without a branch each.
-    const double check = (double(o[0]) - double(o[0])) + (double(o[1]) - double(o[1])) +
-      (double(o[2]) - double(o[2])) + (double(d[0]) - double(d[0])) +
-      (double(d[1]) - double(d[1])) + (double(d[2]) - double(d[2]));
-    beyondRange += check == 0.0 ? 0 : 1;
+    beyondRange += finiteImageAndDisplacement(o, d) ? 0 : 1;
   };
   counts.unchanged = copyPoints(in, out, count, finishPoint);
   counts.beyondRange = beyondRange;

@@ -45,7 +45,8 @@ bool hasAvx512()
 // Narrowest first.
 const Candidate kCandidates[] = {
   { "baseline", &baseline::mapBlock, &baseline::mapBlockBy, &baseline::mapBlockJacobian,
-    &baseline::mapBlockDirectional, &baseline::addFieldBlock, &baseline::mapDisplacedBlock, &always },
+    &baseline::mapBlockDirectional, &baseline::addFieldBlock, &baseline::mapDisplacedBlock,
+    &always },
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
   { "avx2", &avx2::mapBlock, &avx2::mapBlockBy, &avx2::mapBlockJacobian,
     &avx2::mapBlockDirectional, &avx2::addFieldBlock, &avx2::mapDisplacedBlock, &hasAvx2 },

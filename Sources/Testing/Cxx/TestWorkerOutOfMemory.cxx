@@ -107,7 +107,8 @@ TEST(WorkerOutOfMemory, TheBlockLoopsChunksCoverTheBlockLargestFirst)
     ASSERT_GE(bounds.size(), 2u);
     EXPECT_EQ(bounds.front(), c.first);
     EXPECT_EQ(bounds.back(), c.last);
-    const vtkIdType largest = std::max<vtkIdType>(1, (c.last - c.first + c.threads - 1) / c.threads / 16);
+    const vtkIdType largest =
+      std::max<vtkIdType>(1, (c.last - c.first + c.threads - 1) / c.threads / 16);
     const vtkIdType smallest = std::min(largest,
       std::max<vtkIdType>(1, vtkBoostedBlockLoop::MinimumChunkSamples / c.samplesPerItem));
     for (std::size_t i = 1; i < bounds.size(); ++i)
