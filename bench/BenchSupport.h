@@ -86,7 +86,8 @@ void perPointCount(benchmark::internal::Benchmark* benchmark);
 long long updateEachIteration(benchmark::State& state, vtkAlgorithm* algorithm, int threads);
 
 /// Runs work(first, last) over [0, count) on `threads` threads (the calling thread and
-/// threads - 1 std::threads), which take chunks of 8192 points in turn.
+/// threads - 1 std::threads), which take chunks in turn: a quarter of what is left per thread,
+/// from 8192 points down to 1024.
 void runOnThreads(int threads,
                   std::size_t count,
                   const std::function<void(std::size_t, std::size_t)>& work);

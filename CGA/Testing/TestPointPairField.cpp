@@ -336,6 +336,55 @@ TEST(PointPairField, DisplacementsAreTheImagesLessThePointsInEveryPrecision)
   checkDisplacements<double, double>(field, huge, 0.0, ExponentialRule::Exact, 0, 0, 0);
 }
 
+// Double points go through the kernel's own block with displacements (kernel::MapDisplacedBlock)
+// in whole blocks, the rest (the last partial block, the tree) through the lanes' generic pass:
+// both give mapPoints' images and out - in on every instruction set, also in place (out = in),
+// with points that are not finite inside whole blocks and in the last one.
+TEST(PointPairField, DisplacementsOfWholeBlocksOnEveryInstructionSetAndInPlace)
+{
+  Random random(77);
+  PointPairField field(randomGenerators(random, 4, 1.0), 1.0, 0.05);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> points;
+  for (int i = 0; i < 3 * 37; ++i) // 37 points: four whole blocks and 5
+  {
+    points.push_back(random.uniform(-2.0, 2.0));
+  }
+  points[3 * 8] = nan;       // point 8, the first of the second block
+  points[3 * 23 + 1] = inf;  // point 23, the last of the third block
+  points[3 * 35 + 2] = -inf; // point 35, in the last partial block
+  const std::string active = mapPointsInstructionSet();
+  for (const std::string& isa : mapPointsInstructionSets())
+  {
+    ASSERT_TRUE(useMapPointsInstructionSet(isa));
+    for (const double tolerance : { 0.0, 1e-3 })
+    {
+      // (with a tolerance, the generator tree: the generic pass for every point)
+      ASSERT_TRUE(field.setTolerance(tolerance, 1, 0.0));
+      for (ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
+      {
+        SCOPED_TRACE(isa + (tolerance > 0.0 ? " with the tree" : "") +
+          (rule == ExponentialRule::Exact ? " Exact" : " Paper"));
+        checkDisplacements<double, double>(field, points, 0.7, rule, 3, 3, 0);
+        std::vector<double> out(points.size()), displacements(points.size());
+        field.mapPointsWithDisplacements(
+          points.data(), out.data(), displacements.data(), 37, 0.7, rule);
+        std::vector<double> inPlace = points, inPlaceDisplacements(points.size());
+        const PointPairField::DisplacementCounts counts = field.mapPointsWithDisplacements(
+          inPlace.data(), inPlace.data(), inPlaceDisplacements.data(), 37, 0.7, rule);
+        EXPECT_EQ(counts.unchanged, 3u);
+        EXPECT_EQ(counts.notFinite, 3u);
+        EXPECT_EQ(std::memcmp(inPlace.data(), out.data(), out.size() * sizeof(double)), 0);
+        EXPECT_EQ(std::memcmp(inPlaceDisplacements.data(), displacements.data(),
+                    out.size() * sizeof(double)),
+          0);
+      }
+    }
+  }
+  ASSERT_TRUE(useMapPointsInstructionSet(active));
+}
+
 TEST(PointPairField, TranslatingPointsAndGeneratorsTranslatesTheImages)
 {
   // The map is translation covariant in the algebra; the field computes relative to its center

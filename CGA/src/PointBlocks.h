@@ -113,5 +113,112 @@ std::size_t mapPointsInBlocks(Vec3 c, const In* in, Out* out, std::size_t count,
       return mapped[l] != 0;
     });
 }
+
+/// Whether a written image o and its displacement d are finite in Out (an image beyond the largest
+/// float, or a difference that overflows, is not): v - v is 0 for a finite v and NaN otherwise,
+/// so one comparison checks all six values without a branch each.
+template <typename Out>
+bool finiteImageAndDisplacement(const Out* o, const Out* d)
+{
+  const double check = (double(o[0]) - double(o[0])) + (double(o[1]) - double(o[1])) +
+    (double(o[2]) - double(o[2])) + (double(d[0]) - double(d[0])) +
+    (double(d[1]) - double(d[1])) + (double(d[2]) - double(d[2]));
+  return check == 0.0;
+}
+
+/// What mapPointsAndDisplacementsInBlocks found (PointPairField::DisplacementCounts).
+struct BlockDisplacementCounts
+{
+  std::size_t unchanged = 0;
+  std::size_t notFinite = 0;
+  std::size_t beyondRange = 0;
+};
+
+/// mapPointsInBlocks with each point's displacement out - in (computed in double from the image
+/// as written, rounded to Out; 0 for a point that is not finite), counting the points not mapped,
+/// those of them not finite, and the finite ones whose image or displacement is not finite in Out.
+/// The images and displacements of a block are computed in lanes (component-major, as the
+/// kernel's), so that the compiler vectorizes them; then each point is written.
+template <typename In, typename Out, typename MapLanes>
+BlockDisplacementCounts mapPointsAndDisplacementsInBlocks(Vec3 c, const In* in, Out* out,
+  Out* displacements, std::size_t count, MapLanes&& mapLanes)
+{
+  constexpr int L = kernel::kLanes;
+  alignas(64) double point[3 * L];
+  alignas(64) double xyz[3 * L];
+  alignas(64) double image[3 * L];
+  alignas(64) Out images[3 * L];
+  alignas(64) Out shifts[3 * L];
+  std::uint8_t mapped[L];
+  const double center[3] = { c.x, c.y, c.z };
+  BlockDisplacementCounts counts;
+  std::size_t beyondRange = 0;
+  counts.unchanged = forEachBlock(
+    count,
+    [&](int l, std::size_t i) {
+      const In* p = in + 3 * i;
+      for (int k = 0; k < 3; ++k)
+      {
+        point[k * L + l] = static_cast<double>(p[k]);
+        xyz[k * L + l] = point[k * L + l] - center[k];
+      }
+    },
+    [&](std::size_t first, int n) {
+      mapLanes(first, n, xyz, image, mapped);
+      // Every lane as if mapped (a lane that is not is written below from its point).
+      for (int j = 0; j < 3 * L; ++j)
+      {
+        images[j] = static_cast<Out>(point[j] + (image[j] - xyz[j]));
+        shifts[j] = static_cast<Out>(static_cast<double>(images[j]) - point[j]);
+      }
+      // v - v is 0 for a finite v and NaN otherwise: one sum checks a lane's six values.
+      double finiteness[L] = {};
+      for (int k = 0; k < 3; ++k)
+      {
+        for (int l = 0; l < L; ++l)
+        {
+          const double o = static_cast<double>(images[k * L + l]);
+          const double d = static_cast<double>(shifts[k * L + l]);
+          finiteness[l] += (o - o) + (d - d);
+        }
+      }
+      for (int l = 0; l < n; ++l)
+      {
+        beyondRange += mapped[l] && finiteness[l] != 0.0 ? 1 : 0;
+      }
+    },
+    [&](std::size_t i, int l) {
+      Out* o = out + 3 * i;
+      Out* d = displacements + 3 * i;
+      if (mapped[l])
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          o[k] = images[k * L + l];
+          d[k] = shifts[k * L + l];
+        }
+        return true;
+      }
+      // Left in place (in may be out: then each coordinate onto itself).
+      const In* p = in + 3 * i;
+      const double x = point[l], y = point[L + l], z = point[2 * L + l];
+      o[0] = static_cast<Out>(p[0]);
+      o[1] = static_cast<Out>(p[1]);
+      o[2] = static_cast<Out>(p[2]);
+      if (!(std::isfinite(x) && std::isfinite(y) && std::isfinite(z)))
+      {
+        ++counts.notFinite;
+        d[0] = d[1] = d[2] = Out(0);
+        return false;
+      }
+      d[0] = static_cast<Out>(static_cast<double>(o[0]) - x);
+      d[1] = static_cast<Out>(static_cast<double>(o[1]) - y);
+      d[2] = static_cast<Out>(static_cast<double>(o[2]) - z);
+      beyondRange += finiteImageAndDisplacement(o, d) ? 0 : 1;
+      return false;
+    });
+  counts.beyondRange = beyondRange;
+  return counts;
+}
 } // namespace
 } // namespace cga

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace cga
 {
@@ -375,16 +376,16 @@ bool PointPairField::map(Vec3 p, double strength, ExponentialRule rule, Vec3& ou
 
 namespace
 {
-// mapPoints' blocks (PointBlocks.h). With a tree, B(p) of each block comes from it and the kernel
-// maps with the given B. onPointWritten(index, mapped) follows each point's write.
-template <typename In, typename Out, typename OnPointWritten>
-std::size_t mapPointsByKernel(const kernel::FieldArgs& args,
-                              const detail::GeneratorTree* tree,
-                              Vec3 c,
-                              const In* in,
-                              Out* out,
-                              std::size_t count,
-                              OnPointWritten&& onPointWritten)
+// mapPoints' blocks (PointBlocks.h): runBlocks(mapLanes) runs one of its block loops with the
+// kernel's mapLanes. With a tree, B(p) of each block comes from it and the kernel maps with the
+// given B.
+template <typename In, typename RunBlocks>
+auto mapPointsByKernel(const kernel::FieldArgs& args,
+                       const detail::GeneratorTree* tree,
+                       Vec3 c,
+                       const In* in,
+                       std::size_t count,
+                       RunBlocks&& runBlocks)
 {
   constexpr int L = kernel::kLanes;
   const kernel::MapBlock mapBlock = kernel::activeMapBlock();
@@ -421,13 +422,42 @@ std::size_t mapPointsByKernel(const kernel::FieldArgs& args,
     }
     mapBlockBy(args, bivectors, xyz, image, mapped);
   };
-  return mapPointsInBlocks(c, in, out, count, mapLanes,
-    [&onPointWritten](std::size_t index, int, bool mapped) { onPointWritten(index, mapped); });
+  return runBlocks(mapLanes);
 }
 
 bool finite3(double x, double y, double z)
 {
   return std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
+}
+
+// mapPointsWithDisplacements' whole blocks of double points, each in one call of the kernel
+// (kernel::MapDisplacedBlock: the images and displacements in its registers instead of a pass
+// of scalar code per point). Returns the points done: count less its last partial block.
+std::size_t mapWholeBlocksWithDisplacements(const kernel::FieldArgs& args, Vec3 c,
+  const double* in, double* out, double* displacements, std::size_t count,
+  BlockDisplacementCounts& counts)
+{
+  constexpr std::size_t L = kernel::kLanes;
+  const kernel::MapDisplacedBlock mapBlock = kernel::activeMapDisplacedBlock();
+  const double center[3] = { c.x, c.y, c.z };
+  std::uint8_t mapped[L];
+  const std::size_t whole = count - count % L;
+  for (std::size_t first = 0; first < whole; first += L)
+  {
+    double* o = out + 3 * first;
+    counts.beyondRange += static_cast<std::size_t>(
+      mapBlock(args, center, in + 3 * first, o, displacements + 3 * first, mapped));
+    for (std::size_t l = 0; l < L; ++l)
+    {
+      // A point left in place: not finite, or its image is not (then a finite point).
+      if (!mapped[l])
+      {
+        ++counts.unchanged;
+        counts.notFinite += finite3(o[3 * l], o[3 * l + 1], o[3 * l + 2]) ? 0 : 1;
+      }
+    }
+  }
+  return whole;
 }
 
 } // namespace
@@ -441,8 +471,12 @@ std::size_t PointPairField::mapPointsOf(const In* in, Out* out, std::size_t coun
   {
     return copyPoints(in, out, count, onPointWritten);
   }
-  return mapPointsByKernel(
-    this->args(strength, rule), this->Tree.get(), this->Center, in, out, count, onPointWritten);
+  const Vec3 c = this->Center;
+  return mapPointsByKernel(this->args(strength, rule), this->Tree.get(), c, in, count,
+    [&](const auto& mapLanes) {
+      return mapPointsInBlocks(c, in, out, count, mapLanes,
+        [&onPointWritten](std::size_t index, int, bool mapped) { onPointWritten(index, mapped); });
+    });
 }
 
 template <typename In, typename Out>
@@ -450,9 +484,33 @@ PointPairField::DisplacementCounts PointPairField::mapPointsWithDisplacementsOf(
   Out* out, Out* displacements, std::size_t count, double strength, ExponentialRule rule) const
 {
   DisplacementCounts counts;
+  if (this->Count > 0 && strength != 0.0)
+  {
+    const Vec3 c = this->Center;
+    const kernel::FieldArgs args = this->args(strength, rule);
+    BlockDisplacementCounts found;
+    std::size_t done = 0;
+    if constexpr (std::is_same<In, double>::value && std::is_same<Out, double>::value)
+    {
+      if (!this->Tree)
+      {
+        done = mapWholeBlocksWithDisplacements(args, c, in, out, displacements, count, found);
+      }
+    }
+    // The rest (the last partial block; float points; the tree) block by block in lanes.
+    const In* restIn = in + 3 * done;
+    const BlockDisplacementCounts rest = mapPointsByKernel(args, this->Tree.get(), c, restIn,
+      count - done, [&](const auto& mapLanes) {
+        return mapPointsAndDisplacementsInBlocks(
+          c, restIn, out + 3 * done, displacements + 3 * done, count - done, mapLanes);
+      });
+    counts.unchanged = found.unchanged + rest.unchanged;
+    counts.notFinite = found.notFinite + rest.notFinite;
+    counts.beyondRange = found.beyondRange + rest.beyondRange;
+    return counts;
+  }
+  // The points copied: each point's displacement right after it.
   std::size_t beyondRange = 0;
-  // Each point right after its image is written, while its block is in cache (not in a second
-  // pass over memory). `mapped` tells that the point is finite.
   const auto onPointWritten = [&](std::size_t index, bool mapped) {
     const In* p = in + 3 * index;
     const Out* o = out + 3 * index;
@@ -467,14 +525,9 @@ PointPairField::DisplacementCounts PointPairField::mapPointsWithDisplacementsOf(
     d[0] = static_cast<Out>(o[0] - x);
     d[1] = static_cast<Out>(o[1] - y);
     d[2] = static_cast<Out>(o[2] - z);
-    // An image beyond the largest float, or a difference that overflows: v - v is 0 for a finite
-    // v and NaN otherwise, so one comparison checks all six values without a branch each.
-    const double check = (double(o[0]) - double(o[0])) + (double(o[1]) - double(o[1])) +
-      (double(o[2]) - double(o[2])) + (double(d[0]) - double(d[0])) +
-      (double(d[1]) - double(d[1])) + (double(d[2]) - double(d[2]));
-    beyondRange += check == 0.0 ? 0 : 1;
+    beyondRange += finiteImageAndDisplacement(o, d) ? 0 : 1;
   };
-  counts.unchanged = this->mapPointsOf(in, out, count, strength, rule, onPointWritten);
+  counts.unchanged = copyPoints(in, out, count, onPointWritten);
   counts.beyondRange = beyondRange;
   return counts;
 }

@@ -83,6 +83,19 @@ using MapBlockDirectional = void (*)(const FieldArgs& args,
                                      double* derivatives,
                                      std::uint8_t* mapped);
 
+/// mapBlock on kLanes whole points read from `points` (x, y, z interleaved, in space) relative to
+/// center[3], written back in space: out receives p + (image - (p - c)) and displacements
+/// out - p, x, y, z interleaved; a lane whose mapped[l] is 0 (as mapBlock's) keeps p,
+/// displacement 0 (`points` may be `out`). Returns the count of mapped lanes whose image or
+/// displacement is not finite.
+/// The filter's pass (PointPairField::mapPointsWithDisplacements) in the kernel's registers.
+using MapDisplacedBlock = int (*)(const FieldArgs& args,
+                                  const double* center,
+                                  const double* points,
+                                  double* out,
+                                  double* displacements,
+                                  std::uint8_t* mapped);
+
 namespace baseline
 {
 void mapBlock(const FieldArgs&, const double*, double*, std::uint8_t*);
@@ -91,6 +104,8 @@ void mapBlockJacobian(const FieldArgs&, const double*, double*, double*, std::ui
 void mapBlockDirectional(
   const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
 void addFieldBlock(const FieldArgs&, const double*, double*);
+int mapDisplacedBlock(
+  const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
 }
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
 namespace avx2
@@ -101,6 +116,8 @@ void mapBlockJacobian(const FieldArgs&, const double*, double*, double*, std::ui
 void mapBlockDirectional(
   const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
 void addFieldBlock(const FieldArgs&, const double*, double*);
+int mapDisplacedBlock(
+  const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
 }
 namespace avx512
 {
@@ -110,6 +127,8 @@ void mapBlockJacobian(const FieldArgs&, const double*, double*, double*, std::ui
 void mapBlockDirectional(
   const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
 void addFieldBlock(const FieldArgs&, const double*, double*);
+int mapDisplacedBlock(
+  const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
 }
 #endif
 } // namespace kernel

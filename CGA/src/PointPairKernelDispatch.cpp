@@ -20,6 +20,7 @@ struct Candidate
   MapBlockJacobian blockJacobian;
   MapBlockDirectional blockDirectional;
   AddFieldBlock addField;
+  MapDisplacedBlock displacedBlock;
   bool (*supported)();
 };
 
@@ -44,12 +45,13 @@ bool hasAvx512()
 // Narrowest first.
 const Candidate kCandidates[] = {
   { "baseline", &baseline::mapBlock, &baseline::mapBlockBy, &baseline::mapBlockJacobian,
-    &baseline::mapBlockDirectional, &baseline::addFieldBlock, &always },
+    &baseline::mapBlockDirectional, &baseline::addFieldBlock, &baseline::mapDisplacedBlock,
+    &always },
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
   { "avx2", &avx2::mapBlock, &avx2::mapBlockBy, &avx2::mapBlockJacobian,
-    &avx2::mapBlockDirectional, &avx2::addFieldBlock, &hasAvx2 },
+    &avx2::mapBlockDirectional, &avx2::addFieldBlock, &avx2::mapDisplacedBlock, &hasAvx2 },
   { "avx512", &avx512::mapBlock, &avx512::mapBlockBy, &avx512::mapBlockJacobian,
-    &avx512::mapBlockDirectional, &avx512::addFieldBlock, &hasAvx512 },
+    &avx512::mapBlockDirectional, &avx512::addFieldBlock, &avx512::mapDisplacedBlock, &hasAvx512 },
 #endif
 };
 constexpr int kCandidateCount = sizeof(kCandidates) / sizeof(kCandidates[0]);
@@ -112,6 +114,11 @@ MapBlockJacobian activeMapBlockJacobian()
 MapBlockDirectional activeMapBlockDirectional()
 {
   return kCandidates[choice().load(std::memory_order_relaxed)].blockDirectional;
+}
+
+MapDisplacedBlock activeMapDisplacedBlock()
+{
+  return kCandidates[choice().load(std::memory_order_relaxed)].displacedBlock;
 }
 
 AddFieldBlock activeAddFieldBlock()

@@ -20,6 +20,7 @@ AddFieldBlock activeAddFieldBlock();
 /// FMA instruction where the CPU has one, not a call to libm's fma per term as the pointwise
 /// code compiled for the baseline makes.
 void activeFieldBivector(const FieldArgs& args, const double* p, double scale, double* b);
+MapDisplacedBlock activeMapDisplacedBlock();
 std::vector<std::string> availableInstructionSets();
 std::string activeInstructionSet();
 bool useInstructionSet(const std::string& name);

@@ -383,6 +383,67 @@ void mapBlock(const FieldArgs& args, const double* xyz, double* image, std::uint
     mapped[l] = ok[l] ? 1 : 0;
   }
 }
+int mapDisplacedBlock(const FieldArgs& args, const double* center, const double* points,
+  double* out, double* displacements, std::uint8_t* mapped)
+{
+  // The transposes as plain loops over the lanes, which the compiler turns into permutes.
+  alignas(64) double lanes[3 * L];
+  for (int l = 0; l < L; ++l)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      lanes[i * L + l] = points[3 * l + i];
+    }
+  }
+  LaneVector p[3], relative[3], image[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    fromLanes(lanes + i * L, p[i]);
+    relative[i] = p[i] - center[i];
+  }
+  bool ok[L];
+  core::mapPoint(args, relative, image, ok);
+  alignas(64) double okLanes[L];
+  for (int l = 0; l < L; ++l)
+  {
+    okLanes[l] = ok[l] ? 1.0 : 0.0;
+  }
+  LaneVector okVector;
+  fromLanes(okLanes, okVector);
+  const LaneVector zero = core::splat<LaneVector>(0.0);
+  const LaneMask isMapped = lessThan(zero, okVector);
+  // As mapPointsInBlocks writes an image, p + (image - (p - c)), and its displacement; a lane
+  // not mapped keeps its point, displacement 0.
+  alignas(64) double moved[3 * L], shift[3 * L];
+  LaneVector finiteness = zero;
+  for (int i = 0; i < 3; ++i)
+  {
+    const LaneVector o = p[i] + (image[i] - relative[i]);
+    const LaneVector d = o - p[i];
+    // v - v is 0 for a finite v and NaN otherwise.
+    finiteness = finiteness + ((o - o) + (d - d));
+    toLanes(select(isMapped, o, p[i]), moved + i * L);
+    toLanes(select(isMapped, d, zero), shift + i * L);
+  }
+  alignas(64) double finite[L];
+  toLanes(finiteness, finite);
+  int beyondRange = 0;
+  for (int l = 0; l < L; ++l)
+  {
+    mapped[l] = ok[l] ? 1 : 0;
+    beyondRange += ok[l] && finite[l] != 0.0 ? 1 : 0;
+  }
+  for (int l = 0; l < L; ++l)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      out[3 * l + i] = moved[i * L + l];
+      displacements[3 * l + i] = shift[i * L + l];
+    }
+  }
+  return beyondRange;
+}
+
 void addFieldBlock(const FieldArgs& args, const double* xyz, double* bivectors)
 {
   LaneVector p[3], b[core::kBivector];

@@ -8,6 +8,7 @@
 #include "ProgressLog.h"
 #include "TranslationChecks.h"
 #include "vtkAOSDataArrayTemplate.h"
+#include "vtkBoostedBlockLoop.h"
 #include "TestSupport.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -1219,11 +1220,12 @@ TEST(PointPairDeformationFilter, SinglePrecisionBeyondTheLargestFloatIsAnError)
 // The output is the same, bit for bit, on vtkSMPTools' Sequential backend and on STDThread with
 // one and two threads (vtkBoostedBlockLoop's blocks and chunks depend on the thread count), with
 // and without the normals' derivative path, on a mesh of more than one block of two threads
-// (vtkBoostedBlockLoop: 4 x 65,536 points per thread, 524,288) and of nine of one thread.
+// (vtkBoostedBlockLoop: 8 x 65,536 points per thread, 1,048,576) and of seventeen of one thread.
 TEST(PointPairDeformationFilter, TheOutputIsTheSameOnEveryBackendAndThreadCount)
 {
   Random random(91);
-  const vtkIdType blocks = 524288;
+  const vtkIdType blocks =
+    2 * vtkBoostedBlockLoop::ThreadedBlocks * vtkBoostedBlockLoop::SamplesPerBlock;
   vtkNew<vtkPolyData> mesh = randomMesh(random, static_cast<int>(blocks / 3 + 10000), 2.0);
   const std::vector<Generator> generators = randomGenerators(random, 3, 0.4);
   for (const bool normals : { false, true })

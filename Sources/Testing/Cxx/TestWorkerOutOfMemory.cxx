@@ -17,9 +17,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <new>
 #include <thread>
+#include <vector>
 
 namespace
 {
@@ -84,4 +86,45 @@ TEST(WorkerOutOfMemory, AGridSampleThatFailsToAllocateLeavesTheOutputEmpty)
   EXPECT_EQ(events.errors, 1) << events.lastError;
   EXPECT_EQ(output->GetNumberOfPoints(), 0);
   EXPECT_EQ(output->GetNumberOfCells(), 0);
+}
+
+// The chunks the threads take in turn (vtkBoostedBlockLoop::ChunkBounds): they cover the block
+// once, in order, largest first, none larger than a sixteenth of a thread's share nor smaller
+// than MinimumChunkSamples (but the last), for points, rows of samples, small and odd blocks.
+TEST(WorkerOutOfMemory, TheBlockLoopsChunksCoverTheBlockLargestFirst)
+{
+  struct Case
+  {
+    vtkIdType first, last, samplesPerItem;
+    int threads;
+  };
+  for (const Case& c : { Case{ 0, 1048576, 1, 2 }, Case{ 1000, 524288 + 1003, 1, 2 },
+         Case{ 0, 1049, 1000, 2 }, Case{ 0, 7, 1, 2 }, Case{ 5, 6, 1, 4 },
+         Case{ 0, 3000001, 1, 3 }, Case{ 0, 100, 65536, 2 } })
+  {
+    const std::vector<vtkIdType> bounds =
+      vtkBoostedBlockLoop::ChunkBounds(c.first, c.last, c.samplesPerItem, c.threads);
+    ASSERT_GE(bounds.size(), 2u);
+    EXPECT_EQ(bounds.front(), c.first);
+    EXPECT_EQ(bounds.back(), c.last);
+    const vtkIdType largest =
+      std::max<vtkIdType>(1, (c.last - c.first + c.threads - 1) / c.threads / 16);
+    const vtkIdType smallest = std::min(largest,
+      std::max<vtkIdType>(1, vtkBoostedBlockLoop::MinimumChunkSamples / c.samplesPerItem));
+    for (std::size_t i = 1; i < bounds.size(); ++i)
+    {
+      const vtkIdType size = bounds[i] - bounds[i - 1];
+      EXPECT_GE(size, i + 1 == bounds.size() ? 1 : smallest) << i;
+      EXPECT_LE(size, largest) << i;
+      if (i > 1)
+      {
+        EXPECT_LE(size, bounds[i - 1] - bounds[i - 2]) << "chunk " << i << " of " << c.last;
+      }
+    }
+    if (c.last - c.first >= 1048576)
+    {
+      // Guided: the last chunks are the smallest, far below the largest.
+      EXPECT_EQ(bounds[bounds.size() - 2] - bounds[bounds.size() - 3], smallest);
+    }
+  }
 }
