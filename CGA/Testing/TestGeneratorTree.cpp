@@ -285,7 +285,7 @@ TEST(GeneratorTree, ToleranceDomainAndSmallFields)
   // bench's field) the field sums directly too, bit for bit, with the tolerance kept; at it the
   // tree is built and meets its bound. The crossover falls with M (1e-4 at 10,000 generators).
   EXPECT_EQ(PointPairField::treeMinimumTolerance(10000), 1e-4);
-  EXPECT_NEAR(PointPairField::treeMinimumTolerance(100000), 1e-4 / std::pow(10.0, 1.5), 1e-20);
+  EXPECT_NEAR(PointPairField::treeMinimumTolerance(100000), 1e-6, 1e-20);
   EXPECT_EQ(PointPairField::treeMinimumTolerance(0), PointPairField::maximumTolerance());
   const double crossover = PointPairField::treeMinimumTolerance(generators.size());
   const PointPairField direct(generators.data(), generators.size(), kFalloff, kEpsilon);
