@@ -46,9 +46,6 @@ Bivector halfDualLine(Vec3 x, Vec3 a)
   return b;
 }
 
-// Nothing when a point is written (mapPointsOf's onPointWritten): mapPoints.
-const auto kNothingAfter = [](std::size_t, bool) {};
-
 // b += 1/2 d ni.
 void addHalfTranslation(Bivector& b, Vec3 d)
 {
@@ -347,7 +344,7 @@ bool PointPairField::map(Vec3 p, double strength, ExponentialRule rule, Vec3& ou
   {
     const double in[3] = { p.x, p.y, p.z };
     double image[3];
-    if (this->mapPointsOf(in, image, 1, strength, rule, kNothingAfter) != 0)
+    if (this->mapPointsOf(in, image, 1, strength, rule) != 0)
     {
       return false;
     }
@@ -462,20 +459,18 @@ std::size_t mapWholeBlocksWithDisplacements(const kernel::FieldArgs& args, Vec3 
 
 } // namespace
 
-// onPointWritten(index, mapped) after each point is written (mapped: the point is finite).
-template <typename In, typename Out, typename OnPointWritten>
-std::size_t PointPairField::mapPointsOf(const In* in, Out* out, std::size_t count,
-  double strength, ExponentialRule rule, OnPointWritten&& onPointWritten) const
+template <typename In, typename Out>
+std::size_t PointPairField::mapPointsOf(
+  const In* in, Out* out, std::size_t count, double strength, ExponentialRule rule) const
 {
   if (this->Count == 0 || strength == 0.0)
   {
-    return copyPoints(in, out, count, onPointWritten);
+    return copyPoints(in, out, count, [](std::size_t, bool) {});
   }
   const Vec3 c = this->Center;
   return mapPointsByKernel(this->args(strength, rule), this->Tree.get(), c, in, count,
     [&](const auto& mapLanes) {
-      return mapPointsInBlocks(c, in, out, count, mapLanes,
-        [&onPointWritten](std::size_t index, int, bool mapped) { onPointWritten(index, mapped); });
+      return mapPointsInBlocks(c, in, out, count, mapLanes, [](std::size_t, int, bool) {});
     });
 }
 
@@ -535,25 +530,25 @@ PointPairField::DisplacementCounts PointPairField::mapPointsWithDisplacementsOf(
 std::size_t PointPairField::mapPoints(
   const double* in, double* out, std::size_t count, double strength, ExponentialRule rule) const
 {
-  return this->mapPointsOf(in, out, count, strength, rule, kNothingAfter);
+  return this->mapPointsOf(in, out, count, strength, rule);
 }
 
 std::size_t PointPairField::mapPoints(
   const float* in, float* out, std::size_t count, double strength, ExponentialRule rule) const
 {
-  return this->mapPointsOf(in, out, count, strength, rule, kNothingAfter);
+  return this->mapPointsOf(in, out, count, strength, rule);
 }
 
 std::size_t PointPairField::mapPoints(
   const float* in, double* out, std::size_t count, double strength, ExponentialRule rule) const
 {
-  return this->mapPointsOf(in, out, count, strength, rule, kNothingAfter);
+  return this->mapPointsOf(in, out, count, strength, rule);
 }
 
 std::size_t PointPairField::mapPoints(
   const double* in, float* out, std::size_t count, double strength, ExponentialRule rule) const
 {
-  return this->mapPointsOf(in, out, count, strength, rule, kNothingAfter);
+  return this->mapPointsOf(in, out, count, strength, rule);
 }
 
 PointPairField::DisplacementCounts PointPairField::mapPointsWithDisplacements(const double* in,

@@ -305,9 +305,9 @@ private:
     Vec3 p, double strength, ExponentialRule rule, Vec3& out, double* byExponent) const;
   void add(const FieldGenerator* generators, const GeneratorParameters* rows, std::size_t count);
   kernel::FieldArgs args(double strength, ExponentialRule rule) const;
-  template <typename In, typename Out, typename OnPointWritten>
-  std::size_t mapPointsOf(const In* in, Out* out, std::size_t count, double strength,
-    ExponentialRule rule, OnPointWritten&& onPointWritten) const;
+  template <typename In, typename Out>
+  std::size_t mapPointsOf(
+    const In* in, Out* out, std::size_t count, double strength, ExponentialRule rule) const;
   template <typename In, typename Out>
   DisplacementCounts mapPointsWithDisplacementsOf(const In* in, Out* out, Out* displacements,
     std::size_t count, double strength, ExponentialRule rule) const;
