@@ -140,9 +140,9 @@ Multivector BoostedCircle::imageBlade(double lambda) const
 
 BoostedCircleRow::BoostedCircleRow(const BoostedCircle& family, double lambda)
   : Boost(family.boostCompact(lambda))
-  , Commutator(commutatorMatrix(nullPointPairCompact(family.boostLocation, family.boostDirection)))
   , BoostColumns(transposed(Boost.matrix()))
-  , CommutatorColumns(transposed(Commutator))
+  , CommutatorColumns(transposed(
+      commutatorMatrix(nullPointPairCompact(family.boostLocation, family.boostDirection))))
 {
 }
 

@@ -89,8 +89,8 @@ private:
   bool compute(const BoostedCircle::CircleSample& sample, SurfaceDerivatives& out) const;
 
   PointMap Boost;
-  std::array<double, 25> Commutator;
-  // The two matrices transposed (column after column), for the derivatives' products.
+  // The boost's matrix and the commutator's (commutatorMatrix of the boost's point pair),
+  // transposed (column after column), for the derivatives' products.
   std::array<double, 25> BoostColumns, CommutatorColumns;
 };
 } // namespace cga
