@@ -63,8 +63,10 @@ def start_server(arguments, port):
                ["-np", "2", arguments.pvserver, "--server-port=%d" % port,
                 "--force-offscreen-rendering", "--disable-xdisplay-test"])
     print("server:", " ".join(command), flush=True)
+    # errors="replace": a byte that is not UTF-8 would end the echo thread (below) with a
+    # UnicodeDecodeError, hiding the rest of the server's output and its readiness.
     server = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                              start_new_session=True, text=True)
+                              start_new_session=True, text=True, errors="replace")
     ready = threading.Event()
 
     def echo():  # the server's output, prefixed; it says when it accepts connections

@@ -279,8 +279,7 @@ def check_exponents(probe, verbose):
     for name, pairs in cases:
         refs, got = [], []
         for b, p in pairs:
-            fields = next(output).split()
-            got.append(None if fields == ["unmapped"] else [float(f) for f in fields])
+            got.append(read_values(next(output), 6))
             with reference.mp.workdps(reference.DIGITS):
                 refs.append(reference.image_of_bivector(
                     reference.bivector_from_components(b), p, -1.0))
@@ -305,27 +304,52 @@ def check_exponents(probe, verbose):
             if verbose:
                 print(f"  {name}: {p} batch error {errors[0]:.3g} (bound {bound:.3g}), "
                       f"pointwise sandwich {errors[1]:.3g}")
+    check_read_all(output, "exponents'")
     return failures
 
 
 PATHS = ("batch", "pointwise", "rows batch", "rows pointwise")
 
 
-def read_images(fields):
-    """The probe's line: None ("unmapped"), or (images by path name, Jacobian)."""
+def read_values(line, count):
+    """The `count` numbers of one line of the probe, or None for "unmapped". A line of another
+    length is an error: read loosely, a short line would check fewer images or Jacobian entries
+    without a word."""
+    fields = line.split()
     if fields == ["unmapped"]:
         return None
-    values = [float(f) for f in fields]
+    if len(fields) != count:
+        raise ValueError("the probe wrote %d values where %d were expected: %r"
+                         % (len(fields), count, line))
+    return [float(f) for f in fields]
+
+
+def read_images(line, rows):
+    """The probe's line: None ("unmapped"), or (images by path name, Jacobian); `rows`: the
+    configuration is also built from rows (every generator but a bivector), whose two images
+    the probe then adds."""
+    values = read_values(line, 21 if rows else 15)
+    if values is None:
+        return None
     images = {"batch": values[:3], "pointwise": values[3:6]}
-    if len(values) > 15:  # the same field built from rows
+    if rows:
         images["rows batch"], images["rows pointwise"] = values[15:18], values[18:21]
     return images, values[6:15]
+
+
+def check_read_all(output, what):
+    """Every line of the probe's `output` was read: a line more would be a result unchecked."""
+    rest = [line for line in output if line.strip()]
+    if rest:
+        raise ValueError("%d lines of the probe's %s output unread, the first %r"
+                         % (len(rest), what, rest[0]))
 
 
 def check_configuration(case, output, verbose):
     """(failures, images checked against the condition-scaled bound) of one configuration."""
     name, falloff, eps, strength, generators, points, lone, check_jacobians = case
-    got_all = [read_images(next(output).split()) for _ in points]
+    rows = all(kind != "bivector" for kind, *_ in generators)
+    got_all = [read_images(next(output), rows) for _ in points]
     refs = [reference.image(generators, p, falloff, eps, strength) for p in points]
     size = max(abs(c) for p in points for c in p)
     displacement = max(math.dist([float(c) for c in r], p) for r, p in zip(refs, points))
@@ -387,6 +411,7 @@ def main():
         f, c = check_configuration(case, output, verbose)
         failures += f
         conditioned += c
+    check_read_all(output, "configurations'")
     failures += check_exponents(probe, verbose)
     print(f"{failures} failures; {conditioned} images checked against the condition-scaled bound")
     return 1 if failures else 0

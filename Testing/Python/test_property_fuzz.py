@@ -3,8 +3,10 @@
 of every data-set type and array layout (fuzz_inputs.py). Every update must report an error and
 leave its output empty, or give a valid output (fuzz_checks.py): cells within the points, arrays
 as long as the points and cells, and no NaN or infinity anywhere when the inputs were finite. No
-trial may crash or hang: trials run in a worker process, and a trial that kills it, or takes more
-than --timeout seconds, is a failure. Every failure prints a one-line reproducer.
+trial may crash or hang: trials run in a worker process, and a trial that kills it, takes more
+than --timeout seconds, or during which the worker writes a line that cannot be read or ends, is a
+failure; no trial ends without a result or a failure, even after an error of the driver. Every
+failure prints a one-line reproducer.
 
     PYTHONPATH=<build>/lib/python3.11/site-packages:Testing/Support \\
         /usr/bin/python3 Testing/Python/test_property_fuzz.py [--seed S] [--trials N]
@@ -164,11 +166,25 @@ def excused(category):
 
 
 def simulated_failures():
-    """{trial: "crash" or "hang"} from BOOSTEDSURFACES_FUZZ_SIMULATE ("crash:2,hang:4"): the
-    harness's own test (test_property_fuzz_harness.py) makes those trials abort or sleep."""
-    text = os.environ.get("BOOSTEDSURFACES_FUZZ_SIMULATE", "")
-    return {int(trial): kind for kind, trial in (item.split(":") for item in text.split(",")
-                                                 if item)}
+    """{trial: kind} from BOOSTEDSURFACES_FUZZ_SIMULATE ("crash:2,hang:4"): the harness's own test
+    (test_property_fuzz_harness.py) makes those trials go wrong. In the worker: "crash" aborts,
+    "hang" sleeps, "cut" writes half a result line and dies (a line that cannot be read), "exit"
+    ends the worker quietly before the trial begins. In the driver: "driver-error" raises at
+    the trial's result (a bug of the driver itself). The item "late-eof" (no trial) is
+    simulated_load's."""
+    items = os.environ.get("BOOSTEDSURFACES_FUZZ_SIMULATE", "").split(",")
+    return {int(trial): kind for kind, trial in (item.split(":") for item in items
+                                                 if ":" in item)}
+
+
+def simulated_load():
+    """(seconds each worker waits before its first trial, seconds each worker's reader waits
+    after the output ended before it says so): (2, 1) with the item "late-eof" of
+    BOOSTEDSURFACES_FUZZ_SIMULATE, else none. As on a loaded machine, the end of a killed
+    worker's output then comes after the next worker started and before its first line
+    (read_lines)."""
+    items = os.environ.get("BOOSTEDSURFACES_FUZZ_SIMULATE", "").split(",")
+    return (2.0, 1.0) if "late-eof" in items else (0.0, 0.0)
 
 
 def worker(span):
@@ -177,12 +193,19 @@ def worker(span):
     models = fuzz_recipe.discover()
     log = MessageLog()
     simulated = simulated_failures()
+    time.sleep(simulated_load()[0])
     for trial in range(first, end):
+        if simulated.get(trial) == "exit":
+            sys.exit(0)
         print("BEGIN %d" % trial, flush=True)
         if simulated.get(trial) == "crash":
             os.abort()
         if simulated.get(trial) == "hang":
             time.sleep(3600)
+        if simulated.get(trial) == "cut":
+            sys.stdout.write('END %d [[["bad-' % trial)
+            sys.stdout.flush()
+            os._exit(0)
         try:
             problems, statistics = run_trial(models, log, ARGS.seed, trial)
         except Exception:
@@ -192,78 +215,185 @@ def worker(span):
 
 
 class Failures:
+    """The driver's results, shared by its threads: the failed and excused trials, every trial
+    that has a result (its worker's END line, or a failure), and each class's statistics."""
+
+    # The trials printed in full when a whole span fails at once (the rest are counted).
+    PRINTED_OF_A_SPAN = 10
+
     def __init__(self):
         self.lock = threading.Lock()
         self.failed = []
         self.known = []
+        self.answered = set()
         self.statistics = {}
 
     def add(self, trial, category, text, class_name):
         with self.lock:
             known = excused(category)
             (self.known if known else self.failed).append(trial)
+            self.answered.add(trial)
             print("%s trial %d (%s): [%s] %s\n  reproduce: %s" % (
                 "KNOWN ISSUE" if known else "FAIL", trial, class_name, category, text,
                 reproducer(ARGS.seed, trial)), flush=True)
 
-    def count(self, class_name, statistics):
+    def add_all(self, trials, category, text, class_names):
+        """Fails every one of `trials` for one cause: its text is printed with the first trial."""
+        for k, trial in enumerate(trials):
+            class_name = class_names[trial % len(class_names)]
+            if k < self.PRINTED_OF_A_SPAN:
+                self.add(trial, category, text if k == 0 else "(as trial %d)" % trials[0],
+                         class_name)
+            else:
+                with self.lock:
+                    self.failed.append(trial)
+                    self.answered.add(trial)
+        if len(trials) > self.PRINTED_OF_A_SPAN:
+            print("FAIL trials %d..%d: [%s] (as trial %d, not printed)" % (
+                trials[self.PRINTED_OF_A_SPAN], trials[-1], category, trials[0]), flush=True)
+
+    def has_result(self, trial):
         with self.lock:
+            return trial in self.answered
+
+    def count(self, trial, class_name, statistics):
+        with self.lock:
+            self.answered.add(trial)
             totals = self.statistics.setdefault(class_name, {})
             for key, value in statistics.items():
                 totals[key] = totals.get(key, 0) + value
 
 
-def drive_span(first, end, class_names, failures):
-    """Runs trials first..end-1 in worker processes: a worker that dies or hangs is reported
-    with its trial and replaced by a new one that goes on with the next trial."""
-    while first < end:
-        with tempfile.TemporaryFile() as stderr:
-            child = subprocess.Popen(
-                [sys.executable, os.path.abspath(__file__), "--seed", str(ARGS.seed),
-                 "--memory-budget", ARGS.memory_budget, "--worker", "%d:%d" % (first, end)],
-                stdout=subprocess.PIPE, stderr=stderr, text=True)
+def read_lines(stream, lines, late):
+    """A worker's reader thread: every line of its stdout onto the queue `lines`, then None
+    (after `late` seconds, simulated_load). The stream and the queue are its arguments, not
+    names of the driver's loop: a reader that looked `lines` up when its killed worker's output
+    ended could put that None into the next worker's queue, which then ended that worker's span
+    with its trials unrun and unreported."""
+    for line in stream:
+        lines.put(line)
+    time.sleep(late)
+    lines.put(None)
+
+
+def parse_line(line, current, expected):
+    """One line of a worker: ("BEGIN", trial, None) when `expected` begins while no trial runs,
+    ("END", trial, (problems, statistics)) when the `current` trial ends, else None (a stray
+    line, a line cut short by the worker's death, a trial out of order)."""
+    if not line.endswith("\n"):
+        return None  # the last, unfinished line of a worker that died writing it
+    word, _, rest = line[:-1].partition(" ")
+    number, _, result = rest.partition(" ")
+    if not (number.isascii() and number.isdigit()):
+        return None
+    trial = int(number)
+    if word == "BEGIN" and not result and current is None and trial == expected:
+        return word, trial, None
+    if word != "END" or trial != current:
+        return None
+    try:
+        problems, statistics = json.loads(result)
+    except (ValueError, TypeError):  # not JSON, or not a pair
+        return None
+    if not (isinstance(problems, list) and isinstance(statistics, dict) and
+            all(isinstance(p, list) and len(p) == 2 and all(isinstance(x, str) for x in p)
+                for p in problems) and
+            all(isinstance(value, int) for value in statistics.values())):
+        return None
+    return word, trial, (problems, statistics)
+
+
+def run_worker(first, end, class_names, failures, simulated):
+    """Runs trials from `first` (of first..end-1) in one worker process until it ends, dies,
+    hangs or writes a line that cannot be read; each of those is a failure of the trial it
+    happened in (or the next). Returns the trial the next worker begins with."""
+    def fail(trial, category, text):
+        failures.add(trial, category, text, class_names[trial % len(class_names)])
+
+    with tempfile.TemporaryFile() as stderr:
+        child = subprocess.Popen(
+            [sys.executable, os.path.abspath(__file__), "--seed", str(ARGS.seed),
+             "--memory-budget", ARGS.memory_budget, "--worker", "%d:%d" % (first, end)],
+            stdout=subprocess.PIPE, stderr=stderr, text=True, errors="replace")
+        try:
             lines = queue.Queue()
-            reader = threading.Thread(target=lambda: [lines.put(line) for line in child.stdout]
-                                      + [lines.put(None)], daemon=True)
-            reader.start()
-            current = None
+            threading.Thread(target=read_lines, args=(child.stdout, lines, simulated_load()[1]),
+                             daemon=True).start()
+            current, expected = None, first  # the trial running, the next one to begin
             while True:
                 try:
                     line = lines.get(timeout=ARGS.timeout)
-                except queue.Empty:
-                    if current is None:  # the worker does not even start
-                        current = first
-                    child.kill()
-                    child.wait()
-                    failures.add(current, "hang", "no result after %g s" % ARGS.timeout,
-                                 class_names[current % len(class_names)])
-                    first = current + 1
-                    break
+                except queue.Empty:  # current None: the worker does not even start that trial
+                    trial = expected if current is None else current
+                    fail(trial, "hang", "no result after %g s" % ARGS.timeout)
+                    return trial + 1
                 if line is None:  # the worker ended
                     child.wait()
-                    if current is None:
-                        first = end
-                        break
-                    stderr.seek(0)
-                    tail = stderr.read().decode(errors="replace").strip().splitlines()[-12:]
-                    code = child.returncode
-                    how = ("signal %s" % signal.Signals(-code).name if code < 0
-                           else "exit code %d" % code)
-                    failures.add(current, "crash", "the process died (%s): %s" % (
-                        how, " | ".join(tail)), class_names[current % len(class_names)])
-                    first = current + 1
-                    break
-                word, trial, rest = (line.rstrip("\n").split(" ", 2) + [""])[:3]
-                trial = int(trial)
+                    if current is None and expected == end:
+                        return end
+                    how = ended_how(child.returncode, stderr)
+                    if current is not None:
+                        fail(current, "crash", "the process died (%s): %s" % how)
+                        return current + 1
+                    if expected == first:  # before any trial: a new worker would do the same
+                        failures.add_all(list(range(first, end)), "crash",
+                                         "the worker ended before its first trial (%s): %s"
+                                         % how, class_names)
+                        return end
+                    fail(expected, "crash",
+                         "the worker ended before the trial began (%s): %s" % how)
+                    return expected + 1
+                parsed = parse_line(line, current, expected)
+                if parsed is None:  # the worker is not doing what it should: a new one goes on
+                    trial = expected if current is None else current
+                    fail(trial, "bad-output", "unreadable line from the worker: %r" % line[:300])
+                    return trial + 1
+                word, trial, result = parsed
                 if word == "BEGIN":
                     current = trial
                     continue
-                problems, statistics = json.loads(rest)
+                if simulated.get(trial) == "driver-error":
+                    raise RuntimeError("simulated error of the driver at trial %d" % trial)
+                problems, statistics = result
                 class_name = class_names[trial % len(class_names)]
-                failures.count(class_name, statistics)
+                failures.count(trial, class_name, statistics)
                 for category, text in problems[:3]:
                     failures.add(trial, category, text, class_name)
-                current = None
+                current, expected = None, trial + 1
+        finally:
+            if child.poll() is None:
+                child.kill()
+            child.wait()
+
+
+def ended_how(code, stderr):
+    """How a worker ended: (its signal or exit code, the last lines of its stderr)."""
+    if code < 0:
+        try:
+            how = "signal %s" % signal.Signals(-code).name
+        except ValueError:  # a signal without a name (a real-time one)
+            how = "signal %d" % -code
+    else:
+        how = "exit code %d" % code
+    stderr.seek(0)
+    tail = stderr.read().decode(errors="replace").strip().splitlines()[-12:]
+    return how, " | ".join(tail) or "nothing on stderr"
+
+
+def drive_span(first, end, class_names, failures):
+    """Runs trials first..end-1 in worker processes: a worker that dies, hangs or writes what
+    cannot be read is reported with its trial and replaced by a new one that goes on with the
+    next trial. An exception here (a bug of the driver) fails every trial of the span that has
+    no result yet, with its traceback, rather than ending this thread and losing them unseen."""
+    simulated = simulated_failures()
+    start = first
+    try:
+        while first < end:
+            first = run_worker(first, end, class_names, failures, simulated)
+    except Exception:
+        failures.add_all([t for t in range(start, end) if not failures.has_result(t)],
+                         "driver-error", "the driver failed: " +
+                         traceback.format_exc().strip().replace("\n", " | "), class_names)
 
 
 def check_discovery(models):
@@ -319,6 +449,9 @@ def drive():
         thread.start()
     for thread in threads:
         thread.join()
+    # Every trial has a result or a failure: one that has neither was lost by the driver.
+    lost = [t for t in range(first, end) if not failures.has_result(t)]
+    failures.add_all(lost, "lost", "no result: the driver lost this trial", class_names)
     seconds = time.time() - start
     print("seed %d, trials %d..%d, %.0f s:" % (ARGS.seed, first, end - 1, seconds))
     lifeless = []

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace cga
 {
@@ -124,9 +125,14 @@ void CurvaturePatch::mapRow(
     frame.origin);
   PatchFrame moved = frame; // as patchGeneratorOf moves it
   moved.origin = frame.origin - frame.origin;
-  // Bilinear: the corners' terms once for the row, not at every sample (the same values).
+  // Bilinear: the corners' terms once for the row, not at every sample (the same values); the
+  // other methods never read them.
   const bool bilinear = method == CurvatureMethod::Bilinear;
-  const detail::BilinearCorners corners = detail::bilinearCornersOf(*this, frame.origin);
+  std::optional<detail::BilinearCorners> corners;
+  if (bilinear)
+  {
+    corners.emplace(detail::bilinearCornersOf(*this, frame.origin));
+  }
   const double s = detail::bilinearS(*this, b);
   Bivector exponents[kChunk];
   Vec3 points[kChunk], images[kChunk];
@@ -139,7 +145,7 @@ void CurvaturePatch::mapRow(
     {
       const CurvatureGenerator g = method == CurvatureMethod::ControlPoints
         ? controlPointSum.at(moved.at(a[first + i], b))
-        : bilinear ? detail::bilinearInterpolationOf(corners, s, detail::bilinearT(*this, a[first + i]))
+        : bilinear ? detail::bilinearInterpolationOf(*corners, s, detail::bilinearT(*this, a[first + i]))
                    : generatorAbout(a[first + i], b, frame.origin);
       exponents[i] = g.exponent;
       chunkWeights[i] = g.weight;
