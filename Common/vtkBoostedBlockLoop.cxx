@@ -61,20 +61,27 @@ bool vtkBoostedBlockLoop::For(vtkAlgorithm* algorithm, vtkIdType begin, vtkIdTyp
     }
     else
     {
+      // One job per thread, which claims the chunks in turn from a shared counter: VTK 9.2's
+      // STDThread backend queues every job of a For under one mutex and wakes a thread for each
+      // (a job per chunk was about 50 jobs for an update of 10^6 points, queued by the calling
+      // thread while the pool waited on the same lock).
       const std::vector<vtkIdType> bounds = ChunkBounds(first, last, samplesPerItem, threads);
+      const vtkIdType chunks = static_cast<vtkIdType>(bounds.size()) - 1;
+      std::atomic<vtkIdType> nextChunk{ 0 };
       std::atomic<bool> outOfMemory{ false };
-      vtkSMPTools::For(0, static_cast<vtkIdType>(bounds.size()) - 1, 1,
-        [&work, &bounds, &outOfMemory](vtkIdType a, vtkIdType b) {
+      vtkSMPTools::For(0, threads, 1,
+        [&work, &bounds, chunks, &nextChunk, &outOfMemory](vtkIdType, vtkIdType) {
           try
           {
-            for (vtkIdType chunk = a; chunk < b; ++chunk)
+            for (vtkIdType chunk = nextChunk++; chunk < chunks && !outOfMemory;
+                 chunk = nextChunk++)
             {
               work(bounds[chunk], bounds[chunk + 1]);
             }
           }
           catch (const std::bad_alloc&)
           {
-            outOfMemory = true; // reported once, on the calling thread
+            outOfMemory = true; // reported once, on the calling thread; the others stop
           }
         });
       if (outOfMemory)

@@ -19,7 +19,10 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <mutex>
 #include <new>
+#include <set>
 #include <thread>
 #include <vector>
 
@@ -127,4 +130,61 @@ TEST(WorkerOutOfMemory, TheBlockLoopsChunksCoverTheBlockLargestFirst)
       EXPECT_EQ(bounds[bounds.size() - 2] - bounds[bounds.size() - 3], smallest);
     }
   }
+}
+
+// On more than one thread the threads claim the chunks in turn from a shared counter (one job
+// per thread, not one per chunk): every item of every block runs exactly once, whichever thread
+// claims it, on one and two STDThread threads and on the Sequential backend, for a range of
+// several blocks that starts and ends off a block's bound, and the work of two threads is
+// shared between two threads.
+TEST(WorkerOutOfMemory, TheBlockLoopRunsEveryItemOnceOnEveryBackendAndThreadCount)
+{
+  struct Setting
+  {
+    const char* backend;
+    int threads;
+  };
+  for (const Setting& setting :
+    { Setting{ "STDThread", 2 }, Setting{ "STDThread", 1 }, Setting{ "Sequential", 1 } })
+  {
+    vtkSMPTools::SetBackend(setting.backend);
+    vtkSMPTools::Initialize(setting.threads);
+    vtkNew<vtkBoostedSurfaceSource> algorithm;
+    const vtkIdType block = vtkBoostedBlockLoop::ItemsPerBlock(1);
+    const vtkIdType begin = 17, end = 2 * block + block / 3 + 5;
+    std::vector<std::atomic<int>> runs(static_cast<std::size_t>(end));
+    std::atomic<int> chunks{ 0 };
+    std::mutex mutex;
+    std::set<std::thread::id> threads;
+    ASSERT_TRUE(
+      vtkBoostedBlockLoop::For(algorithm, begin, end, 1, [&](vtkIdType first, vtkIdType last) {
+        ASSERT_LT(first, last);
+        ++chunks;
+        for (vtkIdType i = first; i < last; ++i)
+        {
+          ++runs[static_cast<std::size_t>(i)];
+        }
+        // Long enough that the other thread starts before the chunks run out.
+        std::this_thread::sleep_for(std::chrono::microseconds(50));
+        const std::lock_guard<std::mutex> lock(mutex);
+        threads.insert(std::this_thread::get_id());
+      }))
+      << setting.backend << " " << setting.threads;
+    for (vtkIdType i = 0; i < end; ++i)
+    {
+      ASSERT_EQ(runs[static_cast<std::size_t>(i)].load(), i < begin ? 0 : 1)
+        << "item " << i << ", " << setting.backend << " " << setting.threads;
+    }
+    if (setting.threads == 1)
+    {
+      EXPECT_EQ(chunks.load(), 3) << "one thread: each block is one call";
+      EXPECT_EQ(threads.size(), 1u);
+    }
+    else
+    {
+      EXPECT_GT(chunks.load(), 3 * 16) << "two threads: every block in chunks";
+      EXPECT_EQ(threads.size(), 2u) << "both threads take chunks";
+    }
+  }
+  useThreads();
 }
