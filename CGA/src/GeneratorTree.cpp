@@ -167,6 +167,21 @@ GeneratorTree::GeneratorTree(const double* generators,
     }
   }
 
+  // The moments' shift to a parent one axis at a time (computeMoments): every b and k <= b_axis.
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (int b = 0; b < this->MomentCount; ++b)
+    {
+      const auto& powers = this->MonomialPowers[static_cast<std::size_t>(b)];
+      for (int k = 0; k <= powers[axis]; ++k)
+      {
+        const int source = this->MonomialIndex[static_cast<std::size_t>(
+          at(powers[0] - (axis == 0) * k, powers[1] - (axis == 1) * k, powers[2] - (axis == 2) * k))];
+        this->MomentShiftTerms[axis].push_back({ b, source, k, binomial(powers[axis], k) });
+      }
+    }
+  }
+
   for (const auto& powers : this->MonomialPowers)
   {
     this->InverseFactorial.push_back(1.0 / (factorial(powers[0]) * factorial(powers[1]) * factorial(powers[2])));
@@ -200,6 +215,10 @@ GeneratorTree::GeneratorTree(const double* generators,
   if (count > 0)
   {
     this->computeMoments(0);
+  }
+  for (std::vector<AxisShiftTerm>& terms : this->MomentShiftTerms)
+  {
+    std::vector<AxisShiftTerm>().swap(terms); // needed while building only
   }
   // Stored over beta! (every node's, once all shifts are done): the multipole-to-local sum then
   // reads them as they are (addSourceToLocal), and the expansions' terms make beta! e_beta.
@@ -526,17 +545,14 @@ bool GeneratorTree::computeMoments(int index)
     }
     return true;
   }
-  // yhat_parent = lambda yhat_child + delta: mu_b += sum_{g <= b} C(b, g) lambda^|g| delta^(b-g) mu_g.
+  // yhat_parent = lambda yhat_child + delta: mu_b += sum_{g <= b} C(b, g) lambda^|g| delta^(b-g) mu_g,
+  // the child's moments scaled by lambda^|g| and then shifted one axis at a time (the binomial
+  // of (lambda y + delta)^b is the product of the axes' binomials):
+  //   mu'_b = sum_{k <= b_axis} C(b_axis, k) delta_axis^k mu_(b - k e_axis),
+  // 3 C(P + 4, 4) terms instead of C(P + 6, 6).
   const int P = this->Degree;
-  auto at = [P](int a, int b, int c) { return (a * (P + 1) + b) * (P + 1) + c; };
-  double binomials[kMaxDegree + 1][kMaxDegree + 1];
-  for (int n = 0; n <= P; ++n)
-  {
-    for (int k = 0; k <= n; ++k)
-    {
-      binomials[n][k] = binomial(n, k);
-    }
-  }
+  const auto size = static_cast<std::size_t>(M * kComponents);
+  std::vector<double> from(size), to(size);
   for (int child : node.children)
   {
     const Node& c = this->Nodes[static_cast<std::size_t>(child)];
@@ -545,7 +561,6 @@ bool GeneratorTree::computeMoments(int index)
     const double delta[3] = { (c.center[0] - node.center[0]) / scale,
                               (c.center[1] - node.center[1]) / scale,
                               (c.center[2] - node.center[2]) / scale };
-    powers(delta);
     double lambdaPower[kMaxDegree + 1];
     lambdaPower[0] = 1.0;
     for (int n = 1; n <= P; ++n)
@@ -553,29 +568,37 @@ bool GeneratorTree::computeMoments(int index)
       lambdaPower[n] = lambdaPower[n - 1] * lambda;
     }
     const double* childMoments = this->Moments.data() + c.moments;
-    double* mu = this->Moments.data() + offset;
-    for (int b = 0; b < M; ++b)
+    for (std::size_t m = 0; m < static_cast<std::size_t>(M); ++m)
     {
-      const auto& beta = this->MonomialPowers[static_cast<std::size_t>(b)];
-      for (int g0 = 0; g0 <= beta[0]; ++g0)
+      for (std::size_t k = 0; k < kComponents; ++k)
       {
-        for (int g1 = 0; g1 <= beta[1]; ++g1)
+        from[m * kComponents + k] = lambdaPower[this->MonomialDegree[m]] * childMoments[m * kComponents + k];
+      }
+    }
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      double deltaPower[kMaxDegree + 1];
+      deltaPower[0] = 1.0;
+      for (int n = 1; n <= P; ++n)
+      {
+        deltaPower[n] = deltaPower[n - 1] * delta[axis];
+      }
+      std::fill(to.begin(), to.end(), 0.0);
+      for (const AxisShiftTerm& term : this->MomentShiftTerms[axis])
+      {
+        const double factor = term.binomial * deltaPower[term.power];
+        for (std::size_t k = 0; k < kComponents; ++k)
         {
-          for (int g2 = 0; g2 <= beta[2]; ++g2)
-          {
-            const int gamma = this->MonomialIndex[static_cast<std::size_t>(at(g0, g1, g2))];
-            const int rest = this->MonomialIndex[static_cast<std::size_t>(
-              at(beta[0] - g0, beta[1] - g1, beta[2] - g2))];
-            const double factor = binomials[beta[0]][g0] * binomials[beta[1]][g1] *
-              binomials[beta[2]][g2] * lambdaPower[g0 + g1 + g2] *
-              power[static_cast<std::size_t>(rest)];
-            for (int k = 0; k < kComponents; ++k)
-            {
-              mu[b * kComponents + k] += factor * childMoments[gamma * kComponents + k];
-            }
-          }
+          to[static_cast<std::size_t>(term.target) * kComponents + k] +=
+            factor * from[static_cast<std::size_t>(term.source) * kComponents + k];
         }
       }
+      from.swap(to);
+    }
+    double* mu = this->Moments.data() + offset;
+    for (std::size_t i = 0; i < size; ++i)
+    {
+      mu[i] += from[i];
     }
   }
   return true;
@@ -787,7 +810,9 @@ std::size_t GeneratorTree::bytes() const
     this->Terms.capacity() * sizeof(Term) +
     this->MonomialPowers.capacity() * sizeof(std::array<int, 3>) +
     4 * this->MonomialIndex.capacity() * sizeof(int) + this->ShiftGamma.capacity() * sizeof(int) +
-    (this->AxisShiftTerms[0].capacity() + this->AxisShiftTerms[1].capacity() + this->AxisShiftTerms[2].capacity()) *
+    (this->AxisShiftTerms[0].capacity() + this->AxisShiftTerms[1].capacity() + this->AxisShiftTerms[2].capacity() +
+     this->MomentShiftTerms[0].capacity() + this->MomentShiftTerms[1].capacity() +
+     this->MomentShiftTerms[2].capacity()) *
       sizeof(AxisShiftTerm);
 }
 } // namespace detail

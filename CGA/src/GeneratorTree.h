@@ -195,6 +195,10 @@ private:
   std::vector<Term> Terms;
   std::size_t DirectBelow = 0; // nodes with fewer generators are summed directly even when usable
   std::vector<AxisShiftTerm> AxisShiftTerms[3]; // per axis, grouped by target in graded order
+  // The moments' shift to a parent per axis: moment[target] += C(target_axis, power)
+  // delta_axis^power child[source], source = target - power e_axis (computeMoments; freed once
+  // the moments are built).
+  std::vector<AxisShiftTerm> MomentShiftTerms[3];
   double LeafSide = 1.0; // a power of two
   int Levels = 0;        // the top cells are LeafSide * 2^Levels wide
 };
