@@ -109,7 +109,8 @@ public:
   /// generator at every point; t > 0 sums far generators by a tree that keeps each image's error,
   /// to first order, within t times the field's displacement scale (README, "Many generators";
   /// the bound is enforced at every point). Values above 1 are used as 1; NaN or negative is an
-  /// error and gives an empty output. Fields of fewer than 10,000 generators, and tolerances below 1e-4 (10,000/M)^2 (1e-6 at M = 100,000), always sum directly (the measured crossovers).
+  /// error and gives an empty output. Fields of fewer than 10,000 generators, and tolerances below
+  /// 1e-4 (10,000/M)^3 (1e-7 at M = 100,000), always sum directly (the measured crossovers).
   vtkSetMacro(Tolerance, double);
   vtkGetMacro(Tolerance, double);
   ///@}

@@ -155,7 +155,7 @@ public:
   /// Method (a)'s far-field approximation of B (cga::PointPairField::setTolerance): 0 (default)
   /// is the direct sum; t > 0 keeps each displacement's error, to first order, within t times the
   /// field's displacement scale. Values above 1 are used as 1; NaN or negative is an error (empty output). Method (b)
-  /// stays exact. Fewer than 10,000 generators, or a tolerance below 1e-4 (10,000/M)^2, always sum directly.
+  /// stays exact. Fewer than 10,000 generators, or a tolerance below 1e-4 (10,000/M)^3, always sum directly.
   vtkSetMacro(Tolerance, double);
   vtkGetMacro(Tolerance, double);
   ///@}

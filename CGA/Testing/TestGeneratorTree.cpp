@@ -151,6 +151,34 @@ TEST(GeneratorTree, CoincidentGeneratorsMeetTheBound)
   }
 }
 
+// A cluster far smaller than the cubes of points (radius 1e-12): its multipole-to-local
+// translations take the moments' copy scaled by powers of b (addSourceToLocal), since powers of
+// the cube's radius over the node's would overflow; a cluster of radius 1e-3 beside it takes the
+// stored moments as they are. Both must meet the bound at points near and far.
+TEST(GeneratorTree, TinyClustersFarFromThePointsMeetTheBound)
+{
+  Random random(37);
+  std::vector<FieldGenerator> generators;
+  for (const double half : { 1e-12, 1e-3 })
+  {
+    const Vec3 center = half < 1e-6 ? Vec3{ 1.5, 0.5, 0.2 } : Vec3{ -1.0, 1.2, -0.3 };
+    for (int i = 0; i < 700; ++i)
+    {
+      generators.push_back(
+        FieldGenerator::pointPair(center + random.vec3(half), random.vec3(1.0), random.uniform(-0.4, 0.4)));
+    }
+  }
+  const auto spread = randomPointPairs(random, 600, { 0.0, 0.0, 0.0 }, 1.0);
+  generators.insert(generators.end(), spread.begin(), spread.end());
+  auto points = randomPoints(random, 150, { 0.0, 0.0, 0.0 }, 2.5);
+  points.push_back({ 1.5, 0.5, 0.2 });
+  points.push_back({ 1.5, 0.5, 0.25 });
+  for (const double tolerance : { 1e-2, 1e-8 })
+  {
+    EXPECT_LE(worstRelativeError(generators, points, tolerance).boundedError, 1.0) << "tolerance " << tolerance;
+  }
+}
+
 // Points as dense as a mesh's (many per target cell, so that the cells' local expansions, their
 // shifts to the cells below and the near field per point all take part) meet the bound, and
 // each B(p) depends on p alone: the same bits from one call, from calls of other sizes and
@@ -285,7 +313,7 @@ TEST(GeneratorTree, ToleranceDomainAndSmallFields)
   // bench's field) the field sums directly too, bit for bit, with the tolerance kept; at it the
   // tree is built and meets its bound. The crossover falls with M (1e-4 at 10,000 generators).
   EXPECT_EQ(PointPairField::treeMinimumTolerance(10000), 1e-4);
-  EXPECT_NEAR(PointPairField::treeMinimumTolerance(100000), 1e-6, 1e-20);
+  EXPECT_NEAR(PointPairField::treeMinimumTolerance(100000), 1e-7, 1e-21);
   EXPECT_EQ(PointPairField::treeMinimumTolerance(0), PointPairField::maximumTolerance());
   const double crossover = PointPairField::treeMinimumTolerance(generators.size());
   const PointPairField direct(generators.data(), generators.size(), kFalloff, kEpsilon);
@@ -502,11 +530,12 @@ TEST(GeneratorTree, RemainderBoundHoldsForTheSeriesTail)
           const long double x = static_cast<long double>(u) * k / 50.0L;
           const long double qq = q;
           // The tail summed term by term (no cancellation against the closed form where it is
-          // tiny) until its terms' bound (j + 1) q^j is below 1e-30, and the closed form minus the
-          // partial sum as the check of the recurrence.
+          // tiny) until its terms' bound (j + 1) q^j is below 1e-60 (the bound itself is 1e-33 at
+          // degree 16, q = 0.01), and the closed form minus the partial sum as the check of the
+          // recurrence.
           long double tail = 0.0L, partial = 0.0L;
           long double previous = 0.0L, current = 1.0L, power = 1.0L; // U_0 = 1
-          for (int j = 0; j <= degree || (j + 1) * power > 1e-30L; ++j)
+          for (int j = 0; j <= degree || (j + 1) * power > 1e-60L; ++j)
           {
             (j <= degree ? partial : tail) += power * current;
             const long double next = 2.0L * x * current - previous;
@@ -537,11 +566,11 @@ TEST(GeneratorTree, RemainderBoundHoldsForTheSeriesTail)
 namespace
 {
 // sum_{j > degree} q^j U_j(x) term by term in long double, until the terms' bound (j + 1) q^j is
-// below 1e-30 (the Chebyshev polynomials by their recurrence).
+// below 1e-60 (the Chebyshev polynomials by their recurrence).
 long double chebyshevTail(int degree, long double q, long double x)
 {
   long double tail = 0.0L, previous = 0.0L, current = 1.0L, power = 1.0L;
-  for (int j = 0; j <= degree || (j + 1) * power > 1e-30L; ++j)
+  for (int j = 0; j <= degree || (j + 1) * power > 1e-60L; ++j)
   {
     if (j > degree)
     {
@@ -561,7 +590,8 @@ long double chebyshevTail(int degree, long double q, long double x)
 TEST(GeneratorTree, SpreadMomentIsTheSumOverTheGenerators)
 {
   Random random(11);
-  constexpr int kPowers = 12;
+  // Every power the tree uses (up to kMaxDegree + 1).
+  constexpr int kPowers = cga::detail::GeneratorTree::kMaxDegree + 2;
   std::vector<double> s(300), m(300);
   double moments[kPowers] = {};
   for (std::size_t i = 0; i < s.size(); ++i)

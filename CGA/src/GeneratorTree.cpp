@@ -62,6 +62,7 @@ constexpr int monomialCount(int degree)
 }
 
 constexpr int kMaxMoments = monomialCount(GeneratorTree::kMaxDegree);
+static_assert(GeneratorTree::kMaxDegree + 1 <= kMaxSpreadPower, "treeSpreadMoment takes powers up to P + 1");
 
 } // namespace
 
@@ -103,10 +104,12 @@ GeneratorTree::GeneratorTree(const double* generators,
   }
   this->MomentCount = static_cast<int>(this->MonomialPowers.size());
   // e_b(u) = sum over g with 2g <= b of coef(b - 2g, |g|) |g|!/g! u^(b - 2g), with
-  // coef(a, l) = |a|!/a! C(|a| + l, l) 2^|a| (-1)^l (docs/conventions.md section 3 item 14).
+  // coef(a, l) = |a|!/a! C(|a| + l, l) 2^|a| (-1)^l (docs/conventions.md section 3 item 14); the
+  // terms make b! e_b, since the moments are stored over b! (computeMoments).
   for (int moment = 0; moment < this->MomentCount; ++moment)
   {
     const auto& beta = this->MonomialPowers[static_cast<std::size_t>(moment)];
+    const double betaFactorial = factorial(beta[0]) * factorial(beta[1]) * factorial(beta[2]);
     for (int g0 = 0; 2 * g0 <= beta[0]; ++g0)
     {
       for (int g1 = 0; 2 * g1 <= beta[1]; ++g1)
@@ -118,7 +121,7 @@ GeneratorTree::GeneratorTree(const double* generators,
           const double coefficient = factorial(m) /
               (factorial(a0) * factorial(a1) * factorial(a2)) * binomial(m + l, l) *
               std::ldexp(1.0, m) * (l % 2 ? -1.0 : 1.0) * factorial(l) /
-              (factorial(g0) * factorial(g1) * factorial(g2));
+              (factorial(g0) * factorial(g1) * factorial(g2)) * betaFactorial;
           this->Terms.push_back(
             { moment, this->MonomialIndex[static_cast<std::size_t>(at(a0, a1, a2))], coefficient });
         }
@@ -131,35 +134,57 @@ GeneratorTree::GeneratorTree(const double* generators,
   this->DirectBelow =
     static_cast<std::size_t>((this->Terms.size() + 11 * this->MomentCount) / 40);
 
-  // The multipole-to-local and local-to-local terms (GeneratorTreeCells.cpp): every alpha, beta
-  // with |alpha| + |beta| <= P.
+  // The multipole-to-local terms (GeneratorTreeCells.cpp): for each alpha, the index of
+  // gamma = alpha + beta for every beta with |alpha| + |beta| <= P, beta in graded order (so that
+  // those of |beta| <= n are the first monomialCount(n)).
+  this->ShiftRuns.push_back(0);
   for (int alpha = 0; alpha < this->MomentCount; ++alpha)
   {
     const auto& a = this->MonomialPowers[static_cast<std::size_t>(alpha)];
-    for (int beta = 0; beta < this->MomentCount; ++beta)
+    const int alphaDegree = this->MonomialDegree[static_cast<std::size_t>(alpha)];
+    for (int beta = 0; beta < monomialCount(P - alphaDegree); ++beta)
     {
       const auto& b = this->MonomialPowers[static_cast<std::size_t>(beta)];
-      const int alphaDegree = this->MonomialDegree[static_cast<std::size_t>(alpha)];
-      const int betaDegree = this->MonomialDegree[static_cast<std::size_t>(beta)];
-      if (alphaDegree + betaDegree > P)
+      this->ShiftGamma.push_back(
+        this->MonomialIndex[static_cast<std::size_t>(at(a[0] + b[0], a[1] + b[1], a[2] + b[2]))]);
+    }
+    this->ShiftRuns.push_back(this->ShiftGamma.size());
+  }
+
+  // The local-to-local shift one axis at a time (a polynomial's shift by delta is its shifts by
+  // delta_x e_x, delta_y e_y and delta_z e_z in turn): every alpha and power k with |alpha| + k <= P.
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (int alpha = 0; alpha < this->MomentCount; ++alpha)
+    {
+      const auto& a = this->MonomialPowers[static_cast<std::size_t>(alpha)];
+      for (int k = 0; k <= P - this->MonomialDegree[static_cast<std::size_t>(alpha)]; ++k)
       {
-        continue;
+        const int source = this->MonomialIndex[static_cast<std::size_t>(
+          at(a[0] + (axis == 0) * k, a[1] + (axis == 1) * k, a[2] + (axis == 2) * k))];
+        this->AxisShiftTerms[axis].push_back({ alpha, source, k, binomial(a[axis] + k, k) });
       }
-      const int gamma = this->MonomialIndex[static_cast<std::size_t>(at(a[0] + b[0], a[1] + b[1], a[2] + b[2]))];
-      this->ShiftTerms.push_back({ alpha, beta, gamma, alphaDegree, betaDegree,
-        binomial(a[0] + b[0], a[0]) * binomial(a[1] + b[1], a[1]) * binomial(a[2] + b[2], a[2]) });
+    }
+  }
+
+  // The moments' shift to a parent one axis at a time (computeMoments): every b and k <= b_axis.
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (int b = 0; b < this->MomentCount; ++b)
+    {
+      const auto& powers = this->MonomialPowers[static_cast<std::size_t>(b)];
+      for (int k = 0; k <= powers[axis]; ++k)
+      {
+        const int source = this->MonomialIndex[static_cast<std::size_t>(
+          at(powers[0] - (axis == 0) * k, powers[1] - (axis == 1) * k, powers[2] - (axis == 2) * k))];
+        this->MomentShiftTerms[axis].push_back({ b, source, k, binomial(powers[axis], k) });
+      }
     }
   }
 
   for (const auto& powers : this->MonomialPowers)
   {
-    this->Factorial.push_back(factorial(powers[0]) * factorial(powers[1]) * factorial(powers[2]));
-    this->InverseFactorial.push_back(1.0 / this->Factorial.back());
-  }
-  this->ShiftRuns.assign(static_cast<std::size_t>(this->MomentCount + 1), this->ShiftTerms.size());
-  for (std::size_t t = this->ShiftTerms.size(); t-- > 0;)
-  {
-    this->ShiftRuns[static_cast<std::size_t>(this->ShiftTerms[t].alpha)] = t;
+    this->InverseFactorial.push_back(1.0 / (factorial(powers[0]) * factorial(powers[1]) * factorial(powers[2])));
   }
   this->TermsOfDegree.assign(static_cast<std::size_t>(P + 1), 0);
   for (std::size_t t = 0; t < this->Terms.size(); ++t)
@@ -190,6 +215,23 @@ GeneratorTree::GeneratorTree(const double* generators,
   if (count > 0)
   {
     this->computeMoments(0);
+  }
+  for (std::vector<AxisShiftTerm>& terms : this->MomentShiftTerms)
+  {
+    std::vector<AxisShiftTerm>().swap(terms); // needed while building only
+  }
+  // Stored over beta! (every node's, once all shifts are done): the multipole-to-local sum then
+  // reads them as they are (addSourceToLocal), and the expansions' terms make beta! e_beta.
+  const auto nodeMoments = static_cast<std::size_t>(this->MomentCount * kComponents);
+  for (std::size_t offset = 0; offset < this->Moments.size(); offset += nodeMoments)
+  {
+    for (std::size_t m = 0; m < static_cast<std::size_t>(this->MomentCount); ++m)
+    {
+      for (std::size_t c = 0; c < kComponents; ++c)
+      {
+        this->Moments[offset + m * kComponents + c] *= this->InverseFactorial[m];
+      }
+    }
   }
   this->computeBudgets(tolerance);
   this->chooseCells();
@@ -503,17 +545,14 @@ bool GeneratorTree::computeMoments(int index)
     }
     return true;
   }
-  // yhat_parent = lambda yhat_child + delta: mu_b += sum_{g <= b} C(b, g) lambda^|g| delta^(b-g) mu_g.
+  // yhat_parent = lambda yhat_child + delta: mu_b += sum_{g <= b} C(b, g) lambda^|g| delta^(b-g) mu_g,
+  // the child's moments scaled by lambda^|g| and then shifted one axis at a time (the binomial
+  // of (lambda y + delta)^b is the product of the axes' binomials):
+  //   mu'_b = sum_{k <= b_axis} C(b_axis, k) delta_axis^k mu_(b - k e_axis),
+  // 3 C(P + 4, 4) terms instead of C(P + 6, 6).
   const int P = this->Degree;
-  auto at = [P](int a, int b, int c) { return (a * (P + 1) + b) * (P + 1) + c; };
-  double binomials[kMaxDegree + 1][kMaxDegree + 1];
-  for (int n = 0; n <= P; ++n)
-  {
-    for (int k = 0; k <= n; ++k)
-    {
-      binomials[n][k] = binomial(n, k);
-    }
-  }
+  const auto size = static_cast<std::size_t>(M * kComponents);
+  std::vector<double> from(size), to(size);
   for (int child : node.children)
   {
     const Node& c = this->Nodes[static_cast<std::size_t>(child)];
@@ -522,7 +561,6 @@ bool GeneratorTree::computeMoments(int index)
     const double delta[3] = { (c.center[0] - node.center[0]) / scale,
                               (c.center[1] - node.center[1]) / scale,
                               (c.center[2] - node.center[2]) / scale };
-    powers(delta);
     double lambdaPower[kMaxDegree + 1];
     lambdaPower[0] = 1.0;
     for (int n = 1; n <= P; ++n)
@@ -530,29 +568,37 @@ bool GeneratorTree::computeMoments(int index)
       lambdaPower[n] = lambdaPower[n - 1] * lambda;
     }
     const double* childMoments = this->Moments.data() + c.moments;
-    double* mu = this->Moments.data() + offset;
-    for (int b = 0; b < M; ++b)
+    for (std::size_t m = 0; m < static_cast<std::size_t>(M); ++m)
     {
-      const auto& beta = this->MonomialPowers[static_cast<std::size_t>(b)];
-      for (int g0 = 0; g0 <= beta[0]; ++g0)
+      for (std::size_t k = 0; k < kComponents; ++k)
       {
-        for (int g1 = 0; g1 <= beta[1]; ++g1)
+        from[m * kComponents + k] = lambdaPower[this->MonomialDegree[m]] * childMoments[m * kComponents + k];
+      }
+    }
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      double deltaPower[kMaxDegree + 1];
+      deltaPower[0] = 1.0;
+      for (int n = 1; n <= P; ++n)
+      {
+        deltaPower[n] = deltaPower[n - 1] * delta[axis];
+      }
+      std::fill(to.begin(), to.end(), 0.0);
+      for (const AxisShiftTerm& term : this->MomentShiftTerms[axis])
+      {
+        const double factor = term.binomial * deltaPower[term.power];
+        for (std::size_t k = 0; k < kComponents; ++k)
         {
-          for (int g2 = 0; g2 <= beta[2]; ++g2)
-          {
-            const int gamma = this->MonomialIndex[static_cast<std::size_t>(at(g0, g1, g2))];
-            const int rest = this->MonomialIndex[static_cast<std::size_t>(
-              at(beta[0] - g0, beta[1] - g1, beta[2] - g2))];
-            const double factor = binomials[beta[0]][g0] * binomials[beta[1]][g1] *
-              binomials[beta[2]][g2] * lambdaPower[g0 + g1 + g2] *
-              power[static_cast<std::size_t>(rest)];
-            for (int k = 0; k < kComponents; ++k)
-            {
-              mu[b * kComponents + k] += factor * childMoments[gamma * kComponents + k];
-            }
-          }
+          to[static_cast<std::size_t>(term.target) * kComponents + k] +=
+            factor * from[static_cast<std::size_t>(term.source) * kComponents + k];
         }
       }
+      from.swap(to);
+    }
+    double* mu = this->Moments.data() + offset;
+    for (std::size_t i = 0; i < size; ++i)
+    {
+      mu[i] += from[i];
     }
   }
   return true;
@@ -654,7 +700,7 @@ void GeneratorTree::addMultipole(const Node& node, const double* moments, int de
       to[l] += term.coefficient * from[l];
     }
   }
-  // Each moment's coefficient times q^|b| / D.
+  // Each moment's coefficient (b! e_b, the moments being mu_b / b!) times q^|b| / D.
   int n = 0;
   double out[kComponents][L] = {};
   for (int m = 0; m < M; ++m)
@@ -763,7 +809,11 @@ std::size_t GeneratorTree::bytes() const
     this->Moments.capacity() * sizeof(double) + this->Spread.capacity() * sizeof(double) +
     this->Terms.capacity() * sizeof(Term) +
     this->MonomialPowers.capacity() * sizeof(std::array<int, 3>) +
-    4 * this->MonomialIndex.capacity() * sizeof(int) + this->ShiftTerms.capacity() * sizeof(ShiftTerm);
+    4 * this->MonomialIndex.capacity() * sizeof(int) + this->ShiftGamma.capacity() * sizeof(int) +
+    (this->AxisShiftTerms[0].capacity() + this->AxisShiftTerms[1].capacity() + this->AxisShiftTerms[2].capacity() +
+     this->MomentShiftTerms[0].capacity() + this->MomentShiftTerms[1].capacity() +
+     this->MomentShiftTerms[2].capacity()) *
+      sizeof(AxisShiftTerm);
 }
 } // namespace detail
 } // namespace cga

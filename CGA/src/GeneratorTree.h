@@ -2,8 +2,9 @@
 // (g_i = w_i G_i) behind PointPairField::setTolerance (docs/conventions.md section 3 item 14).
 //
 // A binary tree over the generators (split at the median of the widest extent, leaves of at most
-// kLeafSize); each node holds the Cartesian moments mu_b = sum_i g_i yhat_i^b, |b| <= P (10, 12), of
-// its generators about its center c (yhat = (x - c)/s, s its radius rho, so no moment overflows).
+// kLeafSize); each node holds the Cartesian moments mu_b = sum_i g_i yhat_i^b, |b| <= P (10, 16), of
+// its generators about its center c (yhat = (x - c)/s, s its radius rho, so no moment overflows),
+// stored over b! (the multipole-to-local sum reads them as they are).
 // For a point p, d = p - c, D = k |d|^2 + eps, kappa = k/D, u = sqrt(kappa) d, q = rho sqrt(kappa):
 //   1/(k |d - y|^2 + eps) = (1/D) sum_j D_j,  |D_j| <= (j + 1) q^j (Chebyshev U_j with |arg| <= 1),
 // so the degree-p truncation errs by at most (1/D) R_p(q), R_p(q) = q^(p+1) ((p+2) - (p+1) q)/(1-q)^2,
@@ -81,12 +82,15 @@ public:
   std::size_t bytes() const;
 
   /// The largest degree the tree chooses from.
-  static constexpr int kMaxDegree = 12;
+  static constexpr int kMaxDegree = 16;
   /// The largest degree, kMaxDegree below kHighDegreeBelow with at least kHighDegreeFrom
   /// generators (tight budgets over many generators make larger nodes worth their costlier
   /// expansions). Measured on the bench's field in 65,536-point calls, degree 12 against 10 took
   /// at M = 100,000 0.71 times the CPU time at 1e-6, 0.75 at 1e-5, 0.84 at 1e-4, 1.04 at 1e-3 and
-  /// 1.6 at 0.1; at M = 30,000 1.1 times at 1e-5, at M = 10,000 1.4 times at 1e-4.
+  /// 1.6 at 0.1; at M = 30,000 1.1 times at 1e-5, at M = 10,000 1.4 times at 1e-4. With the
+  /// cheaper translations (addSourceToLocal, shiftLocal), at M = 100,000 against degree 12 (CPU
+  /// time, one probe each, load 5-10): degree 14 0.94 times at 1e-6, 16 0.74-0.81, 18 0.89, 20
+  /// 0.87; degree 16 0.91 times at 1e-5 and 1.07 at 1e-4.
   static constexpr int kDegree = 10;
   static constexpr double kHighDegreeBelow = 1e-3;
   static constexpr std::size_t kHighDegreeFrom = 100000;
@@ -128,11 +132,11 @@ private:
     int moment, monomial;
     double coefficient;
   };
-  // One term of the multipole-to-local and local-to-local sums: index alpha + beta = gamma,
-  // with the binomial C(gamma, alpha) and the degrees |alpha|, |beta|.
-  struct ShiftTerm
+  // One term of the local-to-local shift along one axis (shiftLocal): local[target] +=
+  // C(target_axis + power, power) delta_axis^power parent[source], source = target + power e_axis.
+  struct AxisShiftTerm
   {
-    int alpha, beta, gamma, alphaDegree, betaDegree;
+    int target, source, power;
     double binomial;
   };
   struct CellWork;
@@ -153,7 +157,7 @@ private:
 
   std::vector<double> Generators; // permuted, kGeneratorStride doubles each
   std::vector<Node> Nodes;
-  std::vector<double> Moments; // per node: MomentCount x Bivector::Count
+  std::vector<double> Moments; // per node: MomentCount x Bivector::Count, mu_b / b!
   std::vector<double> Spread;  // per node with moments: 3 x kSpreadPowers absolute moments
   double Falloff, Epsilon;
   int Degree = 0;
@@ -177,8 +181,10 @@ private:
   // points within `radius` of it: t V X/Phi (0 where not finite).
   double shareOf(const Node& node, double distance, double radius, double weightSum) const;
   void computeBudgets(double tolerance);
-  std::vector<double> Factorial, InverseFactorial; // beta! = beta_0! beta_1! beta_2! per monomial
-  std::vector<std::size_t> ShiftRuns; // ShiftTerms of alpha: [ShiftRuns[alpha], ShiftRuns[alpha + 1])
+  std::vector<double> InverseFactorial; // 1/beta!, beta! = beta_0! beta_1! beta_2! per monomial
+  // The multipole-to-local sum's indices: ShiftGamma[ShiftRuns[alpha] + beta] = index of alpha + beta.
+  std::vector<std::size_t> ShiftRuns;
+  std::vector<int> ShiftGamma;
   std::vector<std::size_t> TermsOfDegree; // Terms[0, TermsOfDegree[p]) make e_beta for |beta| <= p
   int MomentCount = 0;
   std::vector<int> MonomialIndex;       // (a, b, c) -> graded index, (Degree+1)^3 entries
@@ -188,7 +194,11 @@ private:
   std::vector<std::array<int, 3>> MonomialPowers;
   std::vector<Term> Terms;
   std::size_t DirectBelow = 0; // nodes with fewer generators are summed directly even when usable
-  std::vector<ShiftTerm> ShiftTerms;
+  std::vector<AxisShiftTerm> AxisShiftTerms[3]; // per axis, grouped by target in graded order
+  // The moments' shift to a parent per axis: moment[target] += C(target_axis, power)
+  // delta_axis^power child[source], source = target - power e_axis (computeMoments; freed once
+  // the moments are built).
+  std::vector<AxisShiftTerm> MomentShiftTerms[3];
   double LeafSide = 1.0; // a power of two
   int Levels = 0;        // the top cells are LeafSide * 2^Levels wide
 };

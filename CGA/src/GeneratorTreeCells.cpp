@@ -93,6 +93,13 @@ struct Components
     this->low += factor * l;
     this->high += factor * h;
   }
+  void store(double factor, double* to) const
+  {
+    const Eight l = factor * this->low;
+    const Two h = factor * this->high;
+    std::memcpy(to, &l, sizeof l);
+    std::memcpy(to + 8, &h, sizeof h);
+  }
   void addTo(double factor, double* to) const
   {
     Eight l;
@@ -329,6 +336,7 @@ void GeneratorTree::addSourceToLocal(const Node& node, const double* center, dou
     power[m] = power[this->MonomialParent[static_cast<std::size_t>(m)]] *
       u[this->MonomialAxis[static_cast<std::size_t>(m)]];
   }
+  // gamma! e_gamma (the terms' coefficients carry gamma!).
   std::fill_n(e, M, 0.0);
   const std::size_t termCount = this->TermsOfDegree[static_cast<std::size_t>(degree)];
   for (std::size_t t = 0; t < termCount; ++t)
@@ -336,81 +344,104 @@ void GeneratorTree::addSourceToLocal(const Node& node, const double* center, dou
     const Term& term = this->Terms[t];
     e[term.moment] += term.coefficient * power[term.monomial];
   }
-  double aPower[kMaxDegree + 1], bPower[kMaxDegree + 1];
-  aPower[0] = 1.0;
-  bPower[0] = 1.0;
+  // With C(alpha + beta, alpha) = gamma!/(alpha! beta!) and b^|beta| = b^|gamma| / b^|alpha|:
+  //   L_alpha += (-a/b)^|alpha|/alpha! sum_beta (gamma! e_gamma b^|gamma| / D) (mu_beta / beta!),
+  // the stored moments as they are (mu_beta / beta!), one product per term. Where a/b = r/rho_node
+  // is so large that its powers could overflow (a node far smaller than the cube), the powers of
+  // b go to a copy of the moments instead: L_alpha += (-a)^|alpha|/alpha! sum_beta
+  // (gamma! e_gamma / D) (b^|beta| mu_beta / beta!).
+  const double* moments = this->Moments.data() + node.moments;
+  const double ratio = a / b;
+  const bool scaleMoments = !(ratio <= 0x1p32);
+  double alphaFactor[kMaxDegree + 1], gammaFactor[kMaxDegree + 1];
+  alphaFactor[0] = 1.0;
+  gammaFactor[0] = 1.0 / D;
   for (int n = 1; n <= degree; ++n)
   {
-    aPower[n] = -a * aPower[n - 1];
-    bPower[n] = b * bPower[n - 1];
+    alphaFactor[n] = -(scaleMoments ? a : ratio) * alphaFactor[n - 1];
+    gammaFactor[n] = (scaleMoments ? 1.0 : b) * gammaFactor[n - 1];
   }
-  // With C(alpha + beta, alpha) = gamma!/(alpha! beta!): L_alpha += (-a)^|alpha|/alpha! times the sum
-  // over beta of (gamma! e_gamma / D) (b^|beta| mu_beta / beta!), one product per term.
-  const double* moments = this->Moments.data() + node.moments;
-  alignas(64) double scaled[kMaxMomentsOfDegree * kComponents];
   for (int m = 0; m < M; ++m)
   {
-    const auto index = static_cast<std::size_t>(m);
-    const double factor = bPower[this->MonomialDegree[index]] * this->InverseFactorial[index];
-    for (int c = 0; c < kComponents; ++c)
-    {
-      scaled[m * kComponents + c] = factor * moments[m * kComponents + c];
-    }
-    e[m] *= this->Factorial[index] / D;
+    e[m] *= gammaFactor[this->MonomialDegree[static_cast<std::size_t>(m)]];
   }
-  // The monomials are in graded order: alpha's terms of |alpha| + |beta| <= degree come first.
+  alignas(64) double scaled[kMaxMomentsOfDegree * kComponents];
+  if (scaleMoments)
+  {
+    double bPower = 1.0;
+    for (int m = 0; m < M; ++m)
+    {
+      const auto index = static_cast<std::size_t>(m);
+      if (m > 0 && this->MonomialDegree[index] != this->MonomialDegree[index - 1])
+      {
+        bPower *= b;
+      }
+      for (int c = 0; c < kComponents; ++c)
+      {
+        scaled[m * kComponents + c] = bPower * moments[m * kComponents + c];
+      }
+    }
+    moments = scaled;
+  }
+  // The monomials are in graded order: alpha's betas of |alpha| + |beta| <= degree come first.
   for (int alpha = 0; alpha < M; ++alpha)
   {
-    const ShiftTerm* term = this->ShiftTerms.data() + this->ShiftRuns[static_cast<std::size_t>(alpha)];
-    const ShiftTerm* end = this->ShiftTerms.data() + this->ShiftRuns[static_cast<std::size_t>(alpha + 1)];
-    const int betaDegrees = degree - term->alphaDegree;
-    Components sum = {};
-    for (; term != end && term->betaDegree <= betaDegrees; ++term)
-    {
-      sum.add(e[term->gamma], scaled + term->beta * kComponents);
-    }
     const auto index = static_cast<std::size_t>(alpha);
-    sum.addTo(aPower[this->MonomialDegree[index]] * this->InverseFactorial[index], local + alpha * kComponents);
+    const int alphaDegree = this->MonomialDegree[index];
+    const int* gamma = this->ShiftGamma.data() + this->ShiftRuns[index];
+    const int betaCount = (degree - alphaDegree + 1) * (degree - alphaDegree + 2) * (degree - alphaDegree + 3) / 6;
+    Components sum = {};
+    for (int beta = 0; beta < betaCount; ++beta)
+    {
+      sum.add(e[gamma[beta]], moments + beta * kComponents);
+    }
+    sum.addTo(alphaFactor[alphaDegree] * this->InverseFactorial[index], local + alpha * kComponents);
   }
 }
 
 // local = the parent's polynomial in the child's variable: yhat_parent = lambda yhat + delta,
 // lambda = radius / parentRadius = 1/2, delta = (center - parentCenter)/parentRadius:
-//   L_alpha = lambda^|alpha| sum_beta C(alpha + beta, alpha) delta^beta L_parent,(alpha+beta).
+//   L_alpha = lambda^|alpha| sum_beta C(alpha + beta, alpha) delta^beta L_parent,(alpha+beta),
+// the shift by delta done as the shifts by delta_x e_x, delta_y e_y, delta_z e_z in turn (each
+// exact for a polynomial of degree P: sum_k C(alpha_axis + k, k) delta_axis^k L_(alpha + k e_axis)),
+// 3 C(P + 4, 4) terms instead of C(P + 6, 6) (14,535 against 74,613 at P = 16).
 BOOSTED_LANE_CLONES
 void GeneratorTree::shiftLocal(const double* parent, const double* parentCenter, const double* center,
                                double radius, double* local) const
 {
-  const int M = this->MomentCount;
+  const int P = this->Degree;
   const double parentRadius = 2.0 * radius;
-  const double delta[3] = { (center[0] - parentCenter[0]) / parentRadius,
-                            (center[1] - parentCenter[1]) / parentRadius,
-                            (center[2] - parentCenter[2]) / parentRadius };
-  double power[kMaxMomentsOfDegree];
-  power[0] = 1.0;
-  for (int m = 1; m < M; ++m)
-  {
-    power[m] = power[this->MonomialParent[static_cast<std::size_t>(m)]] *
-      delta[this->MonomialAxis[static_cast<std::size_t>(m)]];
-  }
+  alignas(64) double scratch[kMaxMomentsOfDegree * kComponents];
+  // parent -> local (x) -> scratch (y) -> local (z, with lambda^|alpha|).
   double lambdaPower[kMaxDegree + 1];
   lambdaPower[0] = 1.0;
-  for (int n = 1; n <= this->Degree; ++n)
+  for (int n = 1; n <= P; ++n)
   {
     lambdaPower[n] = 0.5 * lambdaPower[n - 1];
   }
-  std::fill_n(local, static_cast<std::size_t>(M * kComponents), 0.0);
-  for (std::size_t t = 0; t < this->ShiftTerms.size();)
+  const double* from[3] = { parent, local, scratch };
+  double* to[3] = { local, scratch, local };
+  for (int axis = 0; axis < 3; ++axis)
   {
-    const int alpha = this->ShiftTerms[t].alpha;
-    const double scale = lambdaPower[this->ShiftTerms[t].alphaDegree];
-    Components sum = {};
-    for (; t < this->ShiftTerms.size() && this->ShiftTerms[t].alpha == alpha; ++t)
+    const double delta = (center[axis] - parentCenter[axis]) / parentRadius;
+    double deltaPower[kMaxDegree + 1];
+    deltaPower[0] = 1.0;
+    for (int n = 1; n <= P; ++n)
     {
-      const ShiftTerm& term = this->ShiftTerms[t];
-      sum.add(term.binomial * power[term.beta], parent + term.gamma * kComponents);
+      deltaPower[n] = delta * deltaPower[n - 1];
     }
-    sum.addTo(scale, local + alpha * kComponents);
+    const std::vector<AxisShiftTerm>& terms = this->AxisShiftTerms[axis];
+    for (std::size_t t = 0; t < terms.size();)
+    {
+      const int target = terms[t].target;
+      Components sum = {};
+      for (; t < terms.size() && terms[t].target == target; ++t)
+      {
+        sum.add(terms[t].binomial * deltaPower[terms[t].power], from[axis] + terms[t].source * kComponents);
+      }
+      sum.store(axis == 2 ? lambdaPower[this->MonomialDegree[static_cast<std::size_t>(target)]] : 1.0,
+                to[axis] + target * kComponents);
+    }
   }
 }
 

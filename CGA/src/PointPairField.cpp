@@ -289,7 +289,7 @@ bool PointPairField::setTolerance(double tolerance, std::size_t minimumGenerator
 double PointPairField::treeMinimumTolerance(std::size_t generators)
 {
   const double count = static_cast<double>(std::max<std::size_t>(generators, 1));
-  return std::min(maximumTolerance(), 1e-4 * std::pow(10000.0 / count, 2.0));
+  return std::min(maximumTolerance(), 1e-4 * std::pow(10000.0 / count, 3.0));
 }
 
 std::size_t PointPairField::treeBytes() const

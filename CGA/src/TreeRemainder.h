@@ -30,17 +30,21 @@ inline double treeRemainderBound(int degree, double q, double S)
 /// q_i = q (a s_i + b) <= q errs by at most (a s_i + b)^(p+1) times treeRemainderBound(p, q, S)
 /// (its factors besides q^(p+1) increase with q): the node errs by at most that bound times
 /// treeSpreadMoment(moments, p + 1, a, b) instead of times sum_i m_i.
+/// power <= kMaxSpreadPower.
+constexpr int kMaxSpreadPower = 64;
 inline double treeSpreadMoment(const double* moments, int power, double a, double b)
 {
+  // b^j by repeated products from 1 (b = 0 gives 0^0 = 1), tabulated once.
+  double bPowers[kMaxSpreadPower + 1];
+  bPowers[0] = 1.0;
+  for (int j = 1; j <= power; ++j)
+  {
+    bPowers[j] = bPowers[j - 1] * b;
+  }
   double sum = 0.0, binomial = 1.0, aPower = 1.0;
   for (int k = 0; k <= power; ++k)
   {
-    // b^(power - k) by repeated products (b = 0 gives 0^0 = 1 at k = power).
-    double bPower = 1.0;
-    for (int j = k; j < power; ++j)
-    {
-      bPower *= b;
-    }
+    const double bPower = bPowers[power - k];
     sum += binomial * aPower * bPower * moments[k];
     binomial = binomial * (power - k) / (k + 1);
     aPower *= a;

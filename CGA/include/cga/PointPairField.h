@@ -195,10 +195,10 @@ public:
   static constexpr double maximumTolerance() { return 1.0; }
   static constexpr std::size_t treeMinimumGenerators() { return 10000; }
   /// The least tolerance at which M generators are summed by the tree by default,
-  /// 1e-4 (10,000/M)^2 (at most 1): the tree's cost grows with the digits asked for and the
+  /// 1e-4 (10,000/M)^3 (at most 1): the tree's cost grows with the digits asked for and the
   /// direct sum's with M; measured on the bench's field in calls of 65,536 points, where the tree
-  /// was 1.1 to 1.6 times as fast as the direct sum at this tolerance for M = 10,000, 30,000 and
-  /// 100,000 (1e-4, 1.1e-5, 1e-6) and slower or barely faster a decade below it (README, Performance, Many generators).
+  /// was 0.99, 1.04 and 1.35 times as fast as the direct sum at this tolerance for M = 10,000,
+  /// 30,000 and 100,000 (1e-4, 3.7e-6, 1e-7) (README, Performance, Many generators).
   static double treeMinimumTolerance(std::size_t generators);
   /// Bytes the tree holds (0 without one), its expansion degree (0 without one), and V, the
   /// displacement scale per unit strength its budget is relative to (0 without one).
