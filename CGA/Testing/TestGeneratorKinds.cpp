@@ -15,7 +15,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace
@@ -261,6 +263,82 @@ TEST(GeneratorKinds, OneDilationScalesAboutItsLocationByTheDocumentedFactor)
   expectOneGeneratorIsItsClosedForm(GeneratorKind::Dilation, 84, kBothRules,
     [](const GeneratorParameters& g, double c, Vec3 p)
     { return g.location + std::exp(c) * (p - g.location); });
+}
+
+TEST(GeneratorKinds, AStrongDilationScalesByItsFactorToTheLastBits)
+{
+  // A lone dilation multiplies distances from its location by e^c, here c = strength w |v| / (k d^2
+  // + eps) = strength exactly (w = |v| = k = 1, d^2 + eps = 1): the image x + e^c (p - x) of both
+  // paths within 2e-15 of its size for c = 1 ... 700, growing and shrinking. The sandwich of the
+  // closed form exp(B)/cosh(c/2) formed 1 - tanh^2 by cancellation: the image lost about e^c units
+  // of 2^-53 (9.6e-15 of it at c = 5, 1.7e-4 at 30), and was refused at c = 300
+  // (docs/conventions.md section 2 item 12, strongHyperbolicSandwich).
+  const Vec3 location{ 0.25, -0.5, 0.75 };
+  const FieldGenerator g = FieldGenerator::of(GeneratorKind::Dilation, location, { 0.0, 0.0, 1.0 }, 0.0, 1.0);
+  // d^2 = 0.75 and eps = 0.25, d^2 = 0.5 (not a power of two) and eps = 0.5: each sum is 1.
+  const Vec3 offsets[] = { { 0.5, 0.5, 0.5 }, { -0.5, 0.5, -0.5 }, { 0.5, 0.0, -0.5 } };
+  const double epsilons[] = { 0.25, 0.25, 0.5 };
+  const std::string active = mapPointsInstructionSet();
+  double worst = 0.0;
+  for (int o = 0; o < 3; ++o)
+  {
+    const PointPairField field(&g, 1, 1.0, epsilons[o]);
+    const Vec3 p = location + offsets[o];
+    for (const double c : { 1.0, 2.0, 3.0, 5.0, 10.0, 20.0, 30.0, 38.0, 50.0, 100.0, 200.0, 300.0,
+                            400.0, 500.0, 600.0, 700.0 })
+    {
+      for (const double strength : { c, -c })
+      {
+        const Vec3 expected = location + std::exp(strength) * offsets[o];
+        const double size = norm(expected);
+        Vec3 image;
+        ASSERT_TRUE(field.map(p, strength, ExponentialRule::Exact, image)) << "c " << strength;
+        // The batch path on every instruction set: the same bits (laneExp is SLEEF's
+        // deterministic exp, as the pointwise map's).
+        const double in[3] = { p.x, p.y, p.z };
+        for (const std::string& set : mapPointsInstructionSets())
+        {
+          ASSERT_TRUE(useMapPointsInstructionSet(set));
+          double batch[3];
+          ASSERT_EQ(field.mapPoints(in, batch, 1, strength, ExponentialRule::Exact), 0u);
+          EXPECT_EQ(batch[0], image.x) << set;
+          EXPECT_EQ(batch[1], image.y) << set;
+          EXPECT_EQ(batch[2], image.z) << set;
+        }
+        ASSERT_TRUE(useMapPointsInstructionSet(active));
+        const double error = norm(image - expected) / size;
+        EXPECT_LE(error, 2e-15) << "c " << strength << " offset " << o;
+        worst = std::max(worst, error);
+        // The location is the fixed point, to the bit, where its own c = strength/eps is at most
+        // 1400 (kStrongHyperbolicLimit: the plane's angle is c/2).
+        if (std::abs(strength) / epsilons[o] <= 1400.0)
+        {
+          Vec3 fixed;
+          ASSERT_TRUE(field.map(location, strength, ExponentialRule::Exact, fixed)) << "c " << strength;
+          EXPECT_EQ(fixed.x, location.x);
+          EXPECT_EQ(fixed.y, location.y);
+          EXPECT_EQ(fixed.z, location.z);
+        }
+      }
+    }
+  }
+  std::printf("largest error of a strong dilation / its image: %.3g\n", worst);
+  // A location and points that are not short binary fractions (the filter's sphere), c = 13 ... 27:
+  // the closed form with c in double, whose rounding (a few units of 2^-53 times c) bounds the
+  // difference. The product by a rounded 1/sqrt(l1) instead of the division made N's no^ni
+  // component 1 + 2^-52 here and the image wrong by several times its size.
+  const Vec3 x{ 0.2, -0.1, 0.3 };
+  const Vec3 p{ 0.2545184791088104, -0.14694631099700928, 0.404508501291275 };
+  for (const double weight : { 0.5, 0.7, 0.75, 0.8, 0.9, 1.0 })
+  {
+    const FieldGenerator d = FieldGenerator::of(GeneratorKind::Dilation, x, { 0.0, 0.0, 2.0 }, 0.0, weight);
+    const PointPairField field(&d, 1, 1.5, 0.05);
+    const double c = weight * 2.0 / (1.5 * dot(p - x, p - x) + 0.05);
+    const Vec3 expected = x + std::exp(c) * (p - x);
+    Vec3 image;
+    ASSERT_TRUE(field.map(p, 1.0, ExponentialRule::Exact, image)) << weight;
+    EXPECT_LE(norm(image - expected), 1e-14 * c * norm(expected)) << "c " << c;
+  }
 }
 
 TEST(GeneratorKinds, OneTranslationTranslatesAlongItsDirection)

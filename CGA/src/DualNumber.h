@@ -254,6 +254,12 @@ BOOSTED_FORCE_INLINE Dual<T, N> laneSqrt(const Dual<T, N>& x)
   return chain(x, r, select(zero, T{}, half));
 }
 template <typename T, int N>
+BOOSTED_FORCE_INLINE Dual<T, N> laneExp(const Dual<T, N>& x)
+{
+  const T e = laneExp(x.v);
+  return chain(x, e, e);
+}
+template <typename T, int N>
 BOOSTED_FORCE_INLINE Dual<T, N> laneCosh(const Dual<T, N>& x)
 {
   return chain(x, laneCosh(x.v), laneSinh(x.v));

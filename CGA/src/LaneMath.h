@@ -1,6 +1,6 @@
 // Internal: what the templates of ExponentialScalars.h and PointMapCore.h need of their number type
 // T beyond + - * /: the lanes as an array (LaneArray), per-lane masks and selection, the fused
-// multiply-add and the elementary functions sqrt, cosh, sinh, tanh and sincos.
+// multiply-add and the elementary functions sqrt, exp, cosh, sinh, tanh and sincos.
 //
 // T is double (one lane: PointPairField::map, expExact, ...) or the block kernel's vector of lanes,
 // whose overloads PointPairKernelLanes.h defines in its instruction set's namespace (found by
@@ -182,6 +182,10 @@ inline double laneSqrt(double x)
 }
 
 #ifdef BOOSTED_HAVE_SLEEF
+inline double laneExp(double x)
+{
+  return Sleef_cinz_expd1_u10purec(x);
+}
 inline double laneCosh(double x)
 {
   return Sleef_cinz_coshd1_u10purec(x);
@@ -201,6 +205,10 @@ inline void laneSinCos(double x, double& s, double& c)
   c = r.y;
 }
 #else
+inline double laneExp(double x)
+{
+  return exp(x);
+}
 inline double laneCosh(double x)
 {
   return cosh(x);

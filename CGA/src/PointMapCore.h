@@ -311,8 +311,10 @@ void seriesExponential(const T* b, const T& m, const T& su, const T* wUnit, cons
 
 /// The Exact rule (expExact) into k (detail::pack order): the power series where both squares of B
 /// are at most 1 in size, else the closed form in u = B/m; NaN where B is not finite.
+/// (With the plane squares l1, l2 of u and wu = <W u>_2 given.)
 template <typename T>
-void exactExponential(const T* b, const UnitBivector<T>& unit, bool divideByCosh, T* k)
+void exactExponential(const T* b, const UnitBivector<T>& unit, const T& l1Value, const T& l2Value,
+                      const T* wu, bool divideByCosh, T* k)
 {
   using V = ValueOf<T>;
   const Scale<T>& scale = unit.scale;
@@ -320,10 +322,6 @@ void exactExponential(const T* b, const UnitBivector<T>& unit, bool divideByCosh
   const T* w = unit.w;
   const T& w2 = unit.w2;
   const T& su = unit.s;
-  T wu[kBivector];
-  detail::applyProduct<detail::kRightContraction>(w, u, wu);
-  T l1Value, l2Value;
-  detail::planeSquares(su, w2, l1Value, l2Value);
   const V m = scale.usableOrOne();
   // B = 0 takes the series with m = 1: exp(0) = 1, and a Dual gets the tangents of exp at 0.
   const Mask<V> useSeries = maskOr(
@@ -370,6 +368,15 @@ void exactExponential(const T* b, const UnitBivector<T>& unit, bool divideByCosh
   {
     k[i] = nanWhereNotFinite(scale, select(useSeries, fromSeries[i], fromClosed[i]));
   }
+}
+
+template <typename T>
+void exactExponential(const T* b, const UnitBivector<T>& unit, bool divideByCosh, T* k)
+{
+  T wu[kBivector], l1, l2;
+  detail::applyProduct<detail::kRightContraction>(unit.w, unit.u, wu);
+  detail::planeSquares(unit.s, unit.w2, l1, l2);
+  exactExponential(b, unit, l1, l2, wu, divideByCosh, k);
 }
 
 template <typename T>
@@ -450,6 +457,128 @@ void sandwichOrigin(const T* k, T* r)
   const T one[1] = { splat<T>(1.0) };
   detail::applyProduct<detail::kEvenTimesOrigin>(k, one, odd);
   detail::applyProduct<detail::kOddTimesEvenToVector>(odd, reversed, r);
+}
+
+/// m sqrt(l1) (a, the hyperbolic angle of B's hyperbolic plane) above which the field's frame maps
+/// by strongHyperbolicSandwich: there the closed form's sandwich cancels terms of size e^{2a} (or
+/// forms 1 - tanh^2 a) to the point's weight, losing about e^{2a} units of 2^-53 (e^2 = 7 at the
+/// threshold: 1e-15).
+constexpr double kStrongHyperbolic = 1.0;
+
+/// a above which the field's frame keeps the closed form scaled by 1/cosh (item 7): e^a overflows
+/// from 709.78, and where the image is in range there it is the attracting fixed point, which the
+/// scaled closed form gives (a dilation's image x + e^{2a}(p - x) leaves the doubles' range unless
+/// |p - x| < 1e-300).
+constexpr double kStrongHyperbolicLimit = 700.0;
+
+/// q, with its tangents dropped where its value is exactly 0 (a Dual: DualNumber.h). Used for the
+/// parts of the strong sandwich that a factor e^{2a} multiplies: where B's hyperbolic plane keeps ni
+/// (a dilation with translations: every generator a similarity, B without e_i^no parts), its
+/// growing null direction is ni exactly and those parts' no and Euclidean components are 0 at every
+/// p, their values to the bit, while their tangents would carry the rounding of N1's normalization
+/// times e^{2a}.
+template <typename T>
+BOOSTED_FORCE_INLINE T exactZeroStaysZero(const T& q)
+{
+  return select(equalTo(valueOf(q), ValueOf<T>{}), T{}, q);
+}
+
+/// The binary exponent of the largest of a vector's no and Euclidean components (those the image
+/// reads), -1e4 where they are all 0 (so that such a part never sets the scale).
+template <typename T>
+BOOSTED_FORCE_INLINE ValueOf<T> imagePartExponent(const T* v)
+{
+  using V = ValueOf<T>;
+  V largest = magnitude(valueOf(v[NO]));
+  for (const int i : { E1, E2, E3 })
+  {
+    const V a = magnitude(valueOf(v[i]));
+    largest = select(lessThan(largest, a), a, largest);
+  }
+  return select(equalTo(largest, V{}), splat<V>(-1e4), binaryExponentOf(largest));
+}
+
+/// <K X ~K>_1 (up to a positive factor) for K = exp(B), B = m u with a strong hyperbolic plane
+/// (l1 > 0 the square of u's hyperbolic plane, l2 <= 0 the other's, wu = <W u>_2), without the
+/// cancellation of 1 - tanh^2 (docs/conventions.md section 2 item 7 and 12). B splits into the
+/// commuting B1 + B2, B2 = (wu/2 - l2 u)/(l1 - l2) (from <W B>_2 = 2 (l1 B2 + l2 B1)), B1 = u - B2,
+/// and exp(B) = exp(B1) exp(B2). The elliptic exp(B2) = cos + sin N2 turns X by the closed form of
+/// sandwichScalarBivector (its terms are bounded: cos^2 + sin^2, no cancellation) to Y. The
+/// hyperbolic exp(a N1), N1 = B1/sqrt(l1) (N1^2 = 1), a = m sqrt(l1), fixes the part of Y
+/// orthogonal to its plane and scales the plane's two null directions: with z = Y _| N1 and
+/// P = z _| N1 (Y's projection on the plane), Y- = (P - z)/2 and Y+ = (P + z)/2 go to e^{2a} Y- and
+/// e^{-2a} Y+, so
+///   K Y ~K = e^{2a} Y- + (Y - P) + e^{-2a} Y+,
+/// each part multiplied by its exact factor. Since the image is homogeneous, the three are scaled by
+/// a power of two 2^-k that brings the largest of their no and Euclidean parts near 1, and e^{2a} is
+/// applied as e^a, 2^-k, e^a in turn, so that nothing overflows while the image is in range
+/// (a up to kStrongHyperbolicLimit). The caller takes it where B is a 2-blade (B2 = 0, Y = X).
+template <typename T>
+void strongHyperbolicSandwich(const UnitBivector<T>& unit, const T& l1, const T& l2, const T* wu,
+                              const T* x, T* r)
+{
+  using V = ValueOf<T>;
+  const T* u = unit.u;
+  const T m = asNumber<T>(unit.scale.usableOrOne());
+  // Lanes that are not strong (selected away by the caller) must not divide by 0.
+  const Mask<V> positive = lessThan(V{}, valueOf(l1));
+  const T l1Safe = select(positive, l1, splat<T>(1.0));
+  const T inverseGap = 1.0 / (l1Safe - l2);
+  const T root1 = laneSqrt(l1Safe);
+  T n1[kBivector], b2[kBivector];
+  for (int c = 0; c < kBivector; ++c)
+  {
+    b2[c] = (0.5 * wu[c] - l2 * u[c]) * inverseGap;
+    // A division, not a product by 1/root1: for a dilation N's no^ni component is then u/|u| = +-1
+    // to the bit (sqrt(fl(u^2)) = |u|), which keeps X-'s and X_perp's no parts exactly 0.
+    n1[c] = (u[c] - b2[c]) / root1;
+  }
+  // The elliptic factor (l2 <= 0; a rounding l2 > 0 is a tiny boost, as accurate).
+  const detail::PlaneFunctions<T> f2 = detail::planeFunctions(m, l2, false);
+  for (int c = 0; c < kBivector; ++c)
+  {
+    b2[c] = f2.sHat * b2[c];
+  }
+  T y[kVector];
+  sandwichScalarBivector(f2.c, b2, x, y);
+  T z[kVector], projection[kVector], minus[kVector], orthogonal[kVector], plus[kVector];
+  contract(y, n1, z);
+  contract(z, n1, projection);
+  for (int i = 0; i < kVector; ++i)
+  {
+    minus[i] = 0.5 * (projection[i] - z[i]);
+    orthogonal[i] = y[i] - projection[i];
+    plus[i] = 0.5 * (projection[i] + z[i]);
+  }
+  if constexpr (kHasTangents<T>)
+  {
+    for (const int i : { NO, E1, E2, E3 })
+    {
+      minus[i] = exactZeroStaysZero(minus[i]);
+    }
+    orthogonal[NO] = exactZeroStaysZero(orthogonal[NO]);
+  }
+  const T a = m * root1;
+  const T grow = laneExp(a), shrink = 1.0 / grow;
+  // k: the largest binary exponent of the three scaled parts (2a/ln2 the exponent of e^{2a}).
+  const V twoA = 2.0 * valueOf(a) * 1.4426950408889634;
+  const V kMinus = twoA + imagePartExponent(minus);
+  const V kOrthogonal = imagePartExponent(orthogonal);
+  const V kPlus = imagePartExponent(plus) - twoA;
+  V k = select(lessThan(kMinus, kOrthogonal), kOrthogonal, kMinus);
+  k = select(lessThan(k, kPlus), kPlus, k);
+  const V rounding = splat<V>(0x1.8p52);
+  k = (k + rounding) - rounding;
+  k = select(lessThan(k, splat<V>(-1022.0)), splat<V>(-1022.0), k);
+  k = select(lessThan(splat<V>(1022.0), k), splat<V>(1022.0), k);
+  k = select(equalTo(k, k), k, V{}); // a NaN lane (its image is NaN anyway)
+  const T scale = asNumber<T>(powerOfTwoOf(-k));
+  // Each part times its factors one at a time: a factor alone (e^{2a} 2^-k) may overflow where the
+  // part is 0 or tiny (p on a dilation's location: only X+ is non-zero), the products do not.
+  for (int i = 0; i < kVector; ++i)
+  {
+    r[i] = ((minus[i] * grow) * scale) * grow + scale * orthogonal[i] + ((plus[i] * shrink) * scale) * shrink;
+  }
 }
 
 /// fn(r): the Euclidean point r_e / r_no, and per lane whether it is mapped (normalizePoint: the
@@ -732,9 +861,42 @@ void mapPointBy(const kernel::FieldArgs& args, T* b, const T* p, T* image, bool*
     toFlags<ValueOf<T>>(aroundMapped, mapped);
     return;
   }
-  T k[kEven];
-  exactExponential(b, true, k, false);
-  sandwichEven(k, x, r);
+  // The field's frame: the closed form of exp(B) and its sandwich, or where B's hyperbolic plane
+  // is strong (m^2 l1 above kStrongHyperbolic^2) strongHyperbolicSandwich.
+  using V = ValueOf<T>;
+  UnitBivector<T> unit;
+  unitBivector(b, unit, false);
+  T wu[kBivector], l1, l2;
+  detail::applyProduct<detail::kRightContraction>(unit.w, unit.u, wu);
+  detail::planeSquares(unit.s, unit.w2, l1, l2);
+  // Strong: a = m sqrt(l1) in (kStrongHyperbolic, kStrongHyperbolicLimit], B a 2-blade (W = 0:
+  // a dilation with translations, where the sandwich's parts come out exact; a second plane's
+  // split would round them).
+  const V mUnit = unit.scale.usableOrOne();
+  const V angleSquare = (valueOf(l1) * mUnit) * mUnit;
+  Mask<V> strong = maskAnd(maskAnd(unit.scale.usable, maskNot(aroundPoint)),
+    maskAnd(lessThan(splat<V>(kStrongHyperbolic * kStrongHyperbolic), angleSquare),
+      lessEqual(angleSquare, splat<V>(kStrongHyperbolicLimit * kStrongHyperbolicLimit))));
+  for (int i = 0; i < kQuadvector; ++i)
+  {
+    strong = maskAnd(strong, equalTo(valueOf(unit.w[i]), V{}));
+  }
+  const bool anyStrong = anyLane(strong), allStrong = allLanes(strong);
+  if (!allStrong)
+  {
+    T k[kEven];
+    exactExponential(b, unit, l1, l2, wu, true, k);
+    sandwichEven(k, x, r);
+  }
+  if (anyStrong)
+  {
+    T fromStrong[kVector];
+    strongHyperbolicSandwich(unit, l1, l2, wu, x, fromStrong);
+    for (int i = 0; i < kVector; ++i)
+    {
+      r[i] = allStrong ? fromStrong[i] : select(strong, fromStrong[i], r[i]);
+    }
+  }
   Mask<T> fieldMapped = normalizeLanes(p, r, image);
   if (anyAround)
   {

@@ -283,6 +283,7 @@ BOOSTED_FORCE_INLINE void fromLanes(const double* lanes, LaneVector& v)
     }                                                                                            \
     return x;                                                                                    \
   }
+BOOSTED_LANE_FUNCTION(laneExp, exp)
 BOOSTED_LANE_FUNCTION(laneCosh, cosh)
 BOOSTED_LANE_FUNCTION(laneSinh, sinh)
 BOOSTED_LANE_FUNCTION(laneTanh, tanh)
@@ -311,6 +312,7 @@ BOOSTED_FORCE_INLINE void laneSinCos(const LaneVector& x, LaneVector& sine, Lane
     fromLanes(lanes, r);                                                                         \
     return r;                                                                                    \
   }
+BOOSTED_LANE_FUNCTION(laneExp)
 BOOSTED_LANE_FUNCTION(laneCosh)
 BOOSTED_LANE_FUNCTION(laneSinh)
 BOOSTED_LANE_FUNCTION(laneTanh)

@@ -114,26 +114,76 @@ def field_bivector(generators, p, falloff, epsilon):
     return total
 
 
-def image_of_bivector(s, p, strength, digits=DIGITS):
-    """fn(expm(-strength A(s)) up(p)) as mpf triple. The entries of expm reach |A|^2 (and more)
-    while the image is of order 1, so the precision grows with |A|: 3 digits per decade. (A
-    hyperbolic part's entries e^c and e^-c cancel next to its fixed points, a dilation's location:
-    there a rounding of B moves the image by e^c times it, far below double precision for the
-    tests' dilations, c <= 5.)"""
-    scaled = [[-mpf(strength) * s[i][j] for j in range(5)] for i in range(5)]
+def _size_digits(scaled):
+    """Digits the entries of expm cost next to a nearly nilpotent exponent: they reach |A|^2 (and
+    more) while the image is of order 1, so 3 digits per decade of |A|."""
     size = max(abs(c) for row in scaled for c in row)
-    extra = 3 * max(0, int(mpmath.log10(size)) + 1) if size > 0 else 0
-    with mp.workdps(digits + extra):
-        y = mpmath.expm(action(scaled)) * mpmath.matrix(up(p))
-        weight = -dot(NI, [y[i] for i in range(5)])
-        return [+(y[i] / weight) for i in range(3)]
+    return 3 * max(0, int(mpmath.log10(size)) + 1) if size > 0 else 0
+
+
+def _hyperbolic_digits(a):
+    """Digits a hyperbolic part of the action a can cost: a has the real eigenvalues +-h (h = 2 x
+    the angle of the hyperbolic plane; the c of a dilation's factor e^c), so expm's entries reach
+    e^h while next to the fixed point that e^-h keeps (a dilation's location) the point's weight is
+    of size e^-h: 2 h / ln 10 digits. With t2 = tr(a^2)/2 = h^2 - g^2 and t4 = tr(a^4)/2 =
+    h^4 + g^4 (+-i g the other plane's eigenvalues), h^2 = (t2 + sqrt(2 t4 - t2^2)) / 2. h is
+    capped at 750: beyond, such an image is out of the doubles' range."""
+    a2 = a * a
+    a4 = a2 * a2
+    t2 = sum(a2[i, i] for i in range(5)) / 2
+    t4 = sum(a4[i, i] for i in range(5)) / 2
+    h = mpmath.sqrt(max(mpf(0), (t2 + mpmath.sqrt(max(mpf(0), 2 * t4 - t2 * t2))) / 2))
+    return int(2 * min(h, mpf(750)) / mpmath.log(10)) + 10
+
+
+def _image_and_loss(scaled, p):
+    """fn(expm(A) up(p)) at the working precision, and the decades its sums lost to cancellation:
+    of the weight against the sum of its terms' magnitudes, and of the Euclidean part against its
+    own (or the weight's, where that part is 0)."""
+    a = action(scaled)
+    e = mpmath.expm(a)
+    u = up(p)
+    y = e * mpmath.matrix(u)
+    terms = [sum(abs(e[i, j] * u[j]) for j in range(5)) for i in range(5)]
+    weight = -dot(NI, [y[i] for i in range(5)])        # = y(e+) + y(e-)
+    euclidean = max(abs(y[i]) for i in range(3))
+    if weight == 0:
+        return None, mpf("inf"), a
+    loss = max((terms[3] + terms[4]) / abs(weight),
+               max(terms[:3]) / (euclidean if euclidean > 0 else abs(weight)))
+    return [+(y[i] / weight) for i in range(3)], mpmath.log10(loss), a
+
+
+def _accurate_image(build, p, strength, digits):
+    """The image of p under exp(-strength s), s = build() at the working precision (built again at
+    each precision: a hyperbolic part amplifies the rounding of s itself by e^h; a dilation's
+    location rounded to 30 digits moves its image by e^c times that). At digits raised by
+    _size_digits; where the sums lost more than those (a strong hyperbolic part, a dilation's
+    factor e^c next to its location), again with _hyperbolic_digits more."""
+    with mp.workdps(digits):
+        extra = _size_digits([[-mpf(strength) * c for c in row] for row in build()])
+    for _ in range(3):
+        with mp.workdps(digits + extra):
+            scaled = [[-mpf(strength) * c for c in row] for row in build()]
+            result, loss, a = _image_and_loss(scaled, p)
+            if loss <= extra + 5:
+                return result
+            lost = int(loss) if mpmath.isfinite(loss) else mp.dps  # a weight of 0: all lost
+            extra = max(extra + lost, _size_digits(scaled) + _hyperbolic_digits(a))
+    return result
+
+
+def image_of_bivector(s, p, strength, digits=DIGITS):
+    """fn(expm(-strength A(s)) up(p)) as mpf triple (_accurate_image: the precision grows with |A|
+    and with the decades the sums lose)."""
+    return _accurate_image(lambda: s, p, strength, digits)
 
 
 def image(generators, p, falloff, epsilon, strength, digits=DIGITS):
-    """p may hold mpf coordinates (jacobian's steps), which enter exactly."""
-    with mp.workdps(digits):
-        return image_of_bivector(field_bivector(generators, p, falloff, epsilon), p, strength,
-                                 digits)
+    """p may hold mpf coordinates (jacobian's steps), which enter exactly. B(p) is built at each
+    precision _accurate_image takes."""
+    return _accurate_image(lambda: field_bivector(generators, p, falloff, epsilon), p, strength,
+                           digits)
 
 
 JACOBIAN_DIGITS = 70

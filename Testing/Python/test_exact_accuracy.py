@@ -3,8 +3,8 @@ of the versor's action in mpmath, computed from the same double inputs), on adve
 every generator kind (point pairs, rotations, twists, dilations, translations, a bivector given in
 space), alone and in clusters of mixed kinds: points on a generator (and on a rotation's axis) and
 1e-9 ... 1e-3 from one, epsilon from 1e-10 to 1e3, huge weights and strengths (of either sign)
-(docs/conventions.md section 2 item 12 states the bound tested here, and the known limitation that
-keeps the dilations' factors at most e^5).
+(docs/conventions.md section 2 item 12 states the bound tested here), lone dilations with factors up
+to e^600.
 
 Each image, from the batch path (PointPairField::mapPoints) and the pointwise path (map), of the
 field built from FieldGenerator::of (or the bivector) and from GeneratorParameters rows, printed by
@@ -141,17 +141,18 @@ def dilation_weight(exponent, eps, strength, direction=V1):
     return exponent * eps / abs(strength * math.sqrt(sum(c * c for c in direction)))
 
 
-# e^5 = 148. Beyond it the Exact map loses about e^c 2^-53 of the scale (4e-11 at c = 10, 1.3e-12 ...
-# 2e-8 at c = 12 ... 20 next to it at eps 1e-10: 1 - tanh^2 formed by cancellation) and refuses the
-# point from about c = 38 (tanh rounds to 1): docs/conventions.md section 2 item 12, a known limitation.
-DILATION_EXPONENT = 5.0
+# The factors e^c of the lone dilations on their location: up to e^600 = 4e260, the images in range
+# (the distances from the location times e^c). The map scales the hyperbolic plane's null directions
+# by their exact factors (docs/conventions.md section 2 item 12); before, it lost about e^c 2^-53 of
+# the scale (1 - tanh^2 formed by cancellation), was wrong from c = 30 and refused from c ~ 38.
+DILATION_EXPONENTS = (5.0, 30.0, 300.0, 600.0)
 
 
 def kind_configurations(around1, around2):
     """Each kind alone (on its location, its axis and next to them), huge weights and strengths of
     either sign, and clusters of mixed kinds. A dilation multiplies distances from its location by
-    e^c, c = strength w |v| / (k d^2 + eps): its cases keep c at most DILATION_EXPONENT, growing
-    and shrinking, each point its own scale. The Jacobian is checked where the last element is
+    e^c, c = strength w |v| / (k d^2 + eps): its cases take each of DILATION_EXPONENTS for c on
+    the location, growing and shrinking, each point its own scale. The Jacobian is checked where the last element is
     True (the reference's central differences cost six images)."""
     axis1 = axis_points(X1, V1)
     for kind in ("rotation", "twist", "translation"):
@@ -168,16 +169,18 @@ def kind_configurations(around1, around2):
     yield ("lone twist of pitch 0, eps 1e-10", 1.0, 1e-10, 1.0, [generator("twist", X1, V1, 0.5)],
            around1[::2] + axis1[:2] + FAR[:1], True, False)
     dilation_points = around1[::2] + FAR[:1]
-    for eps, strength, weight in ((1e-10, 1.0, None), (1e-10, -1.0, None), (1e-8, -1e6, None),
-                                  (None, 1.0, 1e12), (None, -1.0, 1e12)):
-        if weight is None:
-            weight = dilation_weight(DILATION_EXPONENT, eps, strength)
-        else:  # the weight given, eps such that c is DILATION_EXPONENT
-            eps = weight * abs(strength) * math.sqrt(sum(c * c for c in V1)) / DILATION_EXPONENT
-        yield from one_per_point(
-            (f"lone dilation, weight {weight:.3g}, eps {eps:.3g}, strength {strength:g}", 1.0, eps,
-             strength, [generator("dilation", X1, V1, weight)], dilation_points, True,
-             strength == 1.0 and eps == 1e-10))
+    for exponent in DILATION_EXPONENTS:
+        for eps, strength, weight in ((1e-10, 1.0, None), (1e-10, -1.0, None), (1e-8, -1e6, None),
+                                      (None, 1.0, 1e12), (None, -1.0, 1e12)):
+            if weight is None:
+                weight = dilation_weight(exponent, eps, strength)
+            else:  # the weight given, eps such that c is the exponent
+                eps = weight * abs(strength) * math.sqrt(sum(c * c for c in V1)) / exponent
+            yield from one_per_point(
+                (f"lone dilation, c {exponent:g}, weight {weight:.3g}, eps {eps:.3g}, "
+                 f"strength {strength:g}", 1.0, eps, strength,
+                 [generator("dilation", X1, V1, weight)], dilation_points, True,
+                 strength == 1.0 and eps == 1e-10))
     near3 = offsets(X3, NEAR, DIRECTIONS[:1])
     for eps, strength in ((1e-10, 1.0), (1e-10, -1.0), (1e-8, -1e6), (1e-6, 1e5)):
         mixed = [pair(X1, V1, 0.5), generator("rotation", X3, V3, 0.2),
