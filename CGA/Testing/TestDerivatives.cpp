@@ -401,6 +401,84 @@ TEST(Derivatives, NearAGeneratorTheJacobianMatchesTheReference)
   }
 }
 
+// Next to a strong general bivector (given in space: a rotation by 1.8 and a boost by 0.64 times
+// w / (|p - x|^2 + eps), here up to 1.8e9) the map is taken in the field's frame and every point
+// goes to the boost's attracting fixed point; its exponent's tangents reach 1e14, and in double
+// the derivative carried the image's rounding times them (0.009 of max(1, |J|) at 1e-5 from x):
+// those lanes take their tangents in double-double (docs/conventions.md section 3 item 15).
+// Against fourth-order central differences of map() (the step 1e-3 of the field's scale
+// sqrt(eps) = 1e-5: truncation and rounding below 1e-7), the batch to the bit of the pointwise
+// form and the directional derivatives J t on every instruction set (the previous code missed
+// the first at every point within 1e-5 of x: 1.3e-5 at 1e-9, up to 0.03 at 1e-5).
+TEST(Derivatives, NextToAStrongGeneralBivectorTheJacobianIsExactToRounding)
+{
+  const Vec3 x{ 0.7, -0.1, -0.1 };
+  Bivector rest;
+  rest.c = { 0.3, -0.2, 0.5, 0.1, 0.4, -0.3, 0.2, -0.1, 0.6, 0.25 };
+  const std::vector<FieldGenerator> g = { FieldGenerator{ x, rest, 0.3 },
+    FieldGenerator::pointPair({ 0.3, -0.2, 0.1 }, { 0.4, 0.7, -0.5 }, 0.5) };
+  const double epsilon = 1e-10;
+  const PointPairField field(g.data(), g.size(), 1.0, epsilon);
+  const auto f = [&](Vec3 q) {
+    Vec3 out;
+    EXPECT_TRUE(field.map(q, 1.0, ExponentialRule::Exact, out));
+    return out;
+  };
+  std::vector<double> points, directions, expectedJacobians;
+  Random random(17);
+  constexpr int count = 21; // not a multiple of the block size
+  for (int i = 0; i < count; ++i)
+  {
+    // near x (1e-9 ... 1e-5 away) and far from it, mixed in each block
+    const double distance = i % 3 == 2 ? 0.5 : std::pow(10.0, -9.0 + 2.0 * (i % 3 + i / 3 % 2));
+    const Vec3 p = x + distance * normalized(random.vec3(1.0));
+    points.insert(points.end(), { p.x, p.y, p.z });
+    for (int k = 0; k < 2; ++k)
+    {
+      const Vec3 t = random.vec3(1.0);
+      directions.insert(directions.end(), { t.x, t.y, t.z });
+    }
+    Vec3 image;
+    Jacobian j;
+    ASSERT_TRUE(field.mapWithJacobian(p, 1.0, ExponentialRule::Exact, image, j.data()));
+    expectedJacobians.insert(expectedJacobians.end(), j.begin(), j.end());
+    const Jacobian d = differenceJacobian(f, p, 1e-8);
+    EXPECT_LT(largestDifference(j, d) / std::max(1.0, largestEntry(d)), 1e-7)
+      << "distance " << distance;
+  }
+  const std::string active = mapPointsInstructionSet();
+  for (const std::string& isa : mapPointsInstructionSets())
+  {
+    ASSERT_TRUE(useMapPointsInstructionSet(isa));
+    std::vector<double> images(3 * count), jacobians(9 * count), derivatives(6 * count);
+    EXPECT_EQ(0u, field.mapPointsWithJacobians(
+      points.data(), images.data(), jacobians.data(), count, 1.0, ExponentialRule::Exact));
+    EXPECT_EQ(0, std::memcmp(jacobians.data(), expectedJacobians.data(), 8 * jacobians.size())) << isa;
+    EXPECT_EQ(0u, field.mapPointsWithDirectionalDerivatives(points.data(), directions.data(),
+      images.data(), derivatives.data(), count, 1.0, ExponentialRule::Exact));
+    for (int i = 0; i < count; ++i)
+    {
+      const double* j = jacobians.data() + 9 * i;
+      const double size = std::max(1.0, largestEntry(Jacobian{ j[0], j[1], j[2], j[3], j[4], j[5],
+        j[6], j[7], j[8] }));
+      for (int k = 0; k < 2; ++k)
+      {
+        const double* t = directions.data() + 6 * i + 3 * k;
+        for (int r = 0; r < 3; ++r)
+        {
+          const double expected = j[3 * r] * t[0] + j[3 * r + 1] * t[1] + j[3 * r + 2] * t[2];
+          // Two tangents seeded with t round B's tangents differently from three: J moves by up
+          // to 3e-11 of max(1, |J|) when B(p) and dB/dp change by one ulp here
+          // (exact_reference.jacobian_sensitivity), so that is all they can agree to.
+          EXPECT_LT(std::fabs(derivatives[6 * i + 3 * k + r] - expected), 1e-10 * size)
+            << isa << " point " << i;
+        }
+      }
+    }
+  }
+  ASSERT_TRUE(useMapPointsInstructionSet(active));
+}
+
 TEST(Derivatives, WeightDerivativesMatchCentralDifferencesAlsoAtZeroWeights)
 {
   Random random(5);

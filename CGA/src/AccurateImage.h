@@ -14,5 +14,18 @@ namespace core
 /// as exactImageAroundPoint in double-double and rounded to double; false where it is not mapped
 /// (as the double computation: a zero or non-finite weight, non-finite input).
 bool accurateImageAroundPoint(const double* b, const double* p, double* image);
+
+/// Most tangents accurateTangentsInFieldFrame takes: the Jacobian's three (and the two
+/// directional derivatives).
+constexpr int kExtendedTangentCount = 3;
+
+/// The tangents of the Exact image of p under exp(b) in the field's frame (PointMapCore.h's
+/// exactImageInFieldFrame) computed in double-double, for the derivatives of a lane whose exponent
+/// has huge tangents: in double they carry the image's rounding times those tangents
+/// (docs/conventions.md section 3 item 15). b: ten components and their n tangents
+/// (bTangents[n c + k]), p: three coordinates and their n tangents, n <= kExtendedTangentCount;
+/// writes imageTangents[n i + k]. False where it is not mapped or a tangent is not finite.
+bool accurateTangentsInFieldFrame(int n, const double* b, const double* bTangents, const double* p,
+  const double* pTangents, double* imageTangents);
 } // namespace core
 } // namespace cga

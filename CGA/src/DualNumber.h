@@ -291,6 +291,13 @@ inline auto valueOf(const Dual<T, N>& x)
   return valueOf(x.v);
 }
 
+/// A Dual rounds as its value's type (double-double's own unit for Dual<DoubleDouble, N>).
+template <typename T, int N>
+struct RoundingUnit<Dual<T, N>>
+{
+  static constexpr double value = RoundingUnit<T>::value;
+};
+
 /// Whether a number type carries tangents.
 template <typename T>
 constexpr bool kHasTangents = false;

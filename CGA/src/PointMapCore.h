@@ -811,6 +811,128 @@ Mask<T> exactImageAroundPoint(const T* p, const T* b, T* image)
   return mapped;
 }
 
+/// The Exact image of p in the field's frame: fn(<K up(p) ~K>_1) with K = exp(b) in closed form
+/// (invariants kept), for b far from nilpotent.
+template <typename T>
+Mask<T> exactImageInFieldFrame(const T* b, const T* p, T* image)
+{
+  T x[kVector], r[kVector], k[kEven];
+  upPoint(p, x);
+  exactExponential(b, true, k, false);
+  sandwichEven(k, x, r);
+  return normalizeLanes(p, r, image);
+}
+
+/// Whether T is a Dual of double (or of the lanes) with at most kExtendedTangentCount tangents:
+/// the derivatives whose field-frame tangents may be taken in double-double.
+template <typename T>
+constexpr bool kExtendedTangents = false;
+template <typename V, int N>
+constexpr bool kExtendedTangents<Dual<V, N>> = N <= kExtendedTangentCount && !kHasTangents<V> &&
+  RoundingUnit<V>::value == RoundingUnit<double>::value;
+
+/// Margin of tangentsNeedExtendedPrecision, in units of 2^-53 of max(1, |J|).
+constexpr double kExtendedTangentMargin = 1024.0;
+
+/// Per lane, whether the field frame's tangents in double may miss the derivative's bound
+/// max(1, |J|) (1e-12 + 8 2^-52 max(1, |b|)) (|b| = bMax, the largest component) (docs/conventions.md section 3 item 15): they carry
+/// the image's rounding (about 2^-53 max(1, |p'|)) times the exponent's tangents (up to
+/// G = max |d b / d seed|), measured at 1 ... 3 units of 2^-53 G max(1, |p'|); double-double
+/// where G max(1, |p'|) > max(1, |J|) (1024 + 2 max(1, |b|)), within a third of the bound below.
+template <typename V, int N>
+BOOSTED_FORCE_INLINE Mask<V> tangentsNeedExtendedPrecision(const Dual<V, N>* b, const V& bMax, const Dual<V, N>* image)
+{
+  const auto larger = [](const V& x, const V& y) { return select(lessThan(x, y), y, x); };
+  const V one = splat<V>(1.0);
+  V tangents = V{}, size = one, jacobian = one;
+  for (int c = 0; c < kBivector; ++c)
+  {
+    for (int k = 0; k < N; ++k)
+    {
+      tangents = larger(tangents, magnitude(b[c].d[k]));
+    }
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    size = larger(size, magnitude(image[i].v));
+    for (int k = 0; k < N; ++k)
+    {
+      jacobian = larger(jacobian, magnitude(image[i].d[k]));
+    }
+  }
+  const V exponent = larger(one, bMax);
+  return lessThan(jacobian * (kExtendedTangentMargin + 2.0 * exponent), tangents * size);
+}
+
+/// The tangents of the image of the lanes of `lanes` replaced by accurateTangentsInFieldFrame's
+/// (AccurateImage.h), where it maps them; the values stay the double computation's (map()'s bits).
+template <typename V, int N>
+void tangentsInExtendedPrecision(const Mask<V>& lanes, const Dual<V, N>* b, const Dual<V, N>* p, Dual<V, N>* image)
+{
+  constexpr int L = kLanesOf<V>;
+  const LaneArray<V> which(select(lanes, splat<V>(1.0), V{}));
+  LaneArray<V> bValues[kBivector], bTangents[kBivector][N], pValues[3], pTangents[3][N], out[3][N];
+  for (int c = 0; c < kBivector; ++c)
+  {
+    bValues[c] = LaneArray<V>(b[c].v);
+    for (int k = 0; k < N; ++k)
+    {
+      bTangents[c][k] = LaneArray<V>(b[c].d[k]);
+    }
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    pValues[i] = LaneArray<V>(p[i].v);
+    for (int k = 0; k < N; ++k)
+    {
+      pTangents[i][k] = LaneArray<V>(p[i].d[k]);
+      out[i][k] = LaneArray<V>(image[i].d[k]);
+    }
+  }
+  for (int l = 0; l < L; ++l)
+  {
+    if (which.v[l] == 0.0)
+    {
+      continue;
+    }
+    double bl[kBivector], dbl[kBivector * N], pl[3], dpl[3 * N], dil[3 * N];
+    for (int c = 0; c < kBivector; ++c)
+    {
+      bl[c] = bValues[c].v[l];
+      for (int k = 0; k < N; ++k)
+      {
+        dbl[N * c + k] = bTangents[c][k].v[l];
+      }
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      pl[i] = pValues[i].v[l];
+      for (int k = 0; k < N; ++k)
+      {
+        dpl[N * i + k] = pTangents[i][k].v[l];
+      }
+    }
+    if (!accurateTangentsInFieldFrame(N, bl, dbl, pl, dpl, dil))
+    {
+      continue; // the double tangents stay
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int k = 0; k < N; ++k)
+      {
+        out[i][k].v[l] = dil[N * i + k];
+      }
+    }
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int k = 0; k < N; ++k)
+    {
+      image[i].d[k] = out[i][k].value();
+    }
+  }
+}
+
 /// The map p -> fn(<K up(p) ~K>_1), K = exp(b) by the rule of args, on every lane, for a given
 /// bivector b (overwritten): mapPoint after its B(p), for callers with their own exponent per point
 /// (kernel::MapBlockBy; the curvature patch, the generator tree's B(p)).
@@ -898,6 +1020,17 @@ void mapPointBy(const kernel::FieldArgs& args, T* b, const T* p, T* image, bool*
     }
   }
   Mask<T> fieldMapped = normalizeLanes(p, r, image);
+  if constexpr (kExtendedTangents<T>)
+  {
+    // Not the strong lanes: their tangents come exact from strongHyperbolicSandwich, while the
+    // double-double path recomputes the cancelling closed form.
+    const Mask<T> wide = maskAnd(maskAnd(maskNot(aroundPoint), maskNot(strong)),
+      tangentsNeedExtendedPrecision(b, valueOf(m), image));
+    if (anyLane(wide))
+    {
+      tangentsInExtendedPrecision(wide, b, p, image);
+    }
+  }
   if (anyAround)
   {
     for (int i = 0; i < 3; ++i)

@@ -208,6 +208,83 @@ def jacobian(generators, p, falloff, epsilon, strength):
         return [float(columns[j][i]) for i in range(3) for j in range(3)]
 
 
+def field_bivector_derivatives(generators, p, falloff, epsilon):
+    """dB/dp_j (j = 0, 1, 2) as antisymmetric arrays, in closed form:
+    d/dp_j w G / (k |p - x|^2 + eps) = -2 k (p_j - x_j) w G / (k |p - x|^2 + eps)^2."""
+    derivatives = [[[mpf(0)] * 5 for _ in range(5)] for _ in range(3)]
+    for generator in generators:
+        x, w = [mpf(c) for c in generator[1]], mpf(generator[4])
+        offset = [mpf(p[i]) - x[i] for i in range(3)]
+        q = mpf(falloff) * sum(c * c for c in offset) + mpf(epsilon)
+        g = generator_bivector(generator)
+        for j in range(3):
+            add_to(derivatives[j], -2 * mpf(falloff) * offset[j] * w / q ** 2, g)
+    return derivatives
+
+
+def jacobian_of_bivector(s, ds, p, strength, digits=DIGITS):
+    """d image / d p (row-major 3x3, mpf) of p -> fn(expm(X(p)) up(p)), X = -strength A(s), for
+    the bivector s at p and its derivatives ds[j] = ds/dp_j, without differences: the derivative
+    of expm along E is the upper right block of expm([[X, E], [0, X]]) (the Frechet derivative),
+    then up(p)' = e_j + p_j ni and fn's quotient rule. Precision as image_of_bivector's."""
+    scaled = [[-mpf(strength) * s[i][j] for j in range(5)] for i in range(5)]
+    size = max(abs(c) for row in scaled for c in row)
+    extra = 3 * max(0, int(mpmath.log10(size)) + 1) if size > 0 else 0
+    with mp.workdps(digits + extra):
+        x = action(scaled)
+        u = mpmath.matrix(up(p))
+        columns = []
+        for j in range(3):
+            e = action([[-mpf(strength) * c for c in row] for row in ds[j]])
+            block = mpmath.zeros(10, 10)
+            for a in range(5):
+                for c in range(5):
+                    block[a, c] = block[a + 5, c + 5] = x[a, c]
+                    block[a, c + 5] = e[a, c]
+            exponential = mpmath.expm(block)
+            y = exponential[0:5, 0:5] * u
+            tangent = [mpf(0)] * 5
+            tangent[j] = mpf(1)
+            dy = exponential[0:5, 5:10] * u + exponential[0:5, 0:5] * mpmath.matrix(
+                combine((1, tangent), (mpf(p[j]), NI)))
+            y, dy = [y[i] for i in range(5)], [dy[i] for i in range(5)]
+            weight, dweight = -dot(NI, y), -dot(NI, dy)
+            columns.append([dy[i] / weight - y[i] * dweight / weight ** 2 for i in range(3)])
+        return [+columns[j][i] for i in range(3) for j in range(3)]
+
+
+def jacobian_by_frechet(generators, p, falloff, epsilon, strength):
+    """jacobian() without differences (jacobian_of_bivector of B(p) and its closed-form
+    derivatives): an independent check of the central differences."""
+    with mp.workdps(DIGITS):
+        s = field_bivector(generators, p, falloff, epsilon)
+        ds = field_bivector_derivatives(generators, p, falloff, epsilon)
+        return [float(c) for c in jacobian_of_bivector(s, ds, p, strength)]
+
+
+def jacobian_sensitivity(generators, p, falloff, epsilon, strength, trials=3, seed=1):
+    """The largest change of the Jacobian (its largest entry) when every component of B(p) and of
+    each dB/dp_j changes by one unit in the last place of a double (random signs): what no
+    derivative computed from double B(p) and dB/dp can avoid (one_ulp_sensitivity's analogue)."""
+    rng = random.Random(seed)
+    with mp.workdps(DIGITS):
+        s = field_bivector(generators, p, falloff, epsilon)
+        ds = field_bivector_derivatives(generators, p, falloff, epsilon)
+        base = jacobian_of_bivector(s, ds, p, strength)
+        largest = mpf(0)
+        for _ in range(trials):
+            moved = [[row[:] for row in m] for m in [s] + ds]
+            for m in moved:
+                for i in range(5):
+                    for j in range(i + 1, 5):
+                        delta = m[i][j] * mpf(2) ** -53 * rng.choice((-1, 1))
+                        m[i][j] += delta
+                        m[j][i] -= delta
+            other = jacobian_of_bivector(moved[0], moved[1:], p, strength)
+            largest = max(largest, max(abs(a - b) for a, b in zip(other, base)))
+        return float(largest)
+
+
 def one_ulp_sensitivity(generators, p, falloff, epsilon, strength, trials=3, seed=1):
     """The largest movement of the image when every component of B(p) (in the orthonormal basis)
     changes by one unit in the last place of a double (2^-53 relative, random signs): a numerical
