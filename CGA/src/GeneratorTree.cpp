@@ -329,19 +329,34 @@ void GeneratorTree::computeBudgets(double tolerance)
     }
     node.harmonic = static_cast<long>(this->Harmonic.size());
     this->Harmonic.resize(this->Harmonic.size() + 3 * kHarmonicDegrees, 0.0);
+    // The move to the center is linear: its matrix from the ten unit bivectors, in the parts' order.
+    static constexpr int kPartOrder[10] = { Bivector::E1NI, Bivector::E2NI, Bivector::E3NI, Bivector::E12,
+                                            Bivector::E13,  Bivector::E23,  Bivector::NONI, Bivector::E1NO,
+                                            Bivector::E2NO, Bivector::E3NO };
+    double move[kComponents][10];
+    for (std::size_t c = 0; c < kComponents; ++c)
+    {
+      Bivector unit;
+      unit.c[c] = 1.0;
+      const Bivector moved = translatedBivector(unit, { -node.center[0], -node.center[1], -node.center[2] });
+      for (int k = 0; k < 10; ++k)
+      {
+        move[c][k] = moved.c[static_cast<std::size_t>(kPartOrder[k])];
+      }
+    }
     for (std::size_t m = 0; m < static_cast<std::size_t>(this->MomentCount); ++m)
     {
-      Bivector mu;
+      const double* mu = this->Moments.data() + static_cast<std::size_t>(node.moments) + m * kComponents;
+      double* part = parts.data() + m * 10;
+      std::fill_n(part, 10, 0.0);
       for (std::size_t c = 0; c < kComponents; ++c)
       {
-        mu.c[c] = this->Moments[static_cast<std::size_t>(node.moments) + m * kComponents + c] / this->InverseFactorial[m];
+        const double value = mu[c] / this->InverseFactorial[m];
+        for (int k = 0; k < 10; ++k)
+        {
+          part[k] += value * move[c][k];
+        }
       }
-      const Bivector b = translatedBivector(mu, { -node.center[0], -node.center[1], -node.center[2] });
-      const double ordered[10] = { b.c[Bivector::E1NI], b.c[Bivector::E2NI], b.c[Bivector::E3NI],
-                                   b.c[Bivector::E12],  b.c[Bivector::E13],  b.c[Bivector::E23],
-                                   b.c[Bivector::NONI], b.c[Bivector::E1NO], b.c[Bivector::E2NO],
-                                   b.c[Bivector::E3NO] };
-      std::copy_n(ordered, 10, parts.data() + m * 10);
     }
     for (int part = 0; part < 3; ++part)
     {
