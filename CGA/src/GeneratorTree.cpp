@@ -315,6 +315,62 @@ void GeneratorTree::computeBudgets(double tolerance)
       }
     }
   }
+  // The signed moments' norms: each node's moments as bivectors about its center, split into the
+  // motion bound's three parts, and the norm of each part's trace-free tensor of every degree.
+  const int P = this->Degree;
+  std::vector<double> parts(static_cast<std::size_t>(this->MomentCount) * 10);
+  static constexpr int kPartFirst[3] = { 0, 3, 7 }, kPartSize[3] = { 3, 4, 3 };
+  static constexpr double kPartScale[3] = { 2.0, 2.0, 1.0 };
+  for (Node& node : this->Nodes)
+  {
+    if (node.moments < 0)
+    {
+      continue;
+    }
+    node.harmonic = static_cast<long>(this->Harmonic.size());
+    this->Harmonic.resize(this->Harmonic.size() + 3 * kHarmonicDegrees, 0.0);
+    // The move to the center is linear: its matrix from the ten unit bivectors, in the parts' order.
+    static constexpr int kPartOrder[10] = { Bivector::E1NI, Bivector::E2NI, Bivector::E3NI, Bivector::E12,
+                                            Bivector::E13,  Bivector::E23,  Bivector::NONI, Bivector::E1NO,
+                                            Bivector::E2NO, Bivector::E3NO };
+    double move[kComponents][10];
+    for (std::size_t c = 0; c < kComponents; ++c)
+    {
+      Bivector unit;
+      unit.c[c] = 1.0;
+      const Bivector moved = translatedBivector(unit, { -node.center[0], -node.center[1], -node.center[2] });
+      for (int k = 0; k < 10; ++k)
+      {
+        move[c][k] = moved.c[static_cast<std::size_t>(kPartOrder[k])];
+      }
+    }
+    for (std::size_t m = 0; m < static_cast<std::size_t>(this->MomentCount); ++m)
+    {
+      const double* mu = this->Moments.data() + static_cast<std::size_t>(node.moments) + m * kComponents;
+      double* part = parts.data() + m * 10;
+      std::fill_n(part, 10, 0.0);
+      for (std::size_t c = 0; c < kComponents; ++c)
+      {
+        const double value = mu[c] / this->InverseFactorial[m];
+        for (int k = 0; k < 10; ++k)
+        {
+          part[k] += value * move[c][k];
+        }
+      }
+    }
+    for (int part = 0; part < 3; ++part)
+    {
+      auto moment = [&](int a, int b, int c) {
+        return parts.data() + static_cast<std::size_t>(this->MonomialIndex[static_cast<std::size_t>((a * (P + 1) + b) * (P + 1) + c)]) * 10 +
+          kPartFirst[part];
+      };
+      for (int k = 0; k <= P; ++k)
+      {
+        this->Harmonic[static_cast<std::size_t>(node.harmonic + part * kHarmonicDegrees + k)] =
+          kPartScale[part] * treeTraceFreeNorm(k, kPartSize[part], moment);
+      }
+    }
+  }
   // V: the direct sum's first-order displacement at the sample points.
   const std::size_t count = this->Nodes[0].count;
   const std::size_t sampleFrom = std::max<std::size_t>(1, count / kSampleShare);
@@ -399,27 +455,50 @@ int GeneratorTree::degreeFor(const Node& node, double q, double D, double reach,
     return -1;
   }
   // The generators' motions at l = reach, weighted by their distances' powers (TreeRemainder.h:
-  // a generator at |x_i - c| errs by ((|x_i - c| + r)/(rho + r))^(p+1) times the node's bound).
+  // a generator at |x_i - c| errs by ((|x_i - c| + r)/(rho + r))^(p+1) times the node's bound),
+  // and the signed moments' norms at l = reach.
   const double* spread = this->Spread.data() + node.spread;
   double motions[kSpreadPowers];
   for (int j = 0; j < kSpreadPowers; ++j)
   {
     motions[j] = spread[j] + (spread[kSpreadPowers + j] + spread[2 * kSpreadPowers + j] * reach) * reach;
   }
+  const double* harmonic = this->Harmonic.data() + node.harmonic;
+  double signedMotions[kHarmonicDegrees];
+  for (int k = 0; k <= this->Degree; ++k)
+  {
+    signedMotions[k] =
+      harmonic[k] + (harmonic[kHarmonicDegrees + k] + harmonic[2 * kHarmonicDegrees + k] * reach) * reach;
+  }
   const double extent = node.radius + targetRadius;
   const double a = extent > 0.0 ? node.radius / extent : 1.0;
   const double b = extent > 0.0 ? targetRadius / extent : 0.0;
-  // R_p(q, S) spread_(p+1) <= share D (TreeRemainder.h), S = sqrt(D/eps) = 1/sqrt(1 - |u|^2).
+  // The degree-p truncation errs by at most (1/D) [sum_{p < j <= P} q^j t_j + R_P(q, S) spread_(P+1)]
+  // (docs/conventions.md section 3 item 14), t_j the smaller of the absolute bound of the degree-j
+  // term, min(j + 1, S) spread_j, and the signed one, sqrt((j + 1) 2^j) times the binomial sum of
+  // the trace-free moments' norms (the generators' cancellation); S = sqrt(D/eps) = 1/sqrt(1 - |u|^2).
   const double allowed = share * D;
   const double S = this->Epsilon > 0.0 ? std::sqrt(D / this->Epsilon) : HUGE_VAL;
-  for (int p = 0; p <= this->Degree; ++p)
+  const int P = this->Degree;
+  double qPowers[kMaxDegree + 1];
+  qPowers[0] = 1.0;
+  for (int j = 1; j <= P; ++j)
   {
-    if (treeRemainderBound(p, q, S) * treeSpreadMoment(motions, p + 1, a, b) <= allowed)
+    qPowers[j] = qPowers[j - 1] * q;
+  }
+  double bound = treeRemainderBound(P, q, S) * treeSpreadMoment(motions, P + 1, a, b);
+  int degree = -1;
+  for (int p = P; p >= 0 && bound <= allowed; --p)
+  {
+    degree = p;
+    if (p > 0)
     {
-      return p;
+      const double absolute = std::min(p + 1.0, S) * treeSpreadMoment(motions, p, a, b);
+      const double cancelling = treeHarmonicTermNorm(p) * treeSpreadMoment(signedMotions, p, a, b);
+      bound += qPowers[p] * std::min(absolute, cancelling);
     }
   }
-  return -1;
+  return degree;
 }
 
 // The target cells' lattice: leaves about kLeafShare of the widest cell usable at any distance
@@ -638,6 +717,13 @@ void GeneratorTree::addNear(const int* starts, std::size_t count, const double* 
                                          this->shareOf(node, distance, radius, weightSum), 0.0);
       if (degree >= 0)
       {
+        if (treeBoundRecords)
+        {
+          treeBoundRecords->push_back({ static_cast<int>(&node - this->Nodes.data()), degree,
+                                        { center[0], center[1], center[2] }, radius, q,
+                                        this->Falloff * nearest * nearest + this->Epsilon, distance + radius,
+                                        this->shareOf(node, distance, radius, weightSum), true });
+        }
         this->addMultipole(node, this->Moments.data() + node.moments, degree, p, sums);
       }
       else if (node.children[0] < 0)
@@ -807,6 +893,7 @@ std::size_t GeneratorTree::bytes() const
 {
   return this->Generators.capacity() * sizeof(double) + this->Nodes.capacity() * sizeof(Node) +
     this->Moments.capacity() * sizeof(double) + this->Spread.capacity() * sizeof(double) +
+    this->Harmonic.capacity() * sizeof(double) +
     this->Terms.capacity() * sizeof(Term) +
     this->MonomialPowers.capacity() * sizeof(std::array<int, 3>) +
     4 * this->MonomialIndex.capacity() * sizeof(int) + this->ShiftGamma.capacity() * sizeof(int) +

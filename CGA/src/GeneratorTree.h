@@ -41,6 +41,22 @@ namespace cga
 {
 namespace detail
 {
+/// One use of a node's expansion, recorded for the test that splits the bound's excess
+/// (TestGeneratorTree.cpp, BoundSplit): the node, its degree, the cube of points it was used for
+/// (center, radius; the leaf's for a per-point use) and the quantities its degree was chosen from
+/// (q, D, the farthest distance reach, the share of t V).
+struct TreeBoundRecord
+{
+  int node, degree;
+  double center[3];
+  double radius;
+  double q, D, reach, share;
+  bool perPoint;
+};
+/// When not null, evaluatePoints appends a TreeBoundRecord per use of an expansion on this thread
+/// (tests only: one branch per node used, each use costing thousands of operations).
+inline thread_local std::vector<TreeBoundRecord>* treeBoundRecords = nullptr;
+
 class GeneratorTree
 {
 public:
@@ -109,6 +125,8 @@ public:
   /// generators (at most 2 kSampleShare of them).
   static constexpr std::size_t kSampleShare = 64;
 
+  friend struct TreeBoundSplit; // the test's access to the nodes (TestGeneratorTree.cpp)
+
 private:
   struct Node
   {
@@ -124,7 +142,13 @@ private:
     // Spread[spread + part * kSpreadPowers + j] = sum_i m_part,i (|x_i - center|/radius)^j, with
     // m_0,i + m_1,i l + m_2,i l^2 >= |v_p(g_i)| for |p - center| <= l (addMotion about the center).
     long spread = -1;
+    // Offset in Harmonic of the norms of the trace-free parts (in R^4) of the node's signed moment
+    // tensors of each degree k <= Degree, per part of the motion bound about the center
+    // (treeTraceFreeNorm; nodes with moments only, else -1):
+    // Harmonic[harmonic + part * kHarmonicDegrees + k], part 0: 2 |C|, 1: 2 sqrt(|E|^2 + d^2), 2: |A|.
+    long harmonic = -1;
   };
+  static constexpr int kHarmonicDegrees = kMaxDegree + 1;
   static constexpr int kSpreadPowers = kMaxDegree + 2;
   // One term of e_b(u) = sum coefficient u^a (Taylor coefficient of the kernel for moment b).
   struct Term
@@ -159,6 +183,7 @@ private:
   std::vector<Node> Nodes;
   std::vector<double> Moments; // per node: MomentCount x Bivector::Count, mu_b / b!
   std::vector<double> Spread;  // per node with moments: 3 x kSpreadPowers absolute moments
+  std::vector<double> Harmonic; // per node with moments: 3 x kHarmonicDegrees signed moments' norms
   double Falloff, Epsilon;
   int Degree = 0;
   double QLimit = 0.0;

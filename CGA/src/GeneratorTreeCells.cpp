@@ -246,6 +246,11 @@ void GeneratorTree::evaluateCell(CellWork& work, int level, std::size_t first, s
         this->degreeFor(node, (node.radius + radius) * std::sqrt(this->Falloff / D), D, reach, share, radius);
       if (degree >= 0)
       {
+        if (treeBoundRecords)
+        {
+          treeBoundRecords->push_back({ index, degree, { center[0], center[1], center[2] }, radius,
+                                        (node.radius + radius) * std::sqrt(this->Falloff / D), D, reach, share, false });
+        }
         this->addSourceToLocal(node, center, radius, degree, local);
         hasLocal = true;
         continue;

@@ -2,6 +2,7 @@
 // item 14), header-only so that the tests check it against the series itself.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 namespace cga
@@ -50,6 +51,79 @@ inline double treeSpreadMoment(const double* moments, int power, double a, doubl
     aPower *= a;
   }
   return sum;
+}
+
+/// The norm of the degree-j term's tensor: the term of the series above is
+///   h_j(z) = |z|^j U_j(u.z/|z|) = 2^j <pi(X^(j)), Z^(j)>,   X = (u, sqrt(1 - |u|^2)), Z = (z, 0),
+/// in R^4 (1/|X - Y|^2 is the Newton kernel of R^4 and the U_j its zonal harmonics), pi the
+/// orthogonal projection onto trace-free symmetric tensors, <pi(x^(j)), y^(j)> = 2^-j |x|^j |y|^j
+/// U_j(cos) in R^4; its Frobenius norm is 2^j sqrt(<pi(X^(j)), X^(j)>) = sqrt((j + 1) 2^j), and
+/// contracting it with a vector v shrinks it by at most |v| (docs/conventions.md section 3 item 14).
+inline double treeHarmonicTermNorm(int degree)
+{
+  return std::sqrt((degree + 1.0) * std::ldexp(1.0, degree));
+}
+
+/// The norm ||pi(V_k)|| of the trace-free part in R^4 of the moment tensor of degree k of vectors
+/// g_i (components values each), V_k = sum_i g_i yhat_i^(k) (yhat_i in R^3, fourth component 0),
+/// from its distinct entries: moment(a, b, c) returns the `components` values of
+/// sum_i g_i yhat_x^a yhat_y^b yhat_z^c (a + b + c <= k). With
+/// <pi(x^(k)), y^(k)> = 2^-k |x|^k |y|^k U_k(cos) and
+/// |x|^k |y|^k U_k(cos) = sum_m (-1)^m C(k - m, m) 2^(k - 2m) (x.y)^(k-2m) |x|^2m |y|^2m,
+///   ||pi(V_k)||^2 = sum_ij g_i.g_j <pi(yhat_i^(k)), yhat_j^(k)>
+///                 = sum_m (-1)^m C(k - m, m) 2^-2m ||tr^m V_k||^2,
+/// tr^m V_k = sum_i g_i |yhat_i|^2m yhat_i^(k-2m), whose entries are
+/// sum_{|gamma| = m} m!/gamma! V_(beta + 2 gamma), and ||T||^2 = sum_beta n!/beta! |T_beta|^2 for a
+/// symmetric tensor of degree n. The alternating sum cancels where the g_i do (the point of it):
+/// 1e-12 of the sum of its terms' magnitudes is added before the square root (its rounding).
+/// k <= kMaxSpreadPower, components <= 16.
+template <class Moment>
+double treeTraceFreeNorm(int k, int components, const Moment& moment)
+{
+  double factorials[kMaxSpreadPower + 1];
+  factorials[0] = 1.0;
+  for (int n = 1; n <= k; ++n)
+  {
+    factorials[n] = factorials[n - 1] * n;
+  }
+  double sum = 0.0, magnitude = 0.0;
+  for (int m = 0; 2 * m <= k; ++m)
+  {
+    const int n = k - 2 * m;
+    double traceNorm = 0.0; // ||tr^m V_k||^2
+    for (int a = n; a >= 0; --a)
+    {
+      for (int b = n - a; b >= 0; --b)
+      {
+        const int c = n - a - b;
+        double entry[16] = {};
+        for (int ga = m; ga >= 0; --ga)
+        {
+          for (int gb = m - ga; gb >= 0; --gb)
+          {
+            const int gc = m - ga - gb;
+            const double weight = factorials[m] / (factorials[ga] * factorials[gb] * factorials[gc]);
+            const double* v = moment(a + 2 * ga, b + 2 * gb, c + 2 * gc);
+            for (int i = 0; i < components; ++i)
+            {
+              entry[i] += weight * v[i];
+            }
+          }
+        }
+        double squared = 0.0;
+        for (int i = 0; i < components; ++i)
+        {
+          squared += entry[i] * entry[i];
+        }
+        traceNorm += factorials[n] / (factorials[a] * factorials[b] * factorials[c]) * squared;
+      }
+    }
+    // (-1)^m C(k - m, m) 2^-2m
+    const double coefficient = factorials[k - m] / (factorials[m] * factorials[k - 2 * m]) * std::ldexp(1.0, -2 * m);
+    sum += (m % 2 ? -coefficient : coefficient) * traceNorm;
+    magnitude += coefficient * traceNorm;
+  }
+  return std::sqrt(std::max(0.0, sum) + 1e-12 * magnitude);
 }
 } // namespace detail
 } // namespace cga
