@@ -2,6 +2,7 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkBoostedSurfacesAbort.h"
+#include "vtkBoostedThreadPool.h"
 #include "vtkSMPTools.h"
 
 #include <algorithm>
@@ -21,7 +22,7 @@ std::vector<vtkIdType> vtkBoostedBlockLoop::ChunkBounds(
 {
   // Guided: a thread's chunk is a quarter of what is left per thread, at most a sixteenth of its
   // share of the block (so that a thread held up by another job on the machine holds up little)
-  // and at least MinimumChunkSamples samples (the cost of a job in the pool).
+  // and at least MinimumChunkSamples samples (a chunk costs a claim and a call of the work).
   const vtkIdType perThread = (last - first + threads - 1) / threads;
   const vtkIdType largest = std::max<vtkIdType>(1, perThread / 16);
   const vtkIdType smallest = std::min(largest,
@@ -41,11 +42,9 @@ std::vector<vtkIdType> vtkBoostedBlockLoop::ChunkBounds(
 bool vtkBoostedBlockLoop::For(vtkAlgorithm* algorithm, vtkIdType begin, vtkIdType end,
   vtkIdType samplesPerItem, const std::function<void(vtkIdType, vtkIdType)>& work)
 {
-  // One thread: the work on the calling thread, without a parallel region (VTK 9.2's STDThread
-  // backend starts and joins a pool of threads for every vtkSMPTools::For, even of one thread).
-  // More: larger blocks (ItemsPerBlock), each split into chunks (ChunkBounds) that the threads
-  // take in turn, largest first, so that at a block's end a thread waits for the others for
-  // about one of the last, small chunks.
+  // One thread: the work on the calling thread. More: larger blocks (ItemsPerBlock), each split
+  // into chunks (ChunkBounds) that the threads take in turn, largest first, so that at a block's
+  // end a thread waits for the others for about one of the last, small chunks.
   const int threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
   const vtkIdType itemsPerBlock = ItemsPerBlock(samplesPerItem);
   for (vtkIdType first = begin; first < end; first += itemsPerBlock)
@@ -61,29 +60,25 @@ bool vtkBoostedBlockLoop::For(vtkAlgorithm* algorithm, vtkIdType begin, vtkIdTyp
     }
     else
     {
-      // One job per thread, which claims the chunks in turn from a shared counter: VTK 9.2's
-      // STDThread backend queues every job of a For under one mutex and wakes a thread for each
-      // (a job per chunk was about 50 jobs for an update of 10^6 points, queued by the calling
-      // thread while the pool waited on the same lock).
+      // One job per thread of the project's pool (vtkBoostedThreadPool: threads kept from one
+      // block and one update to the next), which claims the chunks in turn from a shared counter.
       const std::vector<vtkIdType> bounds = ChunkBounds(first, last, samplesPerItem, threads);
       const vtkIdType chunks = static_cast<vtkIdType>(bounds.size()) - 1;
       std::atomic<vtkIdType> nextChunk{ 0 };
       std::atomic<bool> outOfMemory{ false };
-      vtkSMPTools::For(0, threads, 1,
-        [&work, &bounds, chunks, &nextChunk, &outOfMemory](vtkIdType, vtkIdType) {
-          try
+      vtkBoostedThreadPool::Run(threads, [&work, &bounds, chunks, &nextChunk, &outOfMemory]() {
+        try
+        {
+          for (vtkIdType chunk = nextChunk++; chunk < chunks && !outOfMemory; chunk = nextChunk++)
           {
-            for (vtkIdType chunk = nextChunk++; chunk < chunks && !outOfMemory;
-                 chunk = nextChunk++)
-            {
-              work(bounds[chunk], bounds[chunk + 1]);
-            }
+            work(bounds[chunk], bounds[chunk + 1]);
           }
-          catch (const std::bad_alloc&)
-          {
-            outOfMemory = true; // reported once, on the calling thread; the others stop
-          }
-        });
+        }
+        catch (const std::bad_alloc&)
+        {
+          outOfMemory = true; // reported once, on the calling thread; the others stop
+        }
+      });
       if (outOfMemory)
       {
         throw std::bad_alloc();

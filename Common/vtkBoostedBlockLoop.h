@@ -4,22 +4,22 @@
  *
  * Work of many independent items (grid samples, rows of samples, points) runs in blocks
  * (ItemsPerBlock): on one thread of about SamplesPerBlock samples, run by the calling thread
- * itself; on more, of ThreadedBlocks times that per thread, each one vtkSMPTools::For of one
- * job per thread, and the threads claim the block's chunks (ChunkBounds) in turn from a shared
- * counter, largest first, down to MinimumChunkSamples, so that at a block's end a thread waits
- * for the others for about one small chunk. (VTK 9.2's STDThread backend starts and joins a pool
- * of threads for every For: about 0.15 ms of the calling thread's time each, measured with
- * bench/serial_share.py; with 8 x 65,536 samples per thread an update of 10^6 points on two
- * threads is one For. It queues each job under one mutex: one job per chunk was about 50 jobs a
- * For.) Between blocks, on the calling thread only: the abort check (before each block) and the
- * progress (after each block, the fraction of items done). Each item must write only its own
- * slots, so the result does not depend on the blocks, the chunks or the threads.
+ * itself; on more, of ThreadedBlocks times that per thread, each run by one job per thread on the
+ * project's pool (vtkBoostedThreadPool: threads started at the first parallel block and kept, the
+ * calling thread waiting as in vtkSMPTools' STDThread backend, whose pool VTK 9.2 starts and
+ * joins at every For), and the threads claim the block's chunks (ChunkBounds) in turn from a
+ * shared counter, largest first, down to MinimumChunkSamples, so that at a block's end a thread
+ * waits for the others for about one small chunk. The number of threads is vtkSMPTools': one on
+ * the Sequential backend, GetEstimatedNumberOfThreads() on STDThread. With 8 x 65,536 samples per
+ * thread an update of 10^6 points on two threads is one block. Between blocks, on the calling
+ * thread only: the abort check (before each block) and the progress (after each block, the
+ * fraction of items done). Each item must write only its own slots, so the result does not
+ * depend on the blocks, the chunks or the threads.
  *
- * A std::bad_alloc in the work, on any thread, does not terminate the process (an exception
- * leaving a worker thread would): each worker catches it and records it, no further chunk of the
- * block is claimed and no further block run, and For throws one std::bad_alloc on the calling
- * thread after the block, for vtkBoostedMemoryBudget::Run to turn into one error and an empty
- * output.
+ * A std::bad_alloc in the work, on any thread, does not terminate the process: each worker
+ * catches it and records it, no further chunk of the block is claimed and no further block run,
+ * and For throws one std::bad_alloc on the calling thread after the block, for
+ * vtkBoostedMemoryBudget::Run to turn into one error and an empty output.
  */
 #ifndef vtkBoostedBlockLoop_h
 #define vtkBoostedBlockLoop_h

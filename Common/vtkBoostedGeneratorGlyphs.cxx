@@ -1,8 +1,10 @@
 #include "vtkBoostedGeneratorGlyphs.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
@@ -13,6 +15,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <cmath>
+#include <cstring>
 
 void vtkBoostedGeneratorGlyphs::Add(const cga::Vec3& location, const cga::Vec3& direction,
   double weight, int kind, double pitch, double kappaU, double kappaV)
@@ -90,6 +93,76 @@ void vtkBoostedGeneratorGlyphs::Write(vtkPolyData* output) const
   {
     pointData->AddArray(curvatures);
   }
+}
+
+void vtkBoostedGeneratorGlyphs::Write(
+  vtkPolyData* output, vtkSmartPointer<vtkPolyData>& cache) const
+{
+  if (!this->IsWrittenIn(cache))
+  {
+    cache = vtkSmartPointer<vtkPolyData>::New();
+    this->Write(cache);
+  }
+  output->ShallowCopy(cache);
+}
+
+namespace
+{
+// The value of component `c` of tuple `i` of `array` has the bits of `value` (-0 is not 0).
+template <typename Array, typename Value>
+bool sameBits(Array* array, vtkIdType i, int c, Value value)
+{
+  const Value stored = array->GetTypedComponent(i, c);
+  return std::memcmp(&stored, &value, sizeof value) == 0;
+}
+} // namespace
+
+bool vtkBoostedGeneratorGlyphs::IsWrittenIn(vtkPolyData* data) const
+{
+  // Compared with the arrays themselves, not with a copy of the points kept aside: a consumer
+  // that changed the shared arrays in place gets them written anew.
+  const vtkIdType count = static_cast<vtkIdType>(this->Points.size());
+  if (!data || !data->GetPoints() || data->GetNumberOfPoints() != count ||
+    data->GetNumberOfVerts() != count || data->GetNumberOfCells() != count)
+  {
+    return false;
+  }
+  vtkPointData* pointData = data->GetPointData();
+  auto* points = vtkDoubleArray::SafeDownCast(data->GetPoints()->GetData());
+  auto* directions = vtkDoubleArray::SafeDownCast(pointData->GetVectors());
+  auto* weights = vtkDoubleArray::SafeDownCast(pointData->GetScalars());
+  auto* kinds = vtkIntArray::SafeDownCast(pointData->GetAbstractArray("Kind"));
+  auto* pitches = vtkDoubleArray::SafeDownCast(pointData->GetAbstractArray("Pitch"));
+  auto* curvatures = vtkDoubleArray::SafeDownCast(pointData->GetAbstractArray("Curvature"));
+  const bool kindAndPitch = (this->Columns & KindAndPitch) != 0;
+  const bool curvature = (this->Columns & Curvature) != 0;
+  if (!points || !directions || !weights || (kindAndPitch && !(kinds && pitches)) ||
+    (curvature && !curvatures) ||
+    pointData->GetNumberOfArrays() != 2 + (kindAndPitch ? 2 : 0) + (curvature ? 1 : 0) ||
+    data->GetCellData()->GetNumberOfArrays() != 0 || data->GetFieldData()->GetNumberOfArrays() != 0)
+  {
+    return false;
+  }
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    const Point& p = this->Points[static_cast<std::size_t>(i)];
+    const double location[] = { p.location.x, p.location.y, p.location.z };
+    const double direction[] = { p.direction.x, p.direction.y, p.direction.z };
+    for (int c = 0; c < 3; ++c)
+    {
+      if (!sameBits(points, i, c, location[c]) || !sameBits(directions, i, c, direction[c]))
+      {
+        return false;
+      }
+    }
+    if (!sameBits(weights, i, 0, p.weight) ||
+      (kindAndPitch && !(sameBits(kinds, i, 0, p.kind) && sameBits(pitches, i, 0, p.pitch))) ||
+      (curvature && !(sameBits(curvatures, i, 0, p.kappaU) && sameBits(curvatures, i, 1, p.kappaV))))
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 void vtkBoostedGeneratorGlyphs::FillOutputPortInformation(vtkInformation* info)

@@ -492,7 +492,7 @@ int vtkPointPairDeformationFilter::RequestData(
     // under MPI.
     vtkBoostedGeneratorGlyphs glyphs(vtkBoostedGeneratorGlyphs::KindAndPitch);
     glyphs.Add(generators);
-    glyphs.Write(generatorsOutput);
+    glyphs.Write(generatorsOutput, this->GeneratorGlyphs);
   }
   vtkBoostedTimeSweep::StampTime(outInfo, this->NumberOfTimeSteps, output);
   vtkBoostedTimeSweep::StampTime(generatorsInfo, this->NumberOfTimeSteps, generatorsOutput);

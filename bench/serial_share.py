@@ -4,8 +4,9 @@
       /usr/bin/python3 bench/serial_share.py [Paper|Exact] [M] [side] [updates]
 
 On a machine shared with other jobs the wall clock cannot show how two threads scale; CPU time
-can. With vtkSMPTools' STDThread backend the calling thread waits, without CPU time, while the
-pool's threads run a parallel loop, so the calling thread's CPU time during an update
+can. The calling thread waits, without CPU time, while the project's worker threads
+(vtkBoostedThreadPool, as many as vtkSMPTools' STDThread backend gives) run a parallel block,
+so the calling thread's CPU time during an update
 (time.thread_time) is the update's serial part s, and the process's CPU time less it is the
 parallel part p. Amdahl's law bounds two threads at (s + p) / (s + p / 2) times one, less what the
 threads lose to each other (the CPU time at two threads over the CPU time at one, "cost", which

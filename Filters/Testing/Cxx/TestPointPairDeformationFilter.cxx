@@ -1236,9 +1236,12 @@ TEST(PointPairDeformationFilter, TheOutputIsTheSameOnEveryBackendAndThreadCount)
     filter->SetExponentialRule(vtkPointPairDeformationFilter::EXACT);
     filter->SetTransformNormals(normals);
     std::vector<vtkSmartPointer<vtkPointSet>> outputs;
+    // Two threads twice (the second update on the pool's threads of the first) and three
+    // threads, more than this machine may have.
     for (const auto& [backend, threads] :
       { std::make_pair("Sequential", 1), std::make_pair("STDThread", 1),
-        std::make_pair("STDThread", 2) })
+        std::make_pair("STDThread", 2), std::make_pair("STDThread", 2),
+        std::make_pair("STDThread", 3) })
     {
       vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, backend, false }, [&] {
         filter->Modified();
@@ -1272,4 +1275,72 @@ TEST(PointPairDeformationFilter, TheOutputIsTheSameOnEveryBackendAndThreadCount)
       }
     }
   }
+}
+
+TEST(PointPairDeformationFilter, TheGeneratorsOutputIsBuiltAnewOnlyWhenTheGeneratorsChange)
+{
+  // The "Generators" output of an update whose generators did not change shares the last one's
+  // arrays (vtkBoostedGeneratorGlyphs::Write through the filter's cache); any change (a row, the
+  // sign of a zero, the Generators input, the shared arrays written by a consumer) writes it
+  // anew, with the values as used; an error leaves it empty.
+  Random random(31);
+  auto mesh = randomMesh(random, 50, 1.0);
+  vtkNew<vtkPointPairDeformationFilter> filter;
+  EventCounter events(filter);
+  filter->SetInputData(mesh);
+  filter->AddGenerator(0.25, 0.0, 0.0, 0, 0, 1, 0.5, vtkPointPairDeformationFilter::TWIST, 0.1);
+  filter->AddGenerator(-0.5, 0.5, 0.0, 1, 0, 0, 0.25);
+  auto glyphs = [&] { return vtkPolyData::SafeDownCast(filter->GetOutputDataObject(1)); };
+  auto weights = [&] { return glyphs()->GetPointData()->GetArray("Weight"); };
+  auto update = [&] {
+    filter->Modified();
+    filter->Update();
+  };
+  update();
+  ASSERT_EQ(glyphs()->GetNumberOfPoints(), 2);
+  ASSERT_NE(weights(), nullptr);
+  EXPECT_EQ(glyphs()->GetPointData()->GetArray("Kind")->GetTuple1(0),
+    vtkPointPairDeformationFilter::TWIST);
+  EXPECT_EQ(glyphs()->GetPointData()->GetArray("Pitch")->GetTuple1(0), 0.1);
+  // Kept alive, so that a new array cannot take its address.
+  vtkSmartPointer<vtkDataArray> first = weights();
+  update();
+  EXPECT_EQ(weights(), first.Get()) << "the same generators: the same arrays";
+  EXPECT_EQ(glyphs()->GetNumberOfPoints(), 2);
+  EXPECT_EQ(glyphs()->GetNumberOfVerts(), 2);
+
+  filter->SetGenerator(1, -0.5, 0.5, 0.0, 1, 0, 0, 0.75);
+  filter->Update();
+  EXPECT_NE(weights(), first.Get());
+  EXPECT_EQ(weights()->GetTuple1(1), 0.75);
+
+  weights()->SetTuple1(1, 9.0); // a consumer writing into the shared array
+  update();
+  EXPECT_EQ(weights()->GetTuple1(1), 0.75);
+
+  filter->SetGeneratorsData(generatorPoints({ Generator{ { 0.1, 0.2, 0.0 }, { 0, 1, 0 }, 1.0 } }));
+  filter->UseGeneratorWeightArrayOn();
+  filter->Update();
+  ASSERT_EQ(glyphs()->GetNumberOfPoints(), 3);
+  EXPECT_EQ(glyphs()->GetPoint(2)[1], 0.2);
+  EXPECT_EQ(weights()->GetTuple1(2), 1.0);
+  EXPECT_FALSE(std::signbit(glyphs()->GetPoint(2)[2]));
+
+  // (The list's rows take -0 for 0 as no change; the input's points keep the sign.)
+  vtkSmartPointer<vtkDataArray> positiveZero = weights();
+  filter->SetGeneratorsData(generatorPoints({ Generator{ { 0.1, 0.2, -0.0 }, { 0, 1, 0 }, 1.0 } }));
+  filter->Update();
+  EXPECT_NE(weights(), positiveZero.Get()) << "-0 is another location's bits";
+  ASSERT_EQ(glyphs()->GetNumberOfPoints(), 3);
+  EXPECT_TRUE(std::signbit(glyphs()->GetPoint(2)[2]));
+
+  filter->SetEpsilon(std::numeric_limits<double>::quiet_NaN());
+  filter->Update();
+  EXPECT_EQ(events.errors, 1);
+  EXPECT_EQ(glyphs()->GetNumberOfPoints(), 0) << "empty after an error";
+  filter->SetEpsilon(0.05);
+  filter->Update();
+  ASSERT_EQ(glyphs()->GetNumberOfPoints(), 3);
+  EXPECT_EQ(weights()->GetTuple1(1), 0.75);
+  EXPECT_EQ(events.errors, 1);
 }

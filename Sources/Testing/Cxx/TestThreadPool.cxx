@@ -1,0 +1,197 @@
+// The project's worker threads (Common's vtkBoostedThreadPool, on which vtkBoostedBlockLoop runs
+// every parallel block): started once and kept from one Run to the next, the job once on each of
+// the asked threads while the calling thread waits, a Run nested in a job or in a vtkSMPTools
+// parallel region and a Run while another thread runs the pool done on the calling thread, an
+// exception thrown again on the calling thread once every thread has returned, and a child
+// process made by fork() served by threads of its own.
+#include "vtkBoostedBlockLoop.h"
+#include "vtkBoostedSurfaceSource.h"
+#include "vtkBoostedThreadPool.h"
+#include "vtkNew.h"
+#include "vtkSMPTools.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <set>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#if defined(__unix__) || defined(__APPLE__)
+#include <sys/wait.h>
+#include <unistd.h>
+#endif
+
+namespace
+{
+// The threads that ran a job, and how many times it ran.
+struct Calls
+{
+  std::mutex Mutex;
+  std::multiset<std::thread::id> Threads;
+
+  void Record()
+  {
+    const std::lock_guard<std::mutex> lock(this->Mutex);
+    this->Threads.insert(std::this_thread::get_id());
+  }
+  std::set<std::thread::id> Distinct() const
+  {
+    return std::set<std::thread::id>(this->Threads.begin(), this->Threads.end());
+  }
+};
+} // namespace
+
+TEST(ThreadPool, TheThreadsStartOnceAndRunEachJobOnEveryOneWhileTheCallerWaits)
+{
+  const int before = vtkBoostedThreadPool::Threads();
+  std::set<std::thread::id> everyRun;
+  for (int run = 0; run < 50; ++run)
+  {
+    Calls calls;
+    vtkBoostedThreadPool::Run(3, [&] { calls.Record(); });
+    ASSERT_EQ(calls.Threads.size(), 3u) << "run " << run << ": the job once per thread";
+    const std::set<std::thread::id> threads = calls.Distinct();
+    ASSERT_EQ(threads.size(), 3u) << "run " << run;
+    EXPECT_EQ(threads.count(std::this_thread::get_id()), 0u) << "the calling thread waits";
+    everyRun.insert(threads.begin(), threads.end());
+  }
+  EXPECT_EQ(everyRun.size(), 3u) << "the same three threads every time";
+  EXPECT_EQ(vtkBoostedThreadPool::Threads(), std::max(before, 3)) << "started once, kept";
+  // Fewer threads: the first of the pool's, none started.
+  Calls two;
+  vtkBoostedThreadPool::Run(2, [&] { two.Record(); });
+  EXPECT_EQ(two.Threads.size(), 2u);
+  EXPECT_EQ(vtkBoostedThreadPool::Threads(), std::max(before, 3));
+  // One thread: the calling thread itself.
+  Calls one;
+  vtkBoostedThreadPool::Run(1, [&] { one.Record(); });
+  ASSERT_EQ(one.Threads.size(), 1u);
+  EXPECT_EQ(*one.Threads.begin(), std::this_thread::get_id());
+}
+
+TEST(ThreadPool, TheBlockLoopKeepsItsThreadsFromOneUpdateToTheNext)
+{
+  vtkSMPTools::SetBackend("STDThread");
+  vtkSMPTools::Initialize(2);
+  vtkNew<vtkBoostedSurfaceSource> algorithm; // any algorithm: progress and abort
+  const vtkIdType items = 3 * vtkBoostedBlockLoop::ItemsPerBlock(1) + 11;
+  Calls calls;
+  std::atomic<vtkIdType> done{ 0 };
+  for (int update = 0; update < 20; ++update)
+  {
+    ASSERT_TRUE(vtkBoostedBlockLoop::For(algorithm, 0, items, 1, [&](vtkIdType first, vtkIdType last) {
+      done += last - first;
+      calls.Record();
+    }));
+  }
+  EXPECT_EQ(done.load(), 20 * items);
+  const std::set<std::thread::id> threads = calls.Distinct();
+  EXPECT_EQ(threads.size(), 2u) << "60 blocks, two threads";
+  EXPECT_EQ(threads.count(std::this_thread::get_id()), 0u);
+  EXPECT_GE(vtkBoostedThreadPool::Threads(), 2);
+}
+
+TEST(ThreadPool, ARunInAJobOrInAnSMPRegionRunsOnTheCallingThread)
+{
+  std::atomic<int> inner{ 0 }, elsewhere{ 0 };
+  vtkBoostedThreadPool::Run(2, [&] {
+    const std::thread::id outer = std::this_thread::get_id();
+    vtkBoostedThreadPool::Run(2, [&] {
+      ++inner;
+      elsewhere += std::this_thread::get_id() != outer;
+    });
+  });
+  EXPECT_EQ(inner.load(), 2) << "once in each of the two outer jobs";
+  EXPECT_EQ(elsewhere.load(), 0);
+
+  vtkSMPTools::SetBackend("STDThread");
+  vtkSMPTools::Initialize(2);
+  inner = 0;
+  elsewhere = 0;
+  vtkSMPTools::For(0, 2, 1, [&](vtkIdType, vtkIdType) {
+    const std::thread::id outer = std::this_thread::get_id();
+    vtkBoostedThreadPool::Run(2, [&] {
+      ++inner;
+      elsewhere += std::this_thread::get_id() != outer;
+    });
+  });
+  EXPECT_EQ(inner.load(), 2);
+  EXPECT_EQ(elsewhere.load(), 0);
+}
+
+TEST(ThreadPool, TwoThreadsRunningAtOnceEachGetTheirJobsDone)
+{
+  // One of them may find the pool busy and run its job alone: either way every job runs as
+  // often as asked and neither waits for ever.
+  std::atomic<int> jobs[2] = { { 0 }, { 0 } };
+  auto caller = [&jobs](int which) {
+    for (int run = 0; run < 300; ++run)
+    {
+      std::atomic<int> calls{ 0 };
+      vtkBoostedThreadPool::Run(2, [&] {
+        ++calls;
+        std::this_thread::sleep_for(std::chrono::microseconds(20));
+      });
+      jobs[which] += calls.load() >= 1 && calls.load() <= 2;
+    }
+  };
+  std::thread first(caller, 0), second(caller, 1);
+  first.join();
+  second.join();
+  EXPECT_EQ(jobs[0].load(), 300);
+  EXPECT_EQ(jobs[1].load(), 300);
+}
+
+TEST(ThreadPool, AnExceptionIsThrownOnTheCallingThreadOnceEveryThreadHasReturned)
+{
+  std::atomic<int> started{ 0 };
+  std::atomic<bool> slowOneReturned{ false };
+  EXPECT_THROW(vtkBoostedThreadPool::Run(2,
+                 [&] {
+                   if (started++ == 0)
+                   {
+                     throw std::runtime_error("a job failed");
+                   }
+                   std::this_thread::sleep_for(std::chrono::milliseconds(30));
+                   slowOneReturned = true;
+                 }),
+    std::runtime_error);
+  EXPECT_EQ(started.load(), 2);
+  EXPECT_TRUE(slowOneReturned.load()) << "Run returned before the other thread did";
+  // The pool still works.
+  std::atomic<int> calls{ 0 };
+  vtkBoostedThreadPool::Run(2, [&] { ++calls; });
+  EXPECT_EQ(calls.load(), 2);
+}
+
+#if defined(__unix__) || defined(__APPLE__)
+TEST(ThreadPool, AForkedChildRunsOnThreadsOfItsOwn)
+{
+  vtkBoostedThreadPool::Run(2, [] {}); // the parent's pool exists
+  ASSERT_GE(vtkBoostedThreadPool::Threads(), 2);
+  const pid_t child = fork();
+  ASSERT_NE(child, -1);
+  if (child == 0)
+  {
+    // The parent's pool threads do not exist here: without a pool of its own the child would wait
+    // for them for ever (the alarm ends it then, and the parent sees a signal).
+    alarm(20);
+    std::atomic<int> calls{ 0 }, onCaller{ 0 };
+    const std::thread::id caller = std::this_thread::get_id();
+    vtkBoostedThreadPool::Run(2, [&] {
+      ++calls;
+      onCaller += std::this_thread::get_id() == caller;
+    });
+    _exit(calls.load() == 2 && onCaller.load() == 0 && vtkBoostedThreadPool::Threads() == 2 ? 0 : 1);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status)) << "the child hung or crashed (signal "
+                                 << (WIFSIGNALED(status) ? WTERMSIG(status) : 0) << ")";
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "the child's Run did not use two threads of its own";
+}
+#endif
