@@ -501,14 +501,16 @@ int GeneratorTree::degreeFor(const Node& node, double q, double D, double reach,
   return degree;
 }
 
-// The target cells' lattice: leaves about kLeafShare of the widest cell usable at any distance
-// (q <= QLimit at |d| = 0: radius QLimit sqrt(eps/k)), a power of two wide, between 2^-12 and 2
-// times the generators' radius; the top cells span the generators' diameter.
+// The target cells' lattice: leaves about kLeafShare (kHighDegreeLeafShare at kMaxDegree) of the
+// widest cell usable at any distance (q <= QLimit at |d| = 0: radius QLimit sqrt(eps/k)), a power
+// of two wide, between 2^-12 and 2 times the generators' radius; the top cells span the
+// generators' diameter.
 void GeneratorTree::chooseCells()
 {
   const double extent = this->Nodes.empty() ? 0.0 : this->Nodes[0].radius;
+  const double share = this->Degree == kMaxDegree ? kHighDegreeLeafShare : kLeafShare;
   const double floorWidth = this->Falloff > 0.0
-    ? kLeafShare * this->QLimit * std::sqrt(this->Epsilon / this->Falloff) * 2.0 / std::sqrt(3.0)
+    ? share * this->QLimit * std::sqrt(this->Epsilon / this->Falloff) * 2.0 / std::sqrt(3.0)
     : HUGE_VAL;
   double side = std::min(floorWidth, 2.0 * extent);
   side = std::max(side, std::ldexp(extent, -12));

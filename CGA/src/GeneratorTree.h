@@ -116,8 +116,14 @@ public:
   static constexpr double kWeightSpread = 1.5;
   /// Generators per leaf at most.
   static constexpr std::size_t kLeafSize = 32;
-  /// A leaf cell's width over that of the widest cell usable at any distance.
+  /// A leaf cell's width over that of the widest cell usable at any distance, at degree kDegree
+  /// and at kMaxDegree. At kMaxDegree a multipole to local costs 9.3 times as much per cell (74,613
+  /// terms against 8,008 at degree 10), so larger leaves, with more points to share it, pay:
+  /// measured on the bench's field at M = 100,000 (262,000 mesh points in 65,536-point calls, CPU
+  /// time, against 0.25): 0.96 times the time at Tolerance 1e-6 and 0.95 at 1e-4 with degree 16,
+  /// but 1.13 times at 0.1 and 1.38 at 1e-3 with degree 10 (1.0: 2.1 times at 1e-6).
   static constexpr double kLeafShare = 0.25;
+  static constexpr double kHighDegreeLeafShare = 0.5;
   /// The largest q a node is used at (the series converges for q < 1; its terms' bound grows
   /// like (j + 1) q^j).
   static constexpr double kLargestOpening = 0.5;
