@@ -36,6 +36,34 @@ Vec3 referenceImage(const Multivector& k, Vec3 p)
   return out;
 }
 
+// The batch path on every instruction set maps p to the pointwise image, to the bit (laneExp is
+// SLEEF's deterministic exp, as the pointwise map's); the active set is restored.
+void expectTheBatchBitsOnEveryInstructionSet(const PointPairField& field, Vec3 p, double strength, Vec3 image)
+{
+  const std::string active = mapPointsInstructionSet();
+  const double in[3] = { p.x, p.y, p.z };
+  for (const std::string& set : mapPointsInstructionSets())
+  {
+    ASSERT_TRUE(useMapPointsInstructionSet(set));
+    double batch[3];
+    ASSERT_EQ(field.mapPoints(in, batch, 1, strength, ExponentialRule::Exact), 0u);
+    EXPECT_EQ(batch[0], image.x) << set;
+    EXPECT_EQ(batch[1], image.y) << set;
+    EXPECT_EQ(batch[2], image.z) << set;
+  }
+  ASSERT_TRUE(useMapPointsInstructionSet(active));
+}
+
+// The location is the fixed point of the map, to the bit.
+void expectFixedToTheBit(const PointPairField& field, Vec3 location, double strength)
+{
+  Vec3 fixed;
+  ASSERT_TRUE(field.map(location, strength, ExponentialRule::Exact, fixed)) << "strength " << strength;
+  EXPECT_EQ(fixed.x, location.x);
+  EXPECT_EQ(fixed.y, location.y);
+  EXPECT_EQ(fixed.z, location.z);
+}
+
 // Rodrigues: y turned by the angle about the unit axis, right-handed.
 Vec3 rotated(Vec3 y, Vec3 unitAxis, double angle)
 {
@@ -278,7 +306,6 @@ TEST(GeneratorKinds, AStrongDilationScalesByItsFactorToTheLastBits)
   // d^2 = 0.75 and eps = 0.25, d^2 = 0.5 (not a power of two) and eps = 0.5: each sum is 1.
   const Vec3 offsets[] = { { 0.5, 0.5, 0.5 }, { -0.5, 0.5, -0.5 }, { 0.5, 0.0, -0.5 } };
   const double epsilons[] = { 0.25, 0.25, 0.5 };
-  const std::string active = mapPointsInstructionSet();
   double worst = 0.0;
   for (int o = 0; o < 3; ++o)
   {
@@ -293,19 +320,7 @@ TEST(GeneratorKinds, AStrongDilationScalesByItsFactorToTheLastBits)
         const double size = norm(expected);
         Vec3 image;
         ASSERT_TRUE(field.map(p, strength, ExponentialRule::Exact, image)) << "c " << strength;
-        // The batch path on every instruction set: the same bits (laneExp is SLEEF's
-        // deterministic exp, as the pointwise map's).
-        const double in[3] = { p.x, p.y, p.z };
-        for (const std::string& set : mapPointsInstructionSets())
-        {
-          ASSERT_TRUE(useMapPointsInstructionSet(set));
-          double batch[3];
-          ASSERT_EQ(field.mapPoints(in, batch, 1, strength, ExponentialRule::Exact), 0u);
-          EXPECT_EQ(batch[0], image.x) << set;
-          EXPECT_EQ(batch[1], image.y) << set;
-          EXPECT_EQ(batch[2], image.z) << set;
-        }
-        ASSERT_TRUE(useMapPointsInstructionSet(active));
+        expectTheBatchBitsOnEveryInstructionSet(field, p, strength, image);
         const double error = norm(image - expected) / size;
         EXPECT_LE(error, 2e-15) << "c " << strength << " offset " << o;
         worst = std::max(worst, error);
@@ -313,11 +328,7 @@ TEST(GeneratorKinds, AStrongDilationScalesByItsFactorToTheLastBits)
         // 1400 (kStrongHyperbolicLimit: the plane's angle is c/2).
         if (std::abs(strength) / epsilons[o] <= 1400.0)
         {
-          Vec3 fixed;
-          ASSERT_TRUE(field.map(location, strength, ExponentialRule::Exact, fixed)) << "c " << strength;
-          EXPECT_EQ(fixed.x, location.x);
-          EXPECT_EQ(fixed.y, location.y);
-          EXPECT_EQ(fixed.z, location.z);
+          expectFixedToTheBit(field, location, strength);
         }
       }
     }
@@ -339,6 +350,59 @@ TEST(GeneratorKinds, AStrongDilationScalesByItsFactorToTheLastBits)
     ASSERT_TRUE(field.map(p, 1.0, ExponentialRule::Exact, image)) << weight;
     EXPECT_LE(norm(image - expected), 1e-14 * c * norm(expected)) << "c " << c;
   }
+}
+
+TEST(GeneratorKinds, AStrongLoxodromicMapScalesAndTurnsByItsFactorAndAngle)
+{
+  // A dilation and a rotation about an axis through its location (B = B1 + B2, two commuting
+  // planes, W != 0: a loxodromic similarity) map p to x + e^c R(angle)(p - x), c = strength wd |v|,
+  // angle = strength wr |v| (w = |v| = k = 1, d^2 + eps = 1 as in the strong dilation's test). The
+  // closed form's sandwich formed its weight e^-c from terms of size 1 and lost about e^c units of
+  // 2^-53 (wrong from c ~ 20, refused at 600); strongHyperbolicSandwich splits B exactly
+  // (similarityLanes) and scales the hyperbolic plane's null directions by their exact factors
+  // (docs/conventions.md section 2 item 12). Both with the field's center at x (B = (c/2) no^ni +
+  // angle/2 e12 about it) and moved off x by a generator of weight 0 (B then has e_i^ni parts,
+  // rounded: the fixed point's rounding moves the image by e^c times it, 2^-53 |x - center| /
+  // |p - x| of its size per unit).
+  const Vec3 location{ 0.25, -0.5, 0.75 };
+  const Vec3 axis{ 0.0, 0.0, 1.0 };
+  const Vec3 offsets[] = { { 0.5, 0.5, 0.5 }, { -0.5, 0.5, -0.5 }, { 0.5, 0.0, -0.5 }, { 0.0, 0.0, 0.5 } };
+  const double epsilons[] = { 0.25, 0.25, 0.5, 0.75 };
+  double worst[2] = { 0.0, 0.0 };
+  for (const bool moved : { false, true })
+  {
+    for (int o = 0; o < 4; ++o)
+    {
+      const Vec3 p = location + offsets[o];
+      for (const double c : { 1.0, 2.0, 5.0, 10.0, 20.0, 30.0, 38.0, 50.0, 100.0, 300.0, 600.0, 700.0 })
+      {
+        for (const double strength : { c, -c })
+        {
+          const double angle = strength > 0.0 ? 2.0 : -2.0; // wr = 2/c
+          const FieldGenerator generators[] = {
+            FieldGenerator::of(GeneratorKind::Dilation, location, axis, 0.0, 1.0),
+            FieldGenerator::of(GeneratorKind::Rotation, location, axis, 0.0, 2.0 / c),
+            FieldGenerator::of(GeneratorKind::Translation, location + Vec3{ 0.75, -1.25, 0.5 }, axis, 0.0, 0.0)
+          };
+          const PointPairField field(generators, moved ? 3 : 2, 1.0, epsilons[o]);
+          const Vec3 expected = location + std::exp(strength) * rotated(offsets[o], axis, angle);
+          const double size = norm(expected);
+          Vec3 image;
+          ASSERT_TRUE(field.map(p, strength, ExponentialRule::Exact, image)) << "c " << strength;
+          expectTheBatchBitsOnEveryInstructionSet(field, p, strength, image);
+          const double error = norm(image - expected) / size;
+          EXPECT_LE(error, moved ? 5e-15 : 2e-15) << "c " << strength << " offset " << o << " moved " << moved;
+          worst[moved] = std::max(worst[moved], error);
+          if (!moved && std::abs(strength) / epsilons[o] <= 1400.0)
+          {
+            expectFixedToTheBit(field, location, strength);
+          }
+        }
+      }
+    }
+  }
+  std::printf("largest error of a strong loxodromic map / its image: %.3g (center at x), %.3g (moved)\n",
+    worst[0], worst[1]);
 }
 
 TEST(GeneratorKinds, OneTranslationTranslatesAlongItsDirection)

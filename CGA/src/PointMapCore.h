@@ -471,16 +471,41 @@ constexpr double kStrongHyperbolic = 1.0;
 /// |p - x| < 1e-300).
 constexpr double kStrongHyperbolicLimit = 700.0;
 
-/// q, with its tangents dropped where its value is exactly 0 (a Dual: DualNumber.h). Used for the
-/// parts of the strong sandwich that a factor e^{2a} multiplies: where B's hyperbolic plane keeps ni
-/// (a dilation with translations: every generator a similarity, B without e_i^no parts), its
+/// 2a up to which the strong sandwich keeps the tangents of its exactly-zero parts along seeds that
+/// move B's e_i^no parts (exactZeroStaysZero): their rounding, times e^{2a} <= 2^10, stays within
+/// 2^-43 of the derivative, as the closed form's (which such lanes took before they were strong).
+constexpr double kKeptLeavingTangents = 10.0 * 0.6931471805599453;
+
+/// q (a Dual: DualNumber.h) with its tangents dropped where its value is exactly 0, along the seeds
+/// that keep u a similarity's bivector (no e_i^no tangent), and along every seed where `dropAll`.
+/// Used for the parts of the strong sandwich that a factor e^{2a} multiplies: where B is a
+/// similarity's bivector (similarityLanes: a dilation with translations, rotations, twists), its
 /// growing null direction is ni exactly and those parts' no and Euclidean components are 0 at every
-/// p, their values to the bit, while their tangents would carry the rounding of N1's normalization
-/// times e^{2a}.
-template <typename T>
-BOOSTED_FORCE_INLINE T exactZeroStaysZero(const T& q)
+/// B of the similarities, their values to the bit, while their tangents would carry the rounding of
+/// N1's normalization times e^{2a}. Along a seed that moves B's e_i^no parts (d p' / d B) B leaves
+/// the similarities and those tangents are the derivative's own: kept where e^{2a} is small
+/// (kKeptLeavingTangents), dropped beyond (dropAll; docs/conventions.md section 3 item 15 states
+/// what that derivative misses there).
+template <typename V, int N>
+BOOSTED_FORCE_INLINE Dual<V, N> exactZeroStaysZero(Dual<V, N> q, const Dual<V, N>* u, const Mask<ValueOf<V>>& dropAll)
 {
-  return select(equalTo(valueOf(q), ValueOf<T>{}), T{}, q);
+  if constexpr (kHasTangents<V>) // a jet: the value's own tangents alike
+  {
+    V values[kBivector];
+    for (const int c : { E1NO, E2NO, E3NO })
+    {
+      values[c] = u[c].v;
+    }
+    q.v = exactZeroStaysZero(q.v, values, dropAll);
+  }
+  const Mask<ValueOf<V>> zero = equalTo(valueOf(q.v), ValueOf<V>{});
+  for (int k = 0; k < N; ++k)
+  {
+    const auto staysSimilar = maskAnd(maskAnd(equalTo(u[E1NO].d[k], V{}), equalTo(u[E2NO].d[k], V{})),
+      equalTo(u[E3NO].d[k], V{}));
+    q.d[k] = select(maskAnd(zero, maskOr(dropAll, staysSimilar)), V{}, q.d[k]);
+  }
+  return q;
 }
 
 /// The binary exponent of the largest of a vector's no and Euclidean components (those the image
@@ -498,6 +523,36 @@ BOOSTED_FORCE_INLINE ValueOf<T> imagePartExponent(const T* v)
   return select(equalTo(largest, V{}), splat<V>(-1e4), binaryExponentOf(largest));
 }
 
+/// Per lane, whether B = m u is a similarity's bivector: no e_i^no part (every generator a
+/// dilation, rotation, twist or translation), so that ni is fixed. Its two planes are then
+/// B1 = d (no^ni + x^ni) (the dilation about the fixed point x, d = u's no^ni component) and
+/// B2 = E + C2^ni (the rotation about an axis through x, E = u's e_ij part): l1 = d^2 and
+/// l2 = -|E|^2 exactly, and B2's E and no^ni components are u's E and 0 exactly.
+template <typename T>
+BOOSTED_FORCE_INLINE Mask<ValueOf<T>> similarityLanes(const T* u)
+{
+  using V = ValueOf<T>;
+  return maskAnd(maskAnd(equalTo(valueOf(u[E1NO]), V{}), equalTo(valueOf(u[E2NO]), V{})),
+    equalTo(valueOf(u[E3NO]), V{}));
+}
+
+/// Per lane, whether strongHyperbolicSandwich's parts that its factor e^{2a} multiplies come out
+/// exact where they vanish (docs/conventions.md section 2 item 12): B a 2-blade (W = 0: its plane
+/// is u itself) or a similarity's bivector (similarityLanes: its split is exact in the components
+/// that matter). Elsewhere (a strong plane beside a second one and a transversion part) the
+/// field's frame keeps the closed form.
+template <typename T>
+BOOSTED_FORCE_INLINE Mask<ValueOf<T>> strongSandwichIsExact(const UnitBivector<T>& unit)
+{
+  using V = ValueOf<T>;
+  Mask<V> blade = equalTo(valueOf(unit.w[0]), V{});
+  for (int i = 1; i < kQuadvector; ++i)
+  {
+    blade = maskAnd(blade, equalTo(valueOf(unit.w[i]), V{}));
+  }
+  return maskOr(blade, similarityLanes(unit.u));
+}
+
 /// <K X ~K>_1 (up to a positive factor) for K = exp(B), B = m u with a strong hyperbolic plane
 /// (l1 > 0 the square of u's hyperbolic plane, l2 <= 0 the other's, wu = <W u>_2), without the
 /// cancellation of 1 - tanh^2 (docs/conventions.md section 2 item 7 and 12). B splits into the
@@ -512,14 +567,27 @@ BOOSTED_FORCE_INLINE ValueOf<T> imagePartExponent(const T* v)
 /// each part multiplied by its exact factor. Since the image is homogeneous, the three are scaled by
 /// a power of two 2^-k that brings the largest of their no and Euclidean parts near 1, and e^{2a} is
 /// applied as e^a, 2^-k, e^a in turn, so that nothing overflows while the image is in range
-/// (a up to kStrongHyperbolicLimit). The caller takes it where B is a 2-blade (B2 = 0, Y = X).
+/// (a up to kStrongHyperbolicLimit). The caller takes it where strongSandwichIsExact: B a 2-blade
+/// (B2 = 0, Y = X) or a similarity's bivector, whose split takes its exact values (similarityLanes:
+/// l1 = d^2, l2 = -|E|^2, B2's E = u's and no^ni = 0), so that N1 = B1/|d| has no e_ij part and
+/// the no^ni component +-1 to the bit, and the parts that e^{2a} multiplies keep their exact zeros.
 template <typename T>
-void strongHyperbolicSandwich(const UnitBivector<T>& unit, const T& l1, const T& l2, const T* wu,
+void strongHyperbolicSandwich(const UnitBivector<T>& unit, const T& l1Split, const T& l2Split, const T* wu,
                               const T* x, T* r)
 {
   using V = ValueOf<T>;
   const T* u = unit.u;
   const T m = asNumber<T>(unit.scale.usableOrOne());
+  // A similarity's planes take their exact values (a Dual keeps the general formula's tangents:
+  // B may leave the similarities along a tangent, e.g. d p' / d B).
+  const Mask<V> similarity = similarityLanes(u);
+  const bool anySimilarity = anyLane(similarity);
+  T l1 = l1Split, l2 = l2Split;
+  if (anySimilarity)
+  {
+    l1 = withValueOf(similarity, u[NONI] * u[NONI], l1);
+    l2 = withValueOf(similarity, -(u[E12] * u[E12] + u[E13] * u[E13] + u[E23] * u[E23]), l2);
+  }
   // Lanes that are not strong (selected away by the caller) must not divide by 0.
   const Mask<V> positive = lessThan(V{}, valueOf(l1));
   const T l1Safe = select(positive, l1, splat<T>(1.0));
@@ -529,6 +597,17 @@ void strongHyperbolicSandwich(const UnitBivector<T>& unit, const T& l1, const T&
   for (int c = 0; c < kBivector; ++c)
   {
     b2[c] = (0.5 * wu[c] - l2 * u[c]) * inverseGap;
+  }
+  if (anySimilarity)
+  {
+    for (const int c : { E12, E13, E23 })
+    {
+      b2[c] = withValueOf(similarity, u[c], b2[c]);
+    }
+    b2[NONI] = zeroValue(similarity, b2[NONI]);
+  }
+  for (int c = 0; c < kBivector; ++c)
+  {
     // A division, not a product by 1/root1: for a dilation N's no^ni component is then u/|u| = +-1
     // to the bit (sqrt(fl(u^2)) = |u|), which keeps X-'s and X_perp's no parts exactly 0.
     n1[c] = (u[c] - b2[c]) / root1;
@@ -550,15 +629,16 @@ void strongHyperbolicSandwich(const UnitBivector<T>& unit, const T& l1, const T&
     orthogonal[i] = y[i] - projection[i];
     plus[i] = 0.5 * (projection[i] + z[i]);
   }
+  const T a = m * root1;
   if constexpr (kHasTangents<T>)
   {
+    const Mask<V> dropAll = lessThan(splat<V>(kKeptLeavingTangents), 2.0 * valueOf(a));
     for (const int i : { NO, E1, E2, E3 })
     {
-      minus[i] = exactZeroStaysZero(minus[i]);
+      minus[i] = exactZeroStaysZero(minus[i], u, dropAll);
     }
-    orthogonal[NO] = exactZeroStaysZero(orthogonal[NO]);
+    orthogonal[NO] = exactZeroStaysZero(orthogonal[NO], u, dropAll);
   }
-  const T a = m * root1;
   const T grow = laneExp(a), shrink = 1.0 / grow;
   // k: the largest binary exponent of the three scaled parts (2a/ln2 the exponent of e^{2a}).
   const V twoA = 2.0 * valueOf(a) * 1.4426950408889634;
@@ -991,18 +1071,14 @@ void mapPointBy(const kernel::FieldArgs& args, T* b, const T* p, T* image, bool*
   T wu[kBivector], l1, l2;
   detail::applyProduct<detail::kRightContraction>(unit.w, unit.u, wu);
   detail::planeSquares(unit.s, unit.w2, l1, l2);
-  // Strong: a = m sqrt(l1) in (kStrongHyperbolic, kStrongHyperbolicLimit], B a 2-blade (W = 0:
-  // a dilation with translations, where the sandwich's parts come out exact; a second plane's
-  // split would round them).
+  // Strong: a = m sqrt(l1) in (kStrongHyperbolic, kStrongHyperbolicLimit], where the sandwich's
+  // parts come out exact (strongSandwichIsExact: B a 2-blade or a similarity's bivector).
   const V mUnit = unit.scale.usableOrOne();
   const V angleSquare = (valueOf(l1) * mUnit) * mUnit;
   Mask<V> strong = maskAnd(maskAnd(unit.scale.usable, maskNot(aroundPoint)),
     maskAnd(lessThan(splat<V>(kStrongHyperbolic * kStrongHyperbolic), angleSquare),
       lessEqual(angleSquare, splat<V>(kStrongHyperbolicLimit * kStrongHyperbolicLimit))));
-  for (int i = 0; i < kQuadvector; ++i)
-  {
-    strong = maskAnd(strong, equalTo(valueOf(unit.w[i]), V{}));
-  }
+  strong = maskAnd(strong, strongSandwichIsExact(unit));
   const bool anyStrong = anyLane(strong), allStrong = allLanes(strong);
   if (!allStrong)
   {

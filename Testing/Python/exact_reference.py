@@ -226,10 +226,14 @@ def jacobian_of_bivector(s, ds, p, strength, digits=DIGITS):
     """d image / d p (row-major 3x3, mpf) of p -> fn(expm(X(p)) up(p)), X = -strength A(s), for
     the bivector s at p and its derivatives ds[j] = ds/dp_j, without differences: the derivative
     of expm along E is the upper right block of expm([[X, E], [0, X]]) (the Frechet derivative),
-    then up(p)' = e_j + p_j ni and fn's quotient rule. Precision as image_of_bivector's."""
+    then up(p)' = e_j + p_j ni and fn's quotient rule. Precision raised by the size of the action
+    and by its hyperbolic part (_size_digits, _hyperbolic_digits)."""
     scaled = [[-mpf(strength) * s[i][j] for j in range(5)] for i in range(5)]
     size = max(abs(c) for row in scaled for c in row)
     extra = 3 * max(0, int(mpmath.log10(size)) + 1) if size > 0 else 0
+    # a strong hyperbolic part: the weight of the image is e^-h of the terms (a dilation's)
+    with mp.workdps(digits + extra):
+        extra += _hyperbolic_digits(action(scaled))
     with mp.workdps(digits + extra):
         x = action(scaled)
         u = mpmath.matrix(up(p))

@@ -4,7 +4,8 @@ every generator kind (point pairs, rotations, twists, dilations, translations, a
 space), alone and in clusters of mixed kinds: points on a generator (and on a rotation's axis) and
 1e-9 ... 1e-3 from one, epsilon from 1e-10 to 1e3, huge weights and strengths (of either sign)
 (docs/conventions.md section 2 item 12 states the bound tested here), lone dilations with factors up
-to e^600.
+to e^700 and dilations with a rotation about an axis through their location (loxodromic maps) up to
+e^600.
 
 Each image, from the batch path (PointPairField::mapPoints) and the pointwise path (map), of the
 field built from FieldGenerator::of (or the bivector) and from GeneratorParameters rows, printed by
@@ -147,11 +148,17 @@ def dilation_weight(exponent, eps, strength, direction=V1):
     return exponent * eps / abs(strength * math.sqrt(sum(c * c for c in direction)))
 
 
-# The factors e^c of the lone dilations on their location: up to e^600 = 4e260, the images in range
+# The factors e^c of the lone dilations on their location: up to e^700 = 1e304, the images in range
 # (the distances from the location times e^c). The map scales the hyperbolic plane's null directions
 # by their exact factors (docs/conventions.md section 2 item 12); before, it lost about e^c 2^-53 of
 # the scale (1 - tanh^2 formed by cancellation), was wrong from c = 30 and refused from c ~ 38.
-DILATION_EXPONENTS = (5.0, 30.0, 300.0, 600.0)
+DILATION_EXPONENTS = (5.0, 30.0, 300.0, 600.0, 650.0, 700.0)
+
+# The factors of the loxodromic similarities (a dilation and a rotation by 2 about an axis through its
+# location, W != 0): the same exact scaling after an exact split of B into its two planes; before,
+# the closed form lost about e^c 2^-53 of the scale (wrong by 429 times it at c = 30, 1e-7 from the
+# location) and refused the point at c = 600.
+LOXODROMIC_EXPONENTS = (5.0, 30.0, 300.0, 600.0)
 
 
 def kind_configurations(around1, around2):
@@ -187,6 +194,20 @@ def kind_configurations(around1, around2):
                  f"strength {strength:g}", 1.0, eps, strength,
                  [generator("dilation", X1, V1, weight)], dilation_points, True,
                  strength == 1.0 and eps == 1e-10))
+    # a dilation with a rotation about an axis through its location (a loxodromic map: B has two
+    # commuting planes), alone (the field's center on the location) and with a translation 0.4 away
+    # (B has e_i^ni parts about the center, the fixed point moves)
+    loxodromic_points = around1[::2] + axis1 + FAR[:1]
+    for exponent in LOXODROMIC_EXPONENTS:
+        for eps, strength in ((1e-10, 1.0), (1e-10, -1.0), (1e-8, -1e6)):
+            spiral = [generator("dilation", X1, V1, dilation_weight(exponent, eps, strength)),
+                      generator("rotation", X1, V1, dilation_weight(2.0, eps, strength))]
+            for extra in ([], [generator("translation", X2, V2, 0.1)]):
+                yield from one_per_point(
+                    (f"a dilation and a rotation about its axis, c {exponent:g}, eps {eps:g}, "
+                     f"strength {strength:g}{', a translation' if extra else ''}", 1.0, eps,
+                     strength, spiral + extra, loxodromic_points, False,
+                     strength == 1.0 and eps == 1e-10 and not extra))
     near3 = offsets(X3, NEAR, DIRECTIONS[:1])
     for eps, strength in ((1e-10, 1.0), (1e-10, -1.0), (1e-8, -1e6), (1e-6, 1e5)):
         mixed = [pair(X1, V1, 0.5), generator("rotation", X3, V3, 0.2),
