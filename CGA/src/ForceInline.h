@@ -12,3 +12,12 @@
 #else
 #define BOOSTED_FORCE_INLINE inline
 #endif
+
+// BOOSTED_COLD: a rare branch kept out of line (and out of the hot code's cache lines), so that its
+// code does not enter the register allocation of the common path that calls it (PointMapCore.h's
+// strong branch: inlined, it cost the common path about 4 ns per point on AVX-512).
+#if defined(__GNUC__) || defined(__clang__)
+#define BOOSTED_COLD __attribute__((noinline, cold))
+#else
+#define BOOSTED_COLD
+#endif
