@@ -25,15 +25,32 @@ constexpr int kComponents = Bivector::Count;
 //   C' = C - E y - d y + (1/2)|y|^2 A - (A.y) y  (docs/conventions.md section 2 item 12, t = -y),
 // |E y + d y| <= sqrt(|E|^2 + d^2) |y| (E y is orthogonal to y), |(1/2)|y|^2 A - (A.y) y| = |y|^2 |A|/2:
 //   |v_p(g)| <= 2 |C| + 2 sqrt(|E|^2 + d^2) |y| + |A| |y|^2.
+// The one layout of the three parts, for addMotion (the generators' absolute motions) and for the
+// signed moments' norms (computeBudgets): the components in the parts' order, and per part its
+// first component there, its size and its factor in the bound.
+constexpr int kMotionComponents[kComponents] = { Bivector::E1NI, Bivector::E2NI, Bivector::E3NI, Bivector::E12,
+                                                 Bivector::E13,  Bivector::E23,  Bivector::NONI, Bivector::E1NO,
+                                                 Bivector::E2NO, Bivector::E3NO };
+struct MotionPart
+{
+  int first, size;
+  double scale;
+};
+constexpr MotionPart kMotionParts[3] = { { 0, 3, 2.0 }, { 3, 4, 2.0 }, { 7, 3, 1.0 } };
+
 void addMotion(const Bivector& g, double* motion)
 {
-  const double* c = g.c.data();
-  motion[0] += 2.0 * std::sqrt(c[Bivector::E1NI] * c[Bivector::E1NI] + c[Bivector::E2NI] * c[Bivector::E2NI] +
-                               c[Bivector::E3NI] * c[Bivector::E3NI]);
-  motion[1] += 2.0 * std::sqrt(c[Bivector::E12] * c[Bivector::E12] + c[Bivector::E13] * c[Bivector::E13] +
-                               c[Bivector::E23] * c[Bivector::E23] + c[Bivector::NONI] * c[Bivector::NONI]);
-  motion[2] += std::sqrt(c[Bivector::E1NO] * c[Bivector::E1NO] + c[Bivector::E2NO] * c[Bivector::E2NO] +
-                         c[Bivector::E3NO] * c[Bivector::E3NO]);
+  for (int part = 0; part < 3; ++part)
+  {
+    const MotionPart& layout = kMotionParts[part];
+    double squared = 0.0;
+    for (int i = layout.first; i < layout.first + layout.size; ++i)
+    {
+      const double c = g.c[static_cast<std::size_t>(kMotionComponents[i])];
+      squared += c * c;
+    }
+    motion[part] += layout.scale * std::sqrt(squared);
+  }
 }
 
 double binomial(int n, int k)
@@ -319,8 +336,6 @@ void GeneratorTree::computeBudgets(double tolerance)
   // motion bound's three parts, and the norm of each part's trace-free tensor of every degree.
   const int P = this->Degree;
   std::vector<double> parts(static_cast<std::size_t>(this->MomentCount) * 10);
-  static constexpr int kPartFirst[3] = { 0, 3, 7 }, kPartSize[3] = { 3, 4, 3 };
-  static constexpr double kPartScale[3] = { 2.0, 2.0, 1.0 };
   for (Node& node : this->Nodes)
   {
     if (node.moments < 0)
@@ -330,9 +345,6 @@ void GeneratorTree::computeBudgets(double tolerance)
     node.harmonic = static_cast<long>(this->Harmonic.size());
     this->Harmonic.resize(this->Harmonic.size() + 3 * kHarmonicDegrees, 0.0);
     // The move to the center is linear: its matrix from the ten unit bivectors, in the parts' order.
-    static constexpr int kPartOrder[10] = { Bivector::E1NI, Bivector::E2NI, Bivector::E3NI, Bivector::E12,
-                                            Bivector::E13,  Bivector::E23,  Bivector::NONI, Bivector::E1NO,
-                                            Bivector::E2NO, Bivector::E3NO };
     double move[kComponents][10];
     for (std::size_t c = 0; c < kComponents; ++c)
     {
@@ -341,7 +353,7 @@ void GeneratorTree::computeBudgets(double tolerance)
       const Bivector moved = translatedBivector(unit, { -node.center[0], -node.center[1], -node.center[2] });
       for (int k = 0; k < 10; ++k)
       {
-        move[c][k] = moved.c[static_cast<std::size_t>(kPartOrder[k])];
+        move[c][k] = moved.c[static_cast<std::size_t>(kMotionComponents[k])];
       }
     }
     for (std::size_t m = 0; m < static_cast<std::size_t>(this->MomentCount); ++m)
@@ -362,12 +374,12 @@ void GeneratorTree::computeBudgets(double tolerance)
     {
       auto moment = [&](int a, int b, int c) {
         return parts.data() + static_cast<std::size_t>(this->MonomialIndex[static_cast<std::size_t>((a * (P + 1) + b) * (P + 1) + c)]) * 10 +
-          kPartFirst[part];
+          kMotionParts[part].first;
       };
       for (int k = 0; k <= P; ++k)
       {
         this->Harmonic[static_cast<std::size_t>(node.harmonic + part * kHarmonicDegrees + k)] =
-          kPartScale[part] * treeTraceFreeNorm(k, kPartSize[part], moment);
+          kMotionParts[part].scale * treeTraceFreeNorm(k, kMotionParts[part].size, moment);
       }
     }
   }
