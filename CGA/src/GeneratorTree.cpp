@@ -467,46 +467,54 @@ int GeneratorTree::degreeFor(const Node& node, double q, double D, double reach,
     return -1;
   }
   // The generators' motions at l = reach, weighted by their distances' powers (TreeRemainder.h:
-  // a generator at |x_i - c| errs by ((|x_i - c| + r)/(rho + r))^(p+1) times the node's bound),
-  // and the signed moments' norms at l = reach.
+  // a generator at |x_i - c| errs by ((|x_i - c| + r)/(rho + r))^(p+1) times the node's bound).
   const double* spread = this->Spread.data() + node.spread;
   double motions[kSpreadPowers];
   for (int j = 0; j < kSpreadPowers; ++j)
   {
     motions[j] = spread[j] + (spread[kSpreadPowers + j] + spread[2 * kSpreadPowers + j] * reach) * reach;
   }
-  const double* harmonic = this->Harmonic.data() + node.harmonic;
-  double signedMotions[kHarmonicDegrees];
-  for (int k = 0; k <= this->Degree; ++k)
-  {
-    signedMotions[k] =
-      harmonic[k] + (harmonic[kHarmonicDegrees + k] + harmonic[2 * kHarmonicDegrees + k] * reach) * reach;
-  }
   const double extent = node.radius + targetRadius;
   const double a = extent > 0.0 ? node.radius / extent : 1.0;
   const double b = extent > 0.0 ? targetRadius / extent : 0.0;
+  const int P = this->Degree;
+  const TreeSpreadWeights weights(a, b, P + 1);
   // The degree-p truncation errs by at most (1/D) [sum_{p < j <= P} q^j t_j + R_P(q, S) spread_(P+1)]
   // (docs/conventions.md section 3 item 14), t_j the smaller of the absolute bound of the degree-j
   // term, min(j + 1, S) spread_j, and the signed one, sqrt((j + 1) 2^j) times the binomial sum of
   // the trace-free moments' norms (the generators' cancellation); S = sqrt(D/eps) = 1/sqrt(1 - |u|^2).
+  // A node whose tail beyond P alone exceeds its share (most of those tested) costs O(P); one used
+  // at degree p costs O(P^2 - p^2) here (the binomial sums of the degrees above p), less than the
+  // expansion it is used by.
   const double allowed = share * D;
   const double S = this->Epsilon > 0.0 ? std::sqrt(D / this->Epsilon) : HUGE_VAL;
-  const int P = this->Degree;
+  double bound = treeRemainderBound(P, q, S) * weights.moment(motions, P + 1);
+  if (!(bound <= allowed))
+  {
+    return -1;
+  }
+  // The signed moments' norms at l = reach.
+  const double* harmonic = this->Harmonic.data() + node.harmonic;
+  double signedMotions[kHarmonicDegrees];
+  for (int k = 0; k <= P; ++k)
+  {
+    signedMotions[k] =
+      harmonic[k] + (harmonic[kHarmonicDegrees + k] + harmonic[2 * kHarmonicDegrees + k] * reach) * reach;
+  }
   double qPowers[kMaxDegree + 1];
   qPowers[0] = 1.0;
   for (int j = 1; j <= P; ++j)
   {
     qPowers[j] = qPowers[j - 1] * q;
   }
-  double bound = treeRemainderBound(P, q, S) * treeSpreadMoment(motions, P + 1, a, b);
   int degree = -1;
   for (int p = P; p >= 0 && bound <= allowed; --p)
   {
     degree = p;
     if (p > 0)
     {
-      const double absolute = std::min(p + 1.0, S) * treeSpreadMoment(motions, p, a, b);
-      const double cancelling = treeHarmonicTermNorm(p) * treeSpreadMoment(signedMotions, p, a, b);
+      const double absolute = std::min(p + 1.0, S) * weights.moment(motions, p);
+      const double cancelling = treeHarmonicTermNorm(p) * weights.moment(signedMotions, p);
       bound += qPowers[p] * std::min(absolute, cancelling);
     }
   }
