@@ -620,6 +620,28 @@ TEST(GeneratorTree, SpreadMomentIsTheSumOverTheGenerators)
   }
   // Coincident generators (radius 0): a = 0, b = 1 gives the plain sum at every power.
   EXPECT_EQ(cga::detail::treeSpreadMoment(moments, 7, 0.0, 1.0), moments[0]);
+  // One table of the powers of a and b for several powers (degreeFor's form) gives each power's
+  // sum to the bit.
+  const cga::detail::TreeSpreadWeights weights(0.8, 0.2, kPowers - 1);
+  for (int n = 0; n < kPowers; ++n)
+  {
+    EXPECT_EQ(weights.moment(moments, n), cga::detail::treeSpreadMoment(moments, n, 0.8, 0.2)) << "power " << n;
+  }
+}
+
+// The binomial table behind the spread's sums (Pascal's rule) against the product formula in
+// long double: exact integers through n = 56 (below 2^53), the powers the tree takes and more.
+TEST(GeneratorTree, SpreadBinomialsAreExact)
+{
+  for (int n = 0; n <= 56; ++n)
+  {
+    long double binomial = 1.0L;
+    for (int k = 0; k <= n; ++k)
+    {
+      EXPECT_EQ(static_cast<long double>(cga::detail::kTreeBinomials.row(n)[k]), binomial) << "C(" << n << ", " << k << ")";
+      binomial = binomial * (n - k) / (k + 1);
+    }
+  }
 }
 
 // The node's bound with its generators' spread: for generators y_i within rho of a node's center

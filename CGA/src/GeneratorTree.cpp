@@ -25,15 +25,32 @@ constexpr int kComponents = Bivector::Count;
 //   C' = C - E y - d y + (1/2)|y|^2 A - (A.y) y  (docs/conventions.md section 2 item 12, t = -y),
 // |E y + d y| <= sqrt(|E|^2 + d^2) |y| (E y is orthogonal to y), |(1/2)|y|^2 A - (A.y) y| = |y|^2 |A|/2:
 //   |v_p(g)| <= 2 |C| + 2 sqrt(|E|^2 + d^2) |y| + |A| |y|^2.
+// The one layout of the three parts, for addMotion (the generators' absolute motions) and for the
+// signed moments' norms (computeBudgets): the components in the parts' order, and per part its
+// first component there, its size and its factor in the bound.
+constexpr int kMotionComponents[kComponents] = { Bivector::E1NI, Bivector::E2NI, Bivector::E3NI, Bivector::E12,
+                                                 Bivector::E13,  Bivector::E23,  Bivector::NONI, Bivector::E1NO,
+                                                 Bivector::E2NO, Bivector::E3NO };
+struct MotionPart
+{
+  int first, size;
+  double scale;
+};
+constexpr MotionPart kMotionParts[3] = { { 0, 3, 2.0 }, { 3, 4, 2.0 }, { 7, 3, 1.0 } };
+
 void addMotion(const Bivector& g, double* motion)
 {
-  const double* c = g.c.data();
-  motion[0] += 2.0 * std::sqrt(c[Bivector::E1NI] * c[Bivector::E1NI] + c[Bivector::E2NI] * c[Bivector::E2NI] +
-                               c[Bivector::E3NI] * c[Bivector::E3NI]);
-  motion[1] += 2.0 * std::sqrt(c[Bivector::E12] * c[Bivector::E12] + c[Bivector::E13] * c[Bivector::E13] +
-                               c[Bivector::E23] * c[Bivector::E23] + c[Bivector::NONI] * c[Bivector::NONI]);
-  motion[2] += std::sqrt(c[Bivector::E1NO] * c[Bivector::E1NO] + c[Bivector::E2NO] * c[Bivector::E2NO] +
-                         c[Bivector::E3NO] * c[Bivector::E3NO]);
+  for (int part = 0; part < 3; ++part)
+  {
+    const MotionPart& layout = kMotionParts[part];
+    double squared = 0.0;
+    for (int i = layout.first; i < layout.first + layout.size; ++i)
+    {
+      const double c = g.c[static_cast<std::size_t>(kMotionComponents[i])];
+      squared += c * c;
+    }
+    motion[part] += layout.scale * std::sqrt(squared);
+  }
 }
 
 double binomial(int n, int k)
@@ -319,8 +336,6 @@ void GeneratorTree::computeBudgets(double tolerance)
   // motion bound's three parts, and the norm of each part's trace-free tensor of every degree.
   const int P = this->Degree;
   std::vector<double> parts(static_cast<std::size_t>(this->MomentCount) * 10);
-  static constexpr int kPartFirst[3] = { 0, 3, 7 }, kPartSize[3] = { 3, 4, 3 };
-  static constexpr double kPartScale[3] = { 2.0, 2.0, 1.0 };
   for (Node& node : this->Nodes)
   {
     if (node.moments < 0)
@@ -330,9 +345,6 @@ void GeneratorTree::computeBudgets(double tolerance)
     node.harmonic = static_cast<long>(this->Harmonic.size());
     this->Harmonic.resize(this->Harmonic.size() + 3 * kHarmonicDegrees, 0.0);
     // The move to the center is linear: its matrix from the ten unit bivectors, in the parts' order.
-    static constexpr int kPartOrder[10] = { Bivector::E1NI, Bivector::E2NI, Bivector::E3NI, Bivector::E12,
-                                            Bivector::E13,  Bivector::E23,  Bivector::NONI, Bivector::E1NO,
-                                            Bivector::E2NO, Bivector::E3NO };
     double move[kComponents][10];
     for (std::size_t c = 0; c < kComponents; ++c)
     {
@@ -341,7 +353,7 @@ void GeneratorTree::computeBudgets(double tolerance)
       const Bivector moved = translatedBivector(unit, { -node.center[0], -node.center[1], -node.center[2] });
       for (int k = 0; k < 10; ++k)
       {
-        move[c][k] = moved.c[static_cast<std::size_t>(kPartOrder[k])];
+        move[c][k] = moved.c[static_cast<std::size_t>(kMotionComponents[k])];
       }
     }
     for (std::size_t m = 0; m < static_cast<std::size_t>(this->MomentCount); ++m)
@@ -362,12 +374,12 @@ void GeneratorTree::computeBudgets(double tolerance)
     {
       auto moment = [&](int a, int b, int c) {
         return parts.data() + static_cast<std::size_t>(this->MonomialIndex[static_cast<std::size_t>((a * (P + 1) + b) * (P + 1) + c)]) * 10 +
-          kPartFirst[part];
+          kMotionParts[part].first;
       };
       for (int k = 0; k <= P; ++k)
       {
         this->Harmonic[static_cast<std::size_t>(node.harmonic + part * kHarmonicDegrees + k)] =
-          kPartScale[part] * treeTraceFreeNorm(k, kPartSize[part], moment);
+          kMotionParts[part].scale * treeTraceFreeNorm(k, kMotionParts[part].size, moment);
       }
     }
   }
@@ -455,46 +467,54 @@ int GeneratorTree::degreeFor(const Node& node, double q, double D, double reach,
     return -1;
   }
   // The generators' motions at l = reach, weighted by their distances' powers (TreeRemainder.h:
-  // a generator at |x_i - c| errs by ((|x_i - c| + r)/(rho + r))^(p+1) times the node's bound),
-  // and the signed moments' norms at l = reach.
+  // a generator at |x_i - c| errs by ((|x_i - c| + r)/(rho + r))^(p+1) times the node's bound).
   const double* spread = this->Spread.data() + node.spread;
   double motions[kSpreadPowers];
   for (int j = 0; j < kSpreadPowers; ++j)
   {
     motions[j] = spread[j] + (spread[kSpreadPowers + j] + spread[2 * kSpreadPowers + j] * reach) * reach;
   }
-  const double* harmonic = this->Harmonic.data() + node.harmonic;
-  double signedMotions[kHarmonicDegrees];
-  for (int k = 0; k <= this->Degree; ++k)
-  {
-    signedMotions[k] =
-      harmonic[k] + (harmonic[kHarmonicDegrees + k] + harmonic[2 * kHarmonicDegrees + k] * reach) * reach;
-  }
   const double extent = node.radius + targetRadius;
   const double a = extent > 0.0 ? node.radius / extent : 1.0;
   const double b = extent > 0.0 ? targetRadius / extent : 0.0;
+  const int P = this->Degree;
+  const TreeSpreadWeights weights(a, b, P + 1);
   // The degree-p truncation errs by at most (1/D) [sum_{p < j <= P} q^j t_j + R_P(q, S) spread_(P+1)]
   // (docs/conventions.md section 3 item 14), t_j the smaller of the absolute bound of the degree-j
   // term, min(j + 1, S) spread_j, and the signed one, sqrt((j + 1) 2^j) times the binomial sum of
   // the trace-free moments' norms (the generators' cancellation); S = sqrt(D/eps) = 1/sqrt(1 - |u|^2).
+  // A node whose tail beyond P alone exceeds its share (most of those tested) costs O(P); one used
+  // at degree p costs O(P^2 - p^2) here (the binomial sums of the degrees above p), less than the
+  // expansion it is used by.
   const double allowed = share * D;
   const double S = this->Epsilon > 0.0 ? std::sqrt(D / this->Epsilon) : HUGE_VAL;
-  const int P = this->Degree;
+  double bound = treeRemainderBound(P, q, S) * weights.moment(motions, P + 1);
+  if (!(bound <= allowed))
+  {
+    return -1;
+  }
+  // The signed moments' norms at l = reach.
+  const double* harmonic = this->Harmonic.data() + node.harmonic;
+  double signedMotions[kHarmonicDegrees];
+  for (int k = 0; k <= P; ++k)
+  {
+    signedMotions[k] =
+      harmonic[k] + (harmonic[kHarmonicDegrees + k] + harmonic[2 * kHarmonicDegrees + k] * reach) * reach;
+  }
   double qPowers[kMaxDegree + 1];
   qPowers[0] = 1.0;
   for (int j = 1; j <= P; ++j)
   {
     qPowers[j] = qPowers[j - 1] * q;
   }
-  double bound = treeRemainderBound(P, q, S) * treeSpreadMoment(motions, P + 1, a, b);
   int degree = -1;
   for (int p = P; p >= 0 && bound <= allowed; --p)
   {
     degree = p;
     if (p > 0)
     {
-      const double absolute = std::min(p + 1.0, S) * treeSpreadMoment(motions, p, a, b);
-      const double cancelling = treeHarmonicTermNorm(p) * treeSpreadMoment(signedMotions, p, a, b);
+      const double absolute = std::min(p + 1.0, S) * weights.moment(motions, p);
+      const double cancelling = treeHarmonicTermNorm(p) * weights.moment(signedMotions, p);
       bound += qPowers[p] * std::min(absolute, cancelling);
     }
   }

@@ -33,24 +33,64 @@ inline double treeRemainderBound(int degree, double q, double S)
 /// treeSpreadMoment(moments, p + 1, a, b) instead of times sum_i m_i.
 /// power <= kMaxSpreadPower.
 constexpr int kMaxSpreadPower = 64;
+
+/// C(n, k) for n <= kMaxSpreadPower, row n from n (n + 1)/2 (Pascal's rule: exact integers while
+/// they stay below 2^53, n <= 56; the tree takes n <= 22).
+struct TreeBinomials
+{
+  double values[(kMaxSpreadPower + 1) * (kMaxSpreadPower + 2) / 2] = {};
+  constexpr TreeBinomials()
+  {
+    for (int n = 0; n <= kMaxSpreadPower; ++n)
+    {
+      const int row = n * (n + 1) / 2, above = (n - 1) * n / 2;
+      values[row] = 1.0;
+      values[row + n] = 1.0;
+      for (int k = 1; k < n; ++k)
+      {
+        values[row + k] = values[above + k - 1] + values[above + k];
+      }
+    }
+  }
+  constexpr const double* row(int n) const { return values + n * (n + 1) / 2; }
+};
+inline constexpr TreeBinomials kTreeBinomials{};
+
+/// treeSpreadMoment for one (a, b) at several powers: the powers of a and b tabulated once
+/// (repeated products from 1; b = 0 gives 0^0 = 1), each power's sum then power + 1 terms of
+/// C(power, k) a^k b^(power - k) moments[k], summed from k = 0.
+class TreeSpreadWeights
+{
+public:
+  /// powers <= kMaxSpreadPower: the largest power moment() is asked for.
+  TreeSpreadWeights(double a, double b, int powers)
+  {
+    this->APowers[0] = 1.0;
+    this->BPowers[0] = 1.0;
+    for (int j = 1; j <= powers; ++j)
+    {
+      this->APowers[j] = this->APowers[j - 1] * a;
+      this->BPowers[j] = this->BPowers[j - 1] * b;
+    }
+  }
+  double moment(const double* moments, int power) const
+  {
+    const double* binomial = kTreeBinomials.row(power);
+    double sum = 0.0;
+    for (int k = 0; k <= power; ++k)
+    {
+      sum += binomial[k] * this->APowers[k] * this->BPowers[power - k] * moments[k];
+    }
+    return sum;
+  }
+
+private:
+  double APowers[kMaxSpreadPower + 1], BPowers[kMaxSpreadPower + 1];
+};
+
 inline double treeSpreadMoment(const double* moments, int power, double a, double b)
 {
-  // b^j by repeated products from 1 (b = 0 gives 0^0 = 1), tabulated once.
-  double bPowers[kMaxSpreadPower + 1];
-  bPowers[0] = 1.0;
-  for (int j = 1; j <= power; ++j)
-  {
-    bPowers[j] = bPowers[j - 1] * b;
-  }
-  double sum = 0.0, binomial = 1.0, aPower = 1.0;
-  for (int k = 0; k <= power; ++k)
-  {
-    const double bPower = bPowers[power - k];
-    sum += binomial * aPower * bPower * moments[k];
-    binomial = binomial * (power - k) / (k + 1);
-    aPower *= a;
-  }
-  return sum;
+  return TreeSpreadWeights(a, b, power).moment(moments, power);
 }
 
 /// The norm of the degree-j term's tensor: the term of the series above is
