@@ -15,7 +15,6 @@
 #include "vtkGenericCell.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -578,20 +577,16 @@ int vtkPointPairFitFilter::RequestData(
   termination->InsertNextValue(this->TerminationReason);
   fieldData->AddArray(termination);
 
-  // Outputs 1 and 2: the fitted generators as points and as a table of generator rows.
-  vtkBoostedGeneratorGlyphs glyphs(vtkBoostedGeneratorGlyphs::KindAndPitch);
-  glyphs.Add(fitted);
-  glyphs.Write(generatorsOutput);
-  if (this->FitKinds)
+  // Outputs 1 and 2: the fitted generators as points and as a table of generator rows. The
+  // points are written anew only when the fitted generators (and, with FitKinds, which kinds were
+  // identified) differ from the last update's, to the bit: the cache compares what it would write.
+  vtkBoostedGeneratorGlyphs glyphs(vtkBoostedGeneratorGlyphs::KindAndPitch |
+    (this->FitKinds ? vtkBoostedGeneratorGlyphs::KindIdentified : 0));
+  for (std::size_t g = 0; g < fitted.size(); ++g)
   {
-    vtkNew<vtkIntArray> kindIdentified;
-    kindIdentified->SetName("KindIdentified");
-    for (const bool known : identified)
-    {
-      kindIdentified->InsertNextValue(known ? 1 : 0);
-    }
-    generatorsOutput->GetPointData()->AddArray(kindIdentified);
+    glyphs.Add(fitted[g], g < identified.size() && identified[g]);
   }
+  glyphs.Write(generatorsOutput, this->GeneratorGlyphs);
   const char* columns[vtkBoostedGeneratorRows::NumberOfValues] = { "X", "Y", "Z", "DirectionX",
     "DirectionY", "DirectionZ", "Weight", "Kind", "Pitch" };
   for (int c = 0; c < vtkBoostedGeneratorRows::NumberOfValues; ++c)

@@ -6,6 +6,7 @@
 
 #include "EventCounter.h"
 #include "FitTestSupport.h"
+#include "GeneratorGlyphCacheChecks.h"
 #include "ProgressLog.h"
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -542,3 +543,45 @@ TEST(PointPairFitFilter, BadInputGivesAClearErrorAndEmptyOutputs)
   }
 }
 } // namespace
+
+TEST(PointPairFitFilter, TheGeneratorsOutputIsBuiltAnewOnlyWhenTheFittedGeneratorsChange)
+{
+  // The glyphs are the fitted generators. The output's precision changes the fitted mesh, not
+  // the fit; the target does (the locations are held: the fit changes the weights only).
+  vtkSmartPointer<vtkPolyData> mesh = unitSphere(12, 6);
+  const std::vector<Row> start = { { { 0.0, 0.0, 1.5, 0.0, 0.0, 1.0, 0.0, 0, 0 } },
+    { { 1.4, 0.3, 0.0, -1.0, 0.2, 0.0, 0.0, 1, 0 } } };
+  auto target = [&](double weight) {
+    std::vector<Row> truth = start;
+    truth[0].values[6] = weight;
+    truth[1].values[6] = 0.5 * weight;
+    return deformed(mesh, truth);
+  };
+  vtkSmartPointer<vtkPolyData> first = target(0.25), second = target(0.3);
+  ExpectGeneratorGlyphsCached(1,
+    [&] {
+      auto fit = vtkSmartPointer<vtkPointPairFitFilter>::New();
+      fit->SetInputData(mesh);
+      fit->SetTargetData(first);
+      addRows(fit.GetPointer(), start);
+      return fit;
+    },
+    [](vtkPointPairFitFilter* fit) {
+      fit->SetOutputPointsPrecision(vtkPointPairFitFilter::SINGLE_PRECISION);
+    },
+    [&](vtkPointPairFitFilter* fit) { fit->SetTargetData(second); });
+  // With FitKinds the output has KindIdentified too, which is not the cache's.
+  ExpectGeneratorGlyphsCached(1,
+    [&] {
+      auto fit = vtkSmartPointer<vtkPointPairFitFilter>::New();
+      fit->SetInputData(mesh);
+      fit->SetTargetData(first);
+      addRows(fit.GetPointer(), { start[0] });
+      fit->FitKindsOn();
+      return fit;
+    },
+    [](vtkPointPairFitFilter* fit) {
+      fit->SetOutputPointsPrecision(vtkPointPairFitFilter::SINGLE_PRECISION);
+    },
+    [&](vtkPointPairFitFilter* fit) { fit->SetTargetData(second); });
+}
