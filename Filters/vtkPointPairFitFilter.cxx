@@ -366,7 +366,8 @@ int vtkPointPairFitFilter::RequestData(
     w = std::sqrt(w / total);
   }
 
-  // The unknowns and their bounds. A location or direction that may not change is not fitted.
+  // The unknowns and their bounds. A weight, location, direction or pitch that may not change is
+  // not fitted (Ceres refuses a bound whose two ends are equal).
   double bounds[6];
   mesh->GetBounds(bounds);
   const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
@@ -375,15 +376,15 @@ int vtkPointPairFitFilter::RequestData(
   data.LocationChange = this->MaximumLocationChange * diagonal;
   data.DirectionChange = this->MaximumDirectionChange;
   data.PitchChange = this->MaximumPitchChange * diagonal;
-  data.Fitted.weight = this->FitWeights;
+  data.Fitted.weight = this->FitWeights && this->WeightRange[0] < this->WeightRange[1];
   data.Fitted.location = this->FitLocations && data.LocationChange > 0.0;
   data.Fitted.direction = this->FitDirections && data.DirectionChange > 0.0;
   data.Fitted.pitch = this->FitPitches && data.PitchChange > 0.0;
   if (data.Fitted.perGenerator() == 0)
   {
-    vtkErrorMacro(<< "nothing to fit: the locations, directions and pitches may not change "
-                     "(MaximumLocationChange and MaximumPitchChange times the mesh's diagonal, "
-                     "MaximumDirectionChange)");
+    vtkErrorMacro(<< "nothing to fit: the weights, locations, directions and pitches may not "
+                     "change (WeightRange of one value, MaximumLocationChange and "
+                     "MaximumPitchChange times the mesh's diagonal, MaximumDirectionChange)");
     return 1;
   }
   data.WeightRange[0] = this->WeightRange[0];

@@ -165,7 +165,7 @@ public:
 
   ///@{
   /// Bounds of the unknowns: every fitted weight within WeightRange (default [-1000, 1000], min <=
-  /// max); every location coordinate within MaximumLocationChange (default 0.25) times the mesh's
+  /// max; min = max holds the weights, as a change of 0 holds the others); every location coordinate within MaximumLocationChange (default 0.25) times the mesh's
   /// bounding-box diagonal of its initial value; every direction component within
   /// MaximumDirectionChange (default 1) times the initial direction's length of its initial value;
   /// every twist's pitch (a length per radian) within MaximumPitchChange (default 1) times the

@@ -351,6 +351,24 @@ TEST(PointPairFitFilter, WeightRangeBoundsTheWeights)
   EXPECT_EQ(table->GetValueByName(0, "Weight").ToDouble(), 0.1); // on the bound
   EXPECT_GT(fit->GetFinalRMS(), 1e-3);
   EXPECT_LT(fit->GetFinalRMS(), fit->GetInitialRMS());
+
+  // A range of one value (min <= max) holds the weights, as MaximumLocationChange 0 holds the
+  // locations: Ceres refuses a bound whose ends are equal ("infeasible bound"), so they are not
+  // unknowns then (found by hand; before, the fit failed with Ceres's message). The location is
+  // still fitted: back to the generator that made the target.
+  fit->SetGenerator(0, 0.02, -0.01, 1.34, 0.0, 0.0, 1.0, 0.3);
+  fit->SetWeightRange(0.3, 0.3);
+  fit->FitLocationsOn();
+  EventCounter events(fit);
+  fit->Update();
+  EXPECT_EQ(events.errors, 0) << events.lastError;
+  table = vtkTable::SafeDownCast(fit->GetOutputDataObject(2));
+  ASSERT_EQ(table->GetNumberOfRows(), 1);
+  EXPECT_EQ(table->GetValueByName(0, "Weight").ToDouble(), 0.3);
+  EXPECT_NEAR(table->GetValueByName(0, "X").ToDouble(), 0.0, 1e-6);
+  EXPECT_NEAR(table->GetValueByName(0, "Y").ToDouble(), 0.0, 1e-6);
+  EXPECT_NEAR(table->GetValueByName(0, "Z").ToDouble(), 1.3, 1e-6);
+  EXPECT_LE(fit->GetFinalRMS(), 1e-8);
 }
 
 TEST(PointPairFitFilter, PointWeightsSelectThePointsThatCount)
@@ -477,6 +495,8 @@ TEST(PointPairFitFilter, BadInputGivesAClearErrorAndEmptyOutputs)
       },
       "no generators to fit" },
     { "nothing to fit", [&](vtkPointPairFitFilter* f) { f->FitWeightsOff(); }, "nothing to fit" },
+    { "a weight range of one value, nothing else to fit",
+      [&](vtkPointPairFitFilter* f) { f->SetWeightRange(0.0, 0.0); }, "WeightRange of one value" },
     { "surface without cells",
       [&](vtkPointPairFitFilter* f) {
         f->SetTargetData(cloud);
