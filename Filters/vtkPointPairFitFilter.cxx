@@ -61,8 +61,12 @@ bool allFinite(vtkPoints* points)
 // a finite location, weight and bivector).
 bool usable(const cga::GeneratorParameters& g)
 {
+  // A pitch is read by twists only, but any generator may become a twist (FitKinds) and the
+  // outputs hold every fitted generator's pitch: a non-finite one makes it unusable whatever its
+  // kind (found by the property fuzz, seed 424242 trial 12186: a translation's infinite pitch
+  // in the Generator Table).
   cga::GeneratorDerivative derivative;
-  if (!cga::isFinite(g.location) || !std::isfinite(g.weight) ||
+  if (!cga::isFinite(g.location) || !std::isfinite(g.weight) || !std::isfinite(g.pitch) ||
     !cga::generatorDerivative(g, derivative))
   {
     return false;
@@ -251,7 +255,7 @@ int vtkPointPairFitFilter::RequestData(
   if (start.empty())
   {
     vtkErrorMacro(<< "no generators to fit: give initial generators (the list or the Generators "
-                     "input) with a finite location and weight and a non-zero direction ("
+                     "input) with a finite location, weight and pitch and a non-zero direction ("
                   << given.size() << " given)");
     return 1;
   }
@@ -259,7 +263,7 @@ int vtkPointPairFitFilter::RequestData(
   {
     vtkWarningMacro(<< given.size() - start.size() << " of " << given.size()
                     << " generators were ignored: their direction is zero, or their location, "
-                       "direction, weight or (a twist's) pitch is not finite");
+                       "direction, weight or pitch is not finite");
   }
   for (std::size_t g = 0; g < start.size(); ++g)
   {

@@ -44,8 +44,9 @@
  *
  * Generators come as for vtkPointPairDeformationFilter: the list (AddGenerator ... , the ParaView
  * table) and the optional Generators input (the same arrays and *ArrayName properties), summed.
- * Generators with a zero or non-finite direction, location or weight are ignored with a warning
- * (and left out of the outputs).
+ * Generators with a zero or non-finite direction, location or weight, or a non-finite pitch
+ * (whatever their kind: FitKinds may make any of them a twist), are ignored with a warning (and
+ * left out of the outputs).
  *
  * Outputs: 0, the mesh deformed by the fitted generators (vtkPointPairDeformationFilter's output:
  * same topology and arrays, "Displacement", OutputPointsPrecision) with the point array

@@ -371,6 +371,40 @@ TEST(PointPairFitFilter, WeightRangeBoundsTheWeights)
   EXPECT_LE(fit->GetFinalRMS(), 1e-8);
 }
 
+TEST(PointPairFitFilter, AGeneratorWithANonFinitePitchIsIgnoredWhateverItsKind)
+{
+  // A translation reads no pitch, but with FitKinds it may become a twist, and the Generator
+  // Table holds every pitch: its infinite pitch makes it unusable (found by the property fuzz,
+  // seed 424242 trial 12186: the table's Pitch held inf). The point pair alone is fitted.
+  vtkSmartPointer<vtkPolyData> mesh = unitSphere(12, 6);
+  vtkSmartPointer<vtkPolyData> target =
+    deformed(mesh, { { { 0.0, 0.0, 1.3, 0.0, 0.0, 1.0, 0.3, 0, 0 } } });
+  for (bool kinds : { false, true })
+  {
+    vtkNew<vtkPointPairFitFilter> fit;
+    fit->SetInputData(mesh);
+    fit->SetTargetData(target);
+    fit->AddGenerator(0.0, 0.0, 1.3, 0.0, 0.0, 1.0, 0.0);
+    fit->AddGenerator(1.4, 0.0, 0.0, 1.0, 0.0, 0.0, 0.2, vtkPointPairFitFilter::TRANSLATION,
+      std::numeric_limits<double>::infinity());
+    fit->SetFitKinds(kinds);
+    EventCounter events(fit);
+    fit->Update();
+    EXPECT_EQ(events.errors, 0) << events.lastError;
+    EXPECT_NE(events.lastWarning.find("1 of 2 generators were ignored"), std::string::npos)
+      << events.lastWarning;
+    vtkTable* table = vtkTable::SafeDownCast(fit->GetOutputDataObject(2));
+    ASSERT_EQ(table->GetNumberOfRows(), 1) << "FitKinds " << kinds;
+    for (vtkIdType c = 0; c < table->GetNumberOfColumns(); ++c)
+    {
+      EXPECT_TRUE(std::isfinite(table->GetValue(0, c).ToDouble())) << table->GetColumnName(c);
+    }
+    EXPECT_EQ(vtkPolyData::SafeDownCast(fit->GetOutputDataObject(1))->GetNumberOfPoints(), 1);
+    EXPECT_EQ(table->GetValueByName(0, "Kind").ToDouble(), 0.0);
+    EXPECT_NEAR(table->GetValueByName(0, "Weight").ToDouble(), 0.3, 1e-6);
+  }
+}
+
 TEST(PointPairFitFilter, PointWeightsSelectThePointsThatCount)
 {
   // Half of the target is the known deformation, the other half is far off; weighting the other
