@@ -18,7 +18,7 @@
 #include <cstring>
 
 void vtkBoostedGeneratorGlyphs::Add(const cga::Vec3& location, const cga::Vec3& direction,
-  double weight, int kind, double pitch, double kappaU, double kappaV)
+  double weight, int kind, double pitch, double kappaU, double kappaV, bool identified)
 {
   const double values[] = { location.x, location.y, location.z, direction.x, direction.y,
     direction.z, weight, pitch, kappaU, kappaV };
@@ -29,13 +29,14 @@ void vtkBoostedGeneratorGlyphs::Add(const cga::Vec3& location, const cga::Vec3& 
       return;
     }
   }
-  this->Points.push_back({ location, direction, weight, pitch, kappaU, kappaV, kind });
+  this->Points.push_back(
+    { location, direction, weight, pitch, kappaU, kappaV, kind, identified ? 1 : 0 });
 }
 
-void vtkBoostedGeneratorGlyphs::Add(const cga::GeneratorParameters& generator)
+void vtkBoostedGeneratorGlyphs::Add(const cga::GeneratorParameters& generator, bool identified)
 {
   this->Add(generator.location, generator.direction, generator.weight,
-    static_cast<int>(generator.kind), generator.pitch);
+    static_cast<int>(generator.kind), generator.pitch, 0.0, 0.0, identified);
 }
 
 void vtkBoostedGeneratorGlyphs::Add(const std::vector<cga::GeneratorParameters>& generators)
@@ -55,7 +56,7 @@ void vtkBoostedGeneratorGlyphs::Write(vtkPolyData* output) const
   points->SetNumberOfPoints(count);
   vtkNew<vtkCellArray> vertices;
   vtkNew<vtkDoubleArray> directions, weights, pitches, curvatures;
-  vtkNew<vtkIntArray> kinds;
+  vtkNew<vtkIntArray> kinds, identified;
   directions->SetName("Direction");
   directions->SetNumberOfComponents(3);
   directions->SetNumberOfTuples(count);
@@ -68,6 +69,8 @@ void vtkBoostedGeneratorGlyphs::Write(vtkPolyData* output) const
   curvatures->SetName("Curvature");
   curvatures->SetNumberOfComponents(2);
   curvatures->SetNumberOfTuples(count);
+  identified->SetName("KindIdentified");
+  identified->SetNumberOfTuples(count);
   for (vtkIdType i = 0; i < count; ++i)
   {
     const Point& p = this->Points[static_cast<std::size_t>(i)];
@@ -78,6 +81,7 @@ void vtkBoostedGeneratorGlyphs::Write(vtkPolyData* output) const
     kinds->SetValue(i, p.kind);
     pitches->SetValue(i, p.pitch);
     curvatures->SetTuple2(i, p.kappaU, p.kappaV);
+    identified->SetValue(i, p.identified);
   }
   output->SetPoints(points);
   output->SetVerts(vertices);
@@ -92,6 +96,10 @@ void vtkBoostedGeneratorGlyphs::Write(vtkPolyData* output) const
   if (this->Columns & Curvature)
   {
     pointData->AddArray(curvatures);
+  }
+  if (this->Columns & KindIdentified)
+  {
+    pointData->AddArray(identified);
   }
 }
 
@@ -134,11 +142,14 @@ bool vtkBoostedGeneratorGlyphs::IsWrittenIn(vtkPolyData* data) const
   auto* kinds = vtkIntArray::SafeDownCast(pointData->GetAbstractArray("Kind"));
   auto* pitches = vtkDoubleArray::SafeDownCast(pointData->GetAbstractArray("Pitch"));
   auto* curvatures = vtkDoubleArray::SafeDownCast(pointData->GetAbstractArray("Curvature"));
+  auto* identified = vtkIntArray::SafeDownCast(pointData->GetAbstractArray("KindIdentified"));
   const bool kindAndPitch = (this->Columns & KindAndPitch) != 0;
   const bool curvature = (this->Columns & Curvature) != 0;
+  const bool kindIdentified = (this->Columns & KindIdentified) != 0;
   if (!points || !directions || !weights || (kindAndPitch && !(kinds && pitches)) ||
-    (curvature && !curvatures) ||
-    pointData->GetNumberOfArrays() != 2 + (kindAndPitch ? 2 : 0) + (curvature ? 1 : 0) ||
+    (curvature && !curvatures) || (kindIdentified && !identified) ||
+    pointData->GetNumberOfArrays() !=
+      2 + (kindAndPitch ? 2 : 0) + (curvature ? 1 : 0) + (kindIdentified ? 1 : 0) ||
     data->GetCellData()->GetNumberOfArrays() != 0 || data->GetFieldData()->GetNumberOfArrays() != 0)
   {
     return false;
@@ -157,7 +168,8 @@ bool vtkBoostedGeneratorGlyphs::IsWrittenIn(vtkPolyData* data) const
     }
     if (!sameBits(weights, i, 0, p.weight) ||
       (kindAndPitch && !(sameBits(kinds, i, 0, p.kind) && sameBits(pitches, i, 0, p.pitch))) ||
-      (curvature && !(sameBits(curvatures, i, 0, p.kappaU) && sameBits(curvatures, i, 1, p.kappaV))))
+      (curvature && !(sameBits(curvatures, i, 0, p.kappaU) && sameBits(curvatures, i, 1, p.kappaV))) ||
+      (kindIdentified && !sameBits(identified, i, 0, p.identified)))
     {
       return false;
     }

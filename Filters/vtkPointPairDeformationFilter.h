@@ -75,10 +75,8 @@
 #include "vtkDataArraySelection.h"       // for the transformed arrays
 #include "vtkNew.h"                      // for the transformed arrays
 #include "vtkPointPairFieldAlgorithm.h"
-#include "vtkSmartPointer.h"             // for the generators' output
 
 class vtkDataSet;
-class vtkPolyData;
 namespace cga
 {
 class PointPairField;
@@ -178,10 +176,6 @@ private:
   /// false after an abort or an error (the output then empty).
   bool Deform(
     vtkDataSet* input, const cga::PointPairField& field, double strength, vtkPointSet* output);
-
-  /// The "Generators" output of the last update, which the next one shares as long as the
-  /// generators stay the same (vtkBoostedGeneratorGlyphs::Write with a cache).
-  vtkSmartPointer<vtkPolyData> GeneratorGlyphs;
 
   vtkPointPairDeformationFilter(const vtkPointPairDeformationFilter&) = delete;
   void operator=(const vtkPointPairDeformationFilter&) = delete;

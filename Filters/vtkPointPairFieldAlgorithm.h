@@ -30,11 +30,13 @@
 
 #include "BoostedSurfacesFiltersModule.h" // for export macro
 #include "vtkPointSetAlgorithm.h"
+#include "vtkSmartPointer.h" // for the Generators output's cache
 
 #include <memory> // for the generator list
 #include <vector> // for the generators read
 
 class vtkBoostedRowList;
+class vtkPolyData;
 namespace cga
 {
 struct GeneratorParameters;
@@ -187,6 +189,11 @@ protected:
   double Epsilon = 0.01;
   int ExponentialRule = EXACT;
   int OutputPointsPrecision = DEFAULT_PRECISION;
+
+  /// The "Generators" output of the last update, which the next one shares as long as the
+  /// generators written there (the deformation filter's as used, the fit's fitted ones) stay the
+  /// same (vtkBoostedGeneratorGlyphs::Write with a cache).
+  vtkSmartPointer<vtkPolyData> GeneratorGlyphs;
 
 private:
   const int GeneratorsPort;

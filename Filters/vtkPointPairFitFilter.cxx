@@ -15,7 +15,6 @@
 #include "vtkGenericCell.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -62,8 +61,12 @@ bool allFinite(vtkPoints* points)
 // a finite location, weight and bivector).
 bool usable(const cga::GeneratorParameters& g)
 {
+  // A pitch is read by twists only, but any generator may become a twist (FitKinds) and the
+  // outputs hold every fitted generator's pitch: a non-finite one makes it unusable whatever its
+  // kind (found by the property fuzz, seed 424242 trial 12186: a translation's infinite pitch
+  // in the Generator Table).
   cga::GeneratorDerivative derivative;
-  if (!cga::isFinite(g.location) || !std::isfinite(g.weight) ||
+  if (!cga::isFinite(g.location) || !std::isfinite(g.weight) || !std::isfinite(g.pitch) ||
     !cga::generatorDerivative(g, derivative))
   {
     return false;
@@ -252,7 +255,7 @@ int vtkPointPairFitFilter::RequestData(
   if (start.empty())
   {
     vtkErrorMacro(<< "no generators to fit: give initial generators (the list or the Generators "
-                     "input) with a finite location and weight and a non-zero direction ("
+                     "input) with a finite location, weight and pitch and a non-zero direction ("
                   << given.size() << " given)");
     return 1;
   }
@@ -260,7 +263,7 @@ int vtkPointPairFitFilter::RequestData(
   {
     vtkWarningMacro(<< given.size() - start.size() << " of " << given.size()
                     << " generators were ignored: their direction is zero, or their location, "
-                       "direction, weight or (a twist's) pitch is not finite");
+                       "direction, weight or pitch is not finite");
   }
   for (std::size_t g = 0; g < start.size(); ++g)
   {
@@ -367,7 +370,8 @@ int vtkPointPairFitFilter::RequestData(
     w = std::sqrt(w / total);
   }
 
-  // The unknowns and their bounds. A location or direction that may not change is not fitted.
+  // The unknowns and their bounds. A weight, location, direction or pitch that may not change is
+  // not fitted (Ceres refuses a bound whose two ends are equal).
   double bounds[6];
   mesh->GetBounds(bounds);
   const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
@@ -376,15 +380,15 @@ int vtkPointPairFitFilter::RequestData(
   data.LocationChange = this->MaximumLocationChange * diagonal;
   data.DirectionChange = this->MaximumDirectionChange;
   data.PitchChange = this->MaximumPitchChange * diagonal;
-  data.Fitted.weight = this->FitWeights;
+  data.Fitted.weight = this->FitWeights && this->WeightRange[0] < this->WeightRange[1];
   data.Fitted.location = this->FitLocations && data.LocationChange > 0.0;
   data.Fitted.direction = this->FitDirections && data.DirectionChange > 0.0;
   data.Fitted.pitch = this->FitPitches && data.PitchChange > 0.0;
   if (data.Fitted.perGenerator() == 0)
   {
-    vtkErrorMacro(<< "nothing to fit: the locations, directions and pitches may not change "
-                     "(MaximumLocationChange and MaximumPitchChange times the mesh's diagonal, "
-                     "MaximumDirectionChange)");
+    vtkErrorMacro(<< "nothing to fit: the weights, locations, directions and pitches may not "
+                     "change (WeightRange of one value, MaximumLocationChange and "
+                     "MaximumPitchChange times the mesh's diagonal, MaximumDirectionChange)");
     return 1;
   }
   data.WeightRange[0] = this->WeightRange[0];
@@ -578,20 +582,16 @@ int vtkPointPairFitFilter::RequestData(
   termination->InsertNextValue(this->TerminationReason);
   fieldData->AddArray(termination);
 
-  // Outputs 1 and 2: the fitted generators as points and as a table of generator rows.
-  vtkBoostedGeneratorGlyphs glyphs(vtkBoostedGeneratorGlyphs::KindAndPitch);
-  glyphs.Add(fitted);
-  glyphs.Write(generatorsOutput);
-  if (this->FitKinds)
+  // Outputs 1 and 2: the fitted generators as points and as a table of generator rows. The
+  // points are written anew only when the fitted generators (and, with FitKinds, which kinds were
+  // identified) differ from the last update's, to the bit: the cache compares what it would write.
+  vtkBoostedGeneratorGlyphs glyphs(vtkBoostedGeneratorGlyphs::KindAndPitch |
+    (this->FitKinds ? vtkBoostedGeneratorGlyphs::KindIdentified : 0));
+  for (std::size_t g = 0; g < fitted.size(); ++g)
   {
-    vtkNew<vtkIntArray> kindIdentified;
-    kindIdentified->SetName("KindIdentified");
-    for (const bool known : identified)
-    {
-      kindIdentified->InsertNextValue(known ? 1 : 0);
-    }
-    generatorsOutput->GetPointData()->AddArray(kindIdentified);
+    glyphs.Add(fitted[g], g < identified.size() && identified[g]);
   }
+  glyphs.Write(generatorsOutput, this->GeneratorGlyphs);
   const char* columns[vtkBoostedGeneratorRows::NumberOfValues] = { "X", "Y", "Z", "DirectionX",
     "DirectionY", "DirectionZ", "Weight", "Kind", "Pitch" };
   for (int c = 0; c < vtkBoostedGeneratorRows::NumberOfValues; ++c)

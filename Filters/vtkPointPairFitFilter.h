@@ -44,8 +44,9 @@
  *
  * Generators come as for vtkPointPairDeformationFilter: the list (AddGenerator ... , the ParaView
  * table) and the optional Generators input (the same arrays and *ArrayName properties), summed.
- * Generators with a zero or non-finite direction, location or weight are ignored with a warning
- * (and left out of the outputs).
+ * Generators with a zero or non-finite direction, location or weight, or a non-finite pitch
+ * (whatever their kind: FitKinds may make any of them a twist), are ignored with a warning (and
+ * left out of the outputs).
  *
  * Outputs: 0, the mesh deformed by the fitted generators (vtkPointPairDeformationFilter's output:
  * same topology and arrays, "Displacement", OutputPointsPrecision) with the point array
@@ -165,7 +166,7 @@ public:
 
   ///@{
   /// Bounds of the unknowns: every fitted weight within WeightRange (default [-1000, 1000], min <=
-  /// max); every location coordinate within MaximumLocationChange (default 0.25) times the mesh's
+  /// max; min = max holds the weights, as a change of 0 holds the others); every location coordinate within MaximumLocationChange (default 0.25) times the mesh's
   /// bounding-box diagonal of its initial value; every direction component within
   /// MaximumDirectionChange (default 1) times the initial direction's length of its initial value;
   /// every twist's pitch (a length per radian) within MaximumPitchChange (default 1) times the

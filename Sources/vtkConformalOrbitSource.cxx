@@ -243,7 +243,7 @@ int vtkConformalOrbitSource::RequestData(
   auto writeGenerators = [&] {
     if (vtkBoostedGeneratorGlyphs::OnFirstPiece(outputVector))
     {
-      glyphs.Write(vtkPolyData::GetData(outputVector, 2));
+      glyphs.Write(vtkPolyData::GetData(outputVector, 2), this->GeneratorGlyphs);
     }
   };
   if (problem.empty())

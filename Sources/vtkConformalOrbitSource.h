@@ -63,10 +63,12 @@
 
 #include "BoostedSurfacesSourcesModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h" // for the Generators output's cache
 
 #include <memory> // for the lists
 
 class vtkBoostedRowList;
+class vtkPolyData;
 class vtkPointSet;
 
 class BOOSTEDSURFACESSOURCES_EXPORT vtkConformalOrbitSource : public vtkPolyDataAlgorithm
@@ -268,6 +270,11 @@ protected:
 private:
   /// Both outputs get the requested time (vtkBoostedTimeSweep::StampTime).
   void StampTime(vtkInformationVector* outputVector);
+
+  /// The "Generators" output of the last update, which the next one shares while the generators
+  /// (rows or core circles) it holds stay the same to the bit (vtkBoostedGeneratorGlyphs::Write
+  /// with a cache).
+  vtkSmartPointer<vtkPolyData> GeneratorGlyphs;
 
   vtkConformalOrbitSource(const vtkConformalOrbitSource&) = delete;
   void operator=(const vtkConformalOrbitSource&) = delete;

@@ -206,7 +206,7 @@ int vtkCurvaturePatchSource::RequestData(
         glyphs.Add(frame.origin, frame.normal, 1.0, 0, 0.0, patch.kappaU,
           this->Method == BENT_LINE ? 0.0 : patch.kappaV);
     }
-    glyphs.Write(vtkPolyData::GetData(outputVector, 1));
+    glyphs.Write(vtkPolyData::GetData(outputVector, 1), this->GeneratorGlyphs);
   }
   for (int port = 0; port < this->GetNumberOfOutputPorts(); ++port)
   {

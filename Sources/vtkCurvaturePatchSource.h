@@ -55,10 +55,12 @@
 
 #include "BoostedSurfacesSourcesModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h" // for the Generators output's cache
 
 #include <memory> // for the control point list
 
 class vtkBoostedRowList;
+class vtkPolyData;
 
 class BOOSTEDSURFACESSOURCES_EXPORT vtkCurvaturePatchSource : public vtkPolyDataAlgorithm
 {
@@ -275,6 +277,11 @@ protected:
   int NumberOfTimeSteps = 0;
 
 private:
+  /// The "Generators" output of the last update, which the next one shares while the control
+  /// points, corners or curvatures it holds stay the same to the bit
+  /// (vtkBoostedGeneratorGlyphs::Write with a cache).
+  vtkSmartPointer<vtkPolyData> GeneratorGlyphs;
+
   vtkCurvaturePatchSource(const vtkCurvaturePatchSource&) = delete;
   void operator=(const vtkCurvaturePatchSource&) = delete;
 };

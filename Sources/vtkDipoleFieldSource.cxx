@@ -451,7 +451,7 @@ void vtkDipoleFieldSource::WriteGenerators(vtkInformationVector* outputVector)
       generator.weight *= weightScale;
       glyphs.Add(generator);
     }
-    glyphs.Write(output);
+    glyphs.Write(output, this->GeneratorGlyphs);
   }
   vtkBoostedTimeSweep::StampTime(info, this->NumberOfTimeSteps, output);
 }

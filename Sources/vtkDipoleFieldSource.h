@@ -52,11 +52,13 @@
 
 #include "BoostedSurfacesSourcesModule.h" // for export macro
 #include "vtkImageAlgorithm.h"
+#include "vtkSmartPointer.h" // for the Generators output's cache
 
 #include <string> // for Validate
 #include <memory> // for the generator list
 
 class vtkBoostedRowList;
+class vtkPolyData;
 namespace cga
 {
 struct GeneratorParameters;
@@ -206,6 +208,10 @@ protected:
   int OutputPointsPrecision = DOUBLE_PRECISION;
 
 private:
+  /// The "Generators" output of the last update, which the next one shares while the generators as
+  /// used it holds stay the same to the bit (vtkBoostedGeneratorGlyphs::Write with a cache).
+  vtkSmartPointer<vtkPolyData> GeneratorGlyphs;
+
   vtkDipoleFieldSource(const vtkDipoleFieldSource&) = delete;
   void operator=(const vtkDipoleFieldSource&) = delete;
 

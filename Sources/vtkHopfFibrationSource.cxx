@@ -221,7 +221,7 @@ int vtkHopfFibrationSource::RequestData(
         (1.0 / hopf.radius) * (hopf.toWorld({ std::cos(theta), std::sin(theta), 0.0 }) - hopf.center);
       glyphs.Add(hopf.toWorld(onSphere), boost, 0.5 + phi / pi);
     }
-    glyphs.Write(vtkPolyData::GetData(outputVector, 1));
+    glyphs.Write(vtkPolyData::GetData(outputVector, 1), this->GeneratorGlyphs);
   }
   for (int port = 0; port < this->GetNumberOfOutputPorts(); ++port)
   {

@@ -58,10 +58,12 @@
 
 #include "BoostedSurfacesSourcesModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h" // for the Generators output's cache
 
 #include <memory> // for the base point list
 
 class vtkBoostedRowList;
+class vtkPolyData;
 
 class vtkPointSet;
 namespace cga
@@ -242,6 +244,10 @@ protected:
   int NumberOfTimeSteps = 0;
 
 private:
+  /// The "Generators" output of the last update, which the next one shares while the base points it
+  /// holds stay the same to the bit (vtkBoostedGeneratorGlyphs::Write with a cache).
+  vtkSmartPointer<vtkPolyData> GeneratorGlyphs;
+
   vtkHopfFibrationSource(const vtkHopfFibrationSource&) = delete;
   void operator=(const vtkHopfFibrationSource&) = delete;
 };

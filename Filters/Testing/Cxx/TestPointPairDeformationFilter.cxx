@@ -5,6 +5,7 @@
 
 #include "DeformedOutput.h"
 #include "EventCounter.h"
+#include "GeneratorGlyphCacheChecks.h"
 #include "ProgressLog.h"
 #include "TranslationChecks.h"
 #include "vtkAOSDataArrayTemplate.h"
@@ -1343,4 +1344,23 @@ TEST(PointPairDeformationFilter, TheGeneratorsOutputIsBuiltAnewOnlyWhenTheGenera
   ASSERT_EQ(glyphs()->GetNumberOfPoints(), 3);
   EXPECT_EQ(weights()->GetTuple1(1), 0.75);
   EXPECT_EQ(events.errors, 1);
+
+  // The check every class with the port shares (GeneratorGlyphCacheChecks.h): Strength and the
+  // falloff are not the generators', a row's pitch is.
+  ExpectGeneratorGlyphsCached(1,
+    [&] {
+      auto deformation = vtkSmartPointer<vtkPointPairDeformationFilter>::New();
+      deformation->SetInputData(mesh);
+      deformation->AddGenerator(
+        0.25, 0.0, 0.0, 0, 0, 1, 0.5, vtkPointPairDeformationFilter::TWIST, 0.1);
+      return deformation;
+    },
+    [](vtkPointPairDeformationFilter* deformation) {
+      deformation->SetStrength(0.5);
+      deformation->SetFalloff(2.0);
+    },
+    [](vtkPointPairDeformationFilter* deformation) {
+      deformation->SetGenerator(
+        0, 0.25, 0.0, 0.0, 0, 0, 1, 0.5, vtkPointPairDeformationFilter::TWIST, 0.2);
+    });
 }

@@ -5,6 +5,7 @@
 #include "vtkConformalOrbitSource.h"
 
 #include "BadParameterCases.h"
+#include "GeneratorGlyphCacheChecks.h"
 #include "GridSourceChecks.h"
 #include "LinkingNumber.h"
 #include "ProgressLog.h"
@@ -683,4 +684,28 @@ TEST(ConformalOrbitSource, ReportsProgressAndAnAbortedUpdateIsEmpty)
       EXPECT_EQ(orbits->GetNumberOfCells(), 0);
     }
   }
+}
+
+TEST(ConformalOrbitSource, TheGeneratorsOutputIsBuiltAnewOnlyWhenTheGeneratorsChange)
+{
+  // The orbits' sampling changes the orbits, not the generators: the torus knot's core circles,
+  // then the list's rows.
+  ExpectGeneratorGlyphsCached(2, [] { return vtkSmartPointer<vtkConformalOrbitSource>::New(); },
+    [](vtkConformalOrbitSource* source) { source->SetTResolution(33); },
+    [](vtkConformalOrbitSource* source) { source->SetKnotRadius(1.5); });
+  ExpectGeneratorGlyphsCached(2,
+    [] {
+      auto source = vtkSmartPointer<vtkConformalOrbitSource>::New();
+      source->SetGeneratorTypeToGeneratorList();
+      source->AddGenerator(0, 0, 0, 0, 0, 1, 1.0, vtkConformalOrbitSource::ROTATION, 0);
+      source->AddGenerator(0.5, 0, 0, 1, 0, 0, 0.25);
+      return source;
+    },
+    [](vtkConformalOrbitSource* source) {
+      source->SetTResolution(33);
+      source->SetSeedPoint(0.5, 0.5, 0.25);
+    },
+    [](vtkConformalOrbitSource* source) {
+      source->SetGenerator(1, 0.5, 0, 0, 1, 0, 0, 0.5);
+    });
 }

@@ -4,6 +4,7 @@
 #include "vtkCurvaturePatchSource.h"
 
 #include "BadParameterCases.h"
+#include "GeneratorGlyphCacheChecks.h"
 #include "GridSourceChecks.h"
 #include "ProgressLog.h"
 #include "TranslationChecks.h"
@@ -474,4 +475,30 @@ TEST(CurvaturePatchSource, CurvaturesNearTheLargestDoubleGiveFiniteArrays)
     }
   }
   ExpectCellsUseExistingPoints(output);
+}
+
+TEST(CurvaturePatchSource, TheGeneratorsOutputIsBuiltAnewOnlyWhenTheControlPointsChange)
+{
+  // The resolution changes the patch, not its control points; a control point's curvature does.
+  ExpectGeneratorGlyphsCached(1,
+    [] {
+      auto source = vtkSmartPointer<vtkCurvaturePatchSource>::New();
+      source->SetMethodToControlPoints();
+      source->AddControlPoint(1, 1, 0, 0, 0, 1, 1, 0, 0, 0.5, -0.5);
+      source->AddControlPoint(-1, 0, 0, 0, 1, 1, 1, 0, 0, 1.0, 0.3);
+      return source;
+    },
+    [](vtkCurvaturePatchSource* source) { source->SetUResolution(7); },
+    [](vtkCurvaturePatchSource* source) {
+      source->SetControlPoint(1, -1, 0, 0, 0, 1, 1, 1, 0, 0, 1.0, 0.4);
+    });
+  // The corners of BILINEAR: ClipRadius is not theirs, a corner's direction is.
+  ExpectGeneratorGlyphsCached(1,
+    [] {
+      auto source = vtkSmartPointer<vtkCurvaturePatchSource>::New();
+      source->SetMethodToBilinear();
+      return source;
+    },
+    [](vtkCurvaturePatchSource* source) { source->SetClipRadius(1.5); },
+    [](vtkCurvaturePatchSource* source) { source->SetCorner3Direction(0.25, 0, 1); });
 }

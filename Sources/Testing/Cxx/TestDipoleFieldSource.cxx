@@ -3,6 +3,7 @@
 #include "vtkDipoleFieldSource.h"
 
 #include "EventCounter.h"
+#include "GeneratorGlyphCacheChecks.h"
 #include "GridSourceChecks.h"
 #include "ProgressLog.h"
 #include "TranslationChecks.h"
@@ -730,4 +731,21 @@ TEST(DipoleFieldSource, SinglePrecisionBeyondTheLargestFloatIsAnError)
   vtkDataArray* potential = source->GetOutput()->GetPointData()->GetArray("DipolePotential");
   ASSERT_TRUE(potential);
   EXPECT_GT(LargestValue(potential), 1e300);
+}
+
+TEST(DipoleFieldSource, TheGeneratorsOutputIsBuiltAnewOnlyWhenTheGeneratorsChange)
+{
+  // The grid and the falloff change the field, not the generators; GeneratorsTranslation moves
+  // them.
+  ExpectGeneratorGlyphsCached(1,
+    [] {
+      auto source = vtkSmartPointer<vtkDipoleFieldSource>::New();
+      source->AddGenerator(0.5, 0.25, 0, 0, 1, 0, 0.75, vtkDipoleFieldSource::TWIST, 0.2);
+      return source;
+    },
+    [](vtkDipoleFieldSource* source) {
+      source->SetDimensions(9, 7, 1);
+      source->SetFalloff(0.5);
+    },
+    [](vtkDipoleFieldSource* source) { source->SetGeneratorsTranslation(0, 0, 0.125); });
 }

@@ -4,6 +4,7 @@
 #include "vtkHopfFibrationSource.h"
 
 #include "BadParameterCases.h"
+#include "GeneratorGlyphCacheChecks.h"
 #include "GridSourceChecks.h"
 #include "ProgressLog.h"
 #include "TranslationChecks.h"
@@ -602,4 +603,16 @@ TEST(HopfFibrationSource, SinglePrecisionBeyondTheLargestFloatIsAnError)
 {
   ExpectSinglePrecisionBeyondTheLargestFloatIsAnError<vtkHopfFibrationSource>(
     [](vtkHopfFibrationSource* source) { source->SetCircleCenter(0, 0, 1e39); }, 1e39);
+}
+
+TEST(HopfFibrationSource, TheGeneratorsOutputIsBuiltAnewOnlyWhenTheBasePointsChange)
+{
+  // The fibers' sampling and the output type change the fibration's mesh, not its base points;
+  // the number of latitudes does.
+  ExpectGeneratorGlyphsCached(1, [] { return vtkSmartPointer<vtkHopfFibrationSource>::New(); },
+    [](vtkHopfFibrationSource* source) {
+      source->SetFiberResolution(16);
+      source->SetOutputTypeToTwistorMesh();
+    },
+    [](vtkHopfFibrationSource* source) { source->SetPhiResolution(5); });
 }
