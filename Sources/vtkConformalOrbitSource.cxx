@@ -29,6 +29,8 @@
 #include "cga/surfaces/TorusKnot.h"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
 #include <numeric>
 #include <string>
@@ -380,8 +382,15 @@ int vtkConformalOrbitSource::RequestData(
     vtkBoostedGridBuilder& grid = driver.Grid();
     // exp(t B) is the same for every seed: its closed form (extended precision) once per t, as
     // a 5 x 5 point map (cga::PointMap) that each seed then costs a matrix-vector product.
+    std::atomic<long long> overflowed{ 0 }; // samples whose exp(t B) is not finite
     driver.SampleColumns([&](int c, int firstRow, int lastRow) {
       const cga::PointMap map(orbit.versor(ts[c]));
+      const std::array<double, 25>& entries = map.matrix();
+      if (!std::all_of(entries.begin(), entries.end(), [](double v) { return std::isfinite(v); }))
+      {
+        overflowed += lastRow - firstRow + 1; // t B itself overflows: no image to give
+        return;
+      }
       for (int r = firstRow; r <= lastRow; ++r)
       {
         cga::Vec3 p;
@@ -395,6 +404,11 @@ int vtkConformalOrbitSource::RequestData(
     });
     std::vector<int> ids(seeds.size());
     std::iota(ids.begin(), ids.end(), 0);
+    if (overflowed > 0)
+    {
+      vtkWarningMacro(<< overflowed << " samples dropped: t B overflows there (|t| up to "
+                      << std::max(std::fabs(ts.front()), std::fabs(ts.back())) << ")");
+    }
     grid.AddColumnParameter("t", ts);
     grid.AddRowIntegerParameter("OrbitId", ids);
     if (!driver.Build(orbits))

@@ -104,6 +104,20 @@ void planeFactors(Real square, Real rate, Real t, Real& c, Real& sHat)
   }
 }
 
+// k divided by a power of two (exactly) where its largest component passes 2^64: the point map
+// does not change (K up(p) ~K scales by the square, which fn divides out), and the 5 x 5 point
+// map's entries, products of two components, stay finite for every finite t. A transversion's
+// 1 + t B at |t| = 1e160 had entries of 1e320, and every sample but t = 0 was lost.
+Even withinRange(Even k)
+{
+  const double largest = k.maxAbs();
+  if (std::isfinite(largest) && largest > 0x1p64)
+  {
+    k *= std::ldexp(1.0, -std::ilogb(largest));
+  }
+  return k;
+}
+
 Real sinc(Real x)
 {
   return std::fabs(x) < 1e-5L ? 1.0L - x * x / 6.0L : std::sin(x) / x;
@@ -258,7 +272,7 @@ Even Orbit::versor(double t) const
   const Real d = l1 - l2;
   if (std::fabs(tt) * std::fmax(r1, r2) < 1.0L)
   {
-    return expExact(t * this->B); // small angles: its power series, nothing to amplify
+    return withinRange(expExact(t * this->B)); // small angles: its power series, nothing to amplify
   }
   Real scalar, coefW, coefB, coefWB;
   if (d > 0.0L && (d >= 0.05L * largest || l1 > 0.0L))
@@ -283,13 +297,13 @@ Even Orbit::versor(double t) const
   }
   else
   {
-    return expExact(t * this->B); // both squares about zero: no angle to keep exact
+    return withinRange(expExact(t * this->B)); // both squares about zero: no angle to keep exact
   }
   Even k;
   k.scalar = static_cast<double>(scalar);
   k.quadvector = this->W * static_cast<double>(coefW);
   k.bivector = this->B * static_cast<double>(coefB) + this->WB * static_cast<double>(coefWB);
-  return k;
+  return withinRange(k);
 }
 
 bool Orbit::point(Vec3 p, double t, Vec3& out) const

@@ -79,8 +79,9 @@ public:
   /// for a zero part.
   int windings(int i) const { return this->Windings[i]; }
 
-  /// exp(t B), scaled like expExact's AvoidOverflow for a large hyperbolic angle (the point map
-  /// does not change).
+  /// exp(t B), scaled like expExact's AvoidOverflow for a large hyperbolic angle and by a power
+  /// of two where a component passes 2^64 (the point map does not change, and its 5 x 5 matrix
+  /// stays finite); not finite only where t B itself overflows.
   Even versor(double t) const;
   /// out = fn(exp(t B) up(p) exp(-t B)); false (out unchanged) at infinity or for bad input.
   bool point(Vec3 p, double t, Vec3& out) const;

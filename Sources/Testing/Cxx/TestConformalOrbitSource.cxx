@@ -204,6 +204,50 @@ TEST(ConformalOrbitSource, OnePointPairIsTheTransversionAboutItsLocation)
   EXPECT_EQ(vtkPolyData::SafeDownCast(source->GetOutputDataObject(1))->GetNumberOfPoints(), 0);
 }
 
+TEST(ConformalOrbitSource, HugeTimesReachTheFixedPointOrWarnWhereTBOverflows)
+{
+  // The transversion about x sends every point to x as |t| grows: |p(t) - x| is about
+  // 1/(|t| w |v| |y|^2)... of order 1/|t|. At |t| = 1e160 exp(t B) = 1 + t B is finite but its
+  // point map's entries (products of two components) were 1e320: every sample but the seed was
+  // lost without a word. exp(t B) is now scaled by a power of two (the map does not change).
+  const Vec3 x{ 0.5, -0.25, 1 }, v{ 0.3, 0.1, -0.2 };
+  for (const double T : { 1e160, 1e300 })
+  {
+    vtkNew<vtkConformalOrbitSource> source;
+    EventCounter events(source);
+    source->SetGeneratorTypeToGeneratorList();
+    source->AddGenerator(x.x, x.y, x.z, v.x, v.y, v.z, 1.5);
+    source->SetSeedPoint(1, 1, 1);
+    source->SetTRange(0, T);
+    source->SetTResolution(4);
+    source->Update();
+    EXPECT_EQ(events.errors + events.warnings, 0) << T;
+    vtkPolyData* output = source->GetOutput();
+    ASSERT_EQ(output->GetNumberOfPoints(), 5) << T;
+    double p[3];
+    output->GetPoint(0, p); // t = 0: the seed
+    EXPECT_EQ(distance({ p[0], p[1], p[2] }, { 1, 1, 1 }), 0.0);
+    for (vtkIdType i = 1; i < 5; ++i)
+    {
+      output->GetPoint(i, p);
+      EXPECT_LE(distance({ p[0], p[1], p[2] }, x), 1e-14) << T << " sample " << i;
+    }
+  }
+  // Where t B itself overflows there is no image: the samples are dropped with a warning.
+  vtkNew<vtkConformalOrbitSource> overflowing;
+  EventCounter events(overflowing);
+  overflowing->SetGeneratorTypeToGeneratorList();
+  overflowing->AddGenerator(x.x, x.y, x.z, v.x, v.y, v.z, 1e10);
+  overflowing->SetSeedPoint(1, 1, 1);
+  overflowing->SetTRange(0, 1e300);
+  overflowing->SetTResolution(4);
+  overflowing->Update();
+  EXPECT_EQ(events.errors, 0);
+  EXPECT_EQ(events.warnings, 1);
+  EXPECT_NE(events.lastWarning.find("samples dropped"), std::string::npos) << events.lastWarning;
+  EXPECT_EQ(overflowing->GetOutput()->GetNumberOfPoints(), 1); // the seed at t = 0
+}
+
 // The line widget's row: at SelectedGeneratorLocation and aimed at SelectedGeneratorTip, it gives
 // the orbits, cores and Generators port of a list whose row is written out there, with the
 // direction tip - location; the list itself is unchanged.
