@@ -455,6 +455,17 @@ constexpr double kStrongHyperbolicLimit = 700.0;
 /// 2^-43 of the derivative, as the closed form's (which such lanes took before they were strong).
 constexpr double kKeptLeavingTangents = 10.0 * 0.6931471805599453;
 
+/// Per lane, whether the e_i^no components that component(c) reads (c = E1NO, E2NO, E3NO) are all 0:
+/// for B's values, B is a similarity's bivector (similarityLanes); for its tangents along a seed,
+/// B stays one along that seed (exactZeroStaysZero).
+template <typename Component>
+BOOSTED_FORCE_INLINE auto noTransversionPart(const Component& component)
+{
+  using N = decltype(component(E1NO));
+  return maskAnd(maskAnd(equalTo(component(E1NO), N{}), equalTo(component(E2NO), N{})),
+    equalTo(component(E3NO), N{}));
+}
+
 /// q (a Dual: DualNumber.h) with its tangents dropped where its value is exactly 0, along the seeds
 /// that keep u a similarity's bivector (no e_i^no tangent), and along every seed where `dropAll`.
 /// Used for the parts of the strong sandwich that a factor e^{2a} multiplies: where B is a
@@ -480,8 +491,7 @@ BOOSTED_FORCE_INLINE Dual<V, N> exactZeroStaysZero(Dual<V, N> q, const Dual<V, N
   const Mask<ValueOf<V>> zero = equalTo(valueOf(q.v), ValueOf<V>{});
   for (int k = 0; k < N; ++k)
   {
-    const auto staysSimilar = maskAnd(maskAnd(equalTo(u[E1NO].d[k], V{}), equalTo(u[E2NO].d[k], V{})),
-      equalTo(u[E3NO].d[k], V{}));
+    const auto staysSimilar = noTransversionPart([&](int c) { return u[c].d[k]; });
     q.d[k] = select(maskAnd(zero, maskOr(dropAll, staysSimilar)), V{}, q.d[k]);
   }
   return q;
@@ -510,9 +520,7 @@ BOOSTED_FORCE_INLINE ValueOf<T> imagePartExponent(const T* v)
 template <typename T>
 BOOSTED_FORCE_INLINE Mask<ValueOf<T>> similarityLanes(const T* u)
 {
-  using V = ValueOf<T>;
-  return maskAnd(maskAnd(equalTo(valueOf(u[E1NO]), V{}), equalTo(valueOf(u[E2NO]), V{})),
-    equalTo(valueOf(u[E3NO]), V{}));
+  return noTransversionPart([&](int c) { return valueOf(u[c]); });
 }
 
 /// Per lane, whether strongHyperbolicSandwich's parts that its factor e^{2a} multiplies come out
