@@ -540,6 +540,24 @@ BOOSTED_FORCE_INLINE Mask<ValueOf<T>> strongSandwichIsExact(const UnitBivector<T
   return maskOr(blade, similarityLanes(unit.u));
 }
 
+/// The elliptic part B2 = (wu/2 - l2 u)/(l1 - l2) of u = B1 + B2 (from <W u>_2 = 2 (l1 B2 + l2 B1),
+/// l1 > 0 the square of u's hyperbolic plane, l2 the other's, wu = <W u>_2) into b2, and returns
+/// sqrt(l1). Lanes where l1 is not positive (not strong: the caller selects them away) take l1 = 1,
+/// so that nothing divides by 0.
+template <typename T>
+BOOSTED_FORCE_INLINE T ellipticPart(const T* u, const T& l1, const T& l2, const T* wu, T* b2)
+{
+  using V = ValueOf<T>;
+  const Mask<V> positive = lessThan(V{}, valueOf(l1));
+  const T l1Safe = select(positive, l1, splat<T>(1.0));
+  const T inverseGap = 1.0 / (l1Safe - l2);
+  for (int c = 0; c < kBivector; ++c)
+  {
+    b2[c] = (0.5 * wu[c] - l2 * u[c]) * inverseGap;
+  }
+  return laneSqrt(l1Safe);
+}
+
 /// <K X ~K>_1 (up to a positive factor) for K = exp(B), B = m u with a strong hyperbolic plane
 /// (l1 > 0 the square of u's hyperbolic plane, l2 <= 0 the other's, wu = <W u>_2), without the
 /// cancellation of 1 - tanh^2 (docs/conventions.md section 2 item 7 and 12). B splits into the
@@ -575,16 +593,8 @@ void strongHyperbolicSandwich(const UnitBivector<T>& unit, const T& l1Split, con
     l1 = withValueOf(similarity, u[NONI] * u[NONI], l1);
     l2 = withValueOf(similarity, -(u[E12] * u[E12] + u[E13] * u[E13] + u[E23] * u[E23]), l2);
   }
-  // Lanes that are not strong (selected away by the caller) must not divide by 0.
-  const Mask<V> positive = lessThan(V{}, valueOf(l1));
-  const T l1Safe = select(positive, l1, splat<T>(1.0));
-  const T inverseGap = 1.0 / (l1Safe - l2);
-  const T root1 = laneSqrt(l1Safe);
   T n1[kBivector], b2[kBivector];
-  for (int c = 0; c < kBivector; ++c)
-  {
-    b2[c] = (0.5 * wu[c] - l2 * u[c]) * inverseGap;
-  }
+  const T root1 = ellipticPart(u, l1, l2, wu, b2);
   if (anySimilarity)
   {
     for (const int c : { E12, E13, E23 })
@@ -648,8 +658,14 @@ void strongHyperbolicSandwich(const UnitBivector<T>& unit, const T& l1Split, con
   }
 }
 
+/// Newton steps from the split's guess of a fixed point to the zero of B's field: each about squares
+/// the guess's relative error, which the split's rounding makes a few units of 2^-53 times its
+/// conditioning, so three leave only the field's own rounding; cheap, on the strong general lanes
+/// only.
+constexpr int kFixedPointNewtonSteps = 3;
+
 /// The fixed point of exp(B) (B = E + A_i e_i^no + C_i e_i^ni + d no^ni, ten components u) on the
-/// null direction f of its hyperbolic plane: f's Euclidean point, refined by two Newton steps on the
+/// null direction f of its hyperbolic plane: f's Euclidean point, refined by Newton steps on the
 /// zeros of B's Euclidean field (fixedPointNewtonStep), so that its error is that of the field's
 /// rounding at the point (a few units of 2^-53 of its terms over its derivative: the one-ulp
 /// sensitivity of the fixed point), not that of f. A point beyond the unit sphere (2|f_ni| > |f_no|)
@@ -670,7 +686,7 @@ BOOSTED_FORCE_INLINE void fixedPointAlong(const T* u, const T* f, T* point)
     c[i] = select(inverse, 0.5 * u[E1NO + i], u[E1NI + i]);
   }
   const T d = select(inverse, -u[NONI], u[NONI]);
-  for (int step = 0; step < 2; ++step)
+  for (int step = 0; step < kFixedPointNewtonSteps; ++step)
   {
     fixedPointNewtonStep(e, a, c, d, p);
   }
@@ -700,15 +716,11 @@ void strongImageByFixedPoints(const UnitBivector<T>& unit, const T& l1, const T&
   using V = ValueOf<T>;
   const T* u = unit.u;
   const T m = asNumber<T>(unit.scale.usableOrOne());
-  // Lanes that are not strong (selected away by the caller) must not divide by 0.
-  const Mask<V> positive = lessThan(V{}, valueOf(l1));
-  const T l1Safe = select(positive, l1, splat<T>(1.0));
-  const T inverseGap = 1.0 / (l1Safe - l2);
-  const T root1 = laneSqrt(l1Safe);
   T n1[kBivector];
+  const T root1 = ellipticPart(u, l1, l2, wu, n1);
   for (int c = 0; c < kBivector; ++c)
   {
-    n1[c] = (u[c] - (0.5 * wu[c] - l2 * u[c]) * inverseGap) / root1;
+    n1[c] = (u[c] - n1[c]) / root1;
   }
   // The plane's two null directions, projected from no + ni (whose product with every null
   // vector is non-zero): (P - z)/2 grows by e^{2a}, (P + z)/2 shrinks.
