@@ -1,7 +1,9 @@
 // mapPointsByExponentials (ExponentialMap.h), the batch map of the curvature patch: against the
 // pointwise sandwichPoint(exponential(b, rule), p) (the Exact rule to the bit for the random,
-// far-from-nilpotent exponents used here, Paper to round-off),
+// far-from-nilpotent exponents used here but those with a strong hyperbolic plane, Paper to
+// round-off),
 // the same bits on every instruction set and for every split into calls, and bad input.
+#include "cga/Exponential.h"
 #include "cga/ExponentialMap.h"
 #include "cga/PointSandwich.h"
 
@@ -59,7 +61,7 @@ TEST(ExponentialMap, EqualsThePointwiseExponentialAndSandwich)
     std::unique_ptr<bool[]> mapped(new bool[b.size()]);
     const std::size_t unmapped =
       mapPointsByExponentials(b.data(), p.data(), b.size(), rule, out.data(), mapped.get());
-    std::size_t expectedUnmapped = 0;
+    std::size_t expectedUnmapped = 0, strongPlanes = 0;
     for (std::size_t i = 0; i < b.size(); ++i)
     {
       Vec3 expected;
@@ -70,7 +72,21 @@ TEST(ExponentialMap, EqualsThePointwiseExponentialAndSandwich)
       {
         continue;
       }
-      if (exact)
+      InvariantDecomposition planes;
+      const double angle = invariantDecomposition(b[i], planes) && planes.firstSquare > 0.0
+        ? std::sqrt(planes.firstSquare) : 0.0;
+      if (exact && angle > 1.0)
+      {
+        // A strong hyperbolic plane: the batch map scales its null directions by their exact
+        // factors (or maps through the fixed points) where the pointwise sandwich of K loses about
+        // e^{2 angle} units of 2^-53 of the scale (docs/conventions.md section 2 item 12; their
+        // accuracy is tested against independent references in GeneratorKinds.AStrong* and
+        // Python.ExactAccuracy): here within the sandwich's own loss.
+        ++strongPlanes;
+        EXPECT_LE(distance(out[i], expected),
+          (1e-12 + 64.0 * std::exp(2.0 * angle) * 0x1p-53) * (1.0 + maxNorm(expected))) << i;
+      }
+      else if (exact)
       {
         EXPECT_TRUE(sameBits(out[i], expected)) << i << ": " << distance(out[i], expected);
       }
@@ -81,6 +97,10 @@ TEST(ExponentialMap, EqualsThePointwiseExponentialAndSandwich)
     }
     EXPECT_EQ(unmapped, expectedUnmapped);
     EXPECT_LT(unmapped, b.size() / 10) << "most random points must map";
+    if (exact)
+    {
+      EXPECT_LT(strongPlanes, b.size() / 2) << "most exponents are compared to the bit";
+    }
   }
 }
 

@@ -10,9 +10,11 @@
 #include "cga/Conformal.h"
 #include "cga/DipoleField.h"
 #include "cga/Exponential.h"
+#include "cga/ExponentialMap.h"
 #include "cga/PointPairField.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -403,6 +405,110 @@ TEST(GeneratorKinds, AStrongLoxodromicMapScalesAndTurnsByItsFactorAndAngle)
   }
   std::printf("largest error of a strong loxodromic map / its image: %.3g (center at x), %.3g (moved)\n",
     worst[0], worst[1]);
+}
+
+// p -> (p + v|p|^2) / (1 + 2 v.p + |v|^2 |p|^2), the map of exp(no v) (docs/conventions.md section 2
+// item 1), in long double: its range holds e^{1400}, so a point scaled by e^{700} keeps its square.
+std::array<long double, 3> transversion(const std::array<long double, 3>& p, Vec3 v)
+{
+  const long double vv[3] = { v.x, v.y, v.z };
+  long double pp = 0.0L, vp = 0.0L, v2 = 0.0L;
+  for (int i = 0; i < 3; ++i)
+  {
+    pp += p[i] * p[i];
+    vp += vv[i] * p[i];
+    v2 += vv[i] * vv[i];
+  }
+  const long double denominator = 1.0L + 2.0L * vp + v2 * pp;
+  return { (p[0] + vv[0] * pp) / denominator, (p[1] + vv[1] * pp) / denominator,
+           (p[2] + vv[2] * pp) / denominator };
+}
+
+TEST(GeneratorKinds, AStrongMapBesideATransversionScalesTowardItsAttractor)
+{
+  // A dilation beside point pairs is a loxodromic map with two finite fixed points (B has e_i^no
+  // parts). Built here as a similarity about the origin conjugated by the transversion
+  // K = exp(no v) = 1 + no v (on the full product): B = K S ~K, S = -(c/2) no^ni - (angle/2) n I3,
+  // so exp(B) maps p to K(e^{-c} R(angle) K^-1(p)): the origin is its attractor for c > 0 (fixed
+  // exactly: B has no e_i^ni part) and v/|v|^2 its repeller, the other way round for c < 0; a
+  // point's image moves toward the origin by the factor e^{-c}. The closed form of exp(B) lost
+  // about e^c units of 2^-53 of the scale here (docs/conventions.md section 2 item 12, *A strong
+  // plane beside point pairs*); the map through the fixed points keeps the image to a few units of
+  // 2^-53 of its size for c = 2 ... 700 both ways (B's own rounding moves the repeller by about
+  // 2^-53 of its size, which moves the growing images by as much of theirs).
+  const Vec3 v{ 0.5, -0.25, 1.0 };
+  const Vec3 axis = normalized(Vec3{ 0.25, 1.0, -0.5 });
+  const double angle = 0.75;
+  const Multivector k = Multivector::scalar(1.0) + (no() ^ vector(v));
+  const Multivector kInverse = Multivector::scalar(1.0) - (no() ^ vector(v));
+  const Vec3 offsets[] = { { 0.5, 0.5, 0.5 }, { -0.5, 0.5, -0.5 }, { 0.5, 0.0, -0.5 }, { 0.0, 0.0, 0.0 } };
+  double worst = 0.0;
+  for (const double c : { 2.0, 5.0, 10.0, 20.0, 30.0, 38.0, 50.0, 100.0, 300.0, 600.0, 700.0 })
+  {
+    for (const double sign : { 1.0, -1.0 })
+    {
+      const double strength = sign * c, turn = sign * angle;
+      const Multivector similarity = (-0.5 * strength) * (no() ^ ni()) +
+        (-0.5 * turn) * (vector(axis) * euclideanPseudoscalar());
+      Bivector b = toBivector(k * similarity * kInverse);
+      // K (the inversion's conjugate of a translation) changes only S's e_i^no parts: B's e_ij and
+      // no^ni parts are S's and its e_i^ni parts 0 (no _| B = d no). The full product leaves its
+      // rounding there (c 2^-53: 3e-14 at c = 600, which turns the image by as much, and 2e-16 in
+      // e_i^ni, which moves the attractor off the origin), so they take their exact values.
+      const Bivector exact = toBivector(similarity);
+      for (const int i : { Bivector::E12, Bivector::E13, Bivector::E23, Bivector::NONI })
+      {
+        b.c[i] = exact.c[i];
+      }
+      for (const int i : { Bivector::E1NI, Bivector::E2NI, Bivector::E3NI })
+      {
+        b.c[i] = 0.0;
+      }
+      ASSERT_GT(std::fabs(b.c[Bivector::E1NO]) + std::fabs(b.c[Bivector::E2NO]) + std::fabs(b.c[Bivector::E3NO]),
+        0.0) << "B is a similarity's bivector";
+      for (const Vec3 q : offsets)
+      {
+        // p = K(q) in double, the expected image from that p in long double.
+        const std::array<long double, 3> start =
+          transversion({ (long double)q.x, (long double)q.y, (long double)q.z }, v);
+        const Vec3 p{ (double)start[0], (double)start[1], (double)start[2] };
+        std::array<long double, 3> inner = transversion({ (long double)p.x, (long double)p.y, (long double)p.z }, -1.0 * v);
+        const Vec3 innerRotated = rotated(Vec3{ (double)inner[0], (double)inner[1], (double)inner[2] }, axis, turn);
+        const long double factor = std::exp(-(long double)strength);
+        const std::array<long double, 3> scaled = { factor * innerRotated.x, factor * innerRotated.y,
+                                                    factor * innerRotated.z };
+        const std::array<long double, 3> expectedLong = transversion(scaled, v);
+        const Vec3 expected{ (double)expectedLong[0], (double)expectedLong[1], (double)expectedLong[2] };
+        Vec3 image;
+        bool mapped = false;
+        ASSERT_EQ(mapPointsByExponentials(&b, &p, 1, ExponentialRule::Exact, &image, &mapped), 0u)
+          << "c " << strength;
+        const std::string active = mapPointsInstructionSet();
+        for (const std::string& set : mapPointsInstructionSets())
+        {
+          ASSERT_TRUE(useMapPointsInstructionSet(set));
+          Vec3 other;
+          ASSERT_EQ(mapPointsByExponentials(&b, &p, 1, ExponentialRule::Exact, &other, &mapped), 0u);
+          EXPECT_EQ(other.x, image.x) << set;
+          EXPECT_EQ(other.y, image.y) << set;
+          EXPECT_EQ(other.z, image.z) << set;
+        }
+        ASSERT_TRUE(useMapPointsInstructionSet(active));
+        const double size = norm(expected);
+        const double error = size > 0.0 ? norm(image - expected) / size : norm(image);
+        EXPECT_LE(error, 1e-14) << "c " << strength << " q " << q.x << " " << q.y << " " << q.z;
+        if (q.x == 0.0 && q.y == 0.0 && q.z == 0.0)
+        {
+          // on the origin, a fixed point (the attractor, or the repeller for c < 0): it stays
+          EXPECT_EQ(image.x, 0.0) << "c " << strength;
+          EXPECT_EQ(image.y, 0.0) << "c " << strength;
+          EXPECT_EQ(image.z, 0.0) << "c " << strength;
+        }
+        worst = std::max(worst, error);
+      }
+    }
+  }
+  std::printf("largest error of a strong map beside a transversion / its image: %.3g\n", worst);
 }
 
 TEST(GeneratorKinds, OneTranslationTranslatesAlongItsDirection)

@@ -18,6 +18,9 @@
 #include "ForceInline.h"
 #include "LaneMath.h"
 
+#include <type_traits>
+#include <utility>
+
 
 namespace cga
 {
@@ -352,6 +355,28 @@ BOOSTED_FORCE_INLINE Dual<T, N> variable(const T& value, int k)
   Dual<T, N> r = constant<T, N>(value);
   r.d[k] = splat<T>(1.0);
   return r;
+}
+
+/// The value type of T: T itself, or a Dual's value without its tangents (DualNumber.h), on which
+/// the per-lane decisions (scales, branches, flags) are made.
+template <typename T>
+using ValueOf = decltype(valueOf(std::declval<const T&>()));
+
+/// A value as a T (for a Dual: a constant).
+template <typename T, typename V>
+BOOSTED_FORCE_INLINE T asNumber(const V& v)
+{
+  if constexpr (std::is_same<T, V>::value)
+  {
+    return v;
+  }
+  else
+  {
+    const LaneArray<V> lanes(v);
+    T x;
+    fromLanes(lanes.v, x);
+    return x;
+  }
 }
 } // namespace
 } // namespace core

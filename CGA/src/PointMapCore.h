@@ -24,6 +24,7 @@
 #include "ForceInline.h"
 #include "DualNumber.h"
 #include "ExponentialScalars.h"
+#include "FixedPointImage.h"
 #include "LaneMath.h"
 #include "BoostProducts.h"
 #include "PointPairKernel.h"
@@ -57,28 +58,6 @@ BOOSTED_FORCE_INLINE T scalarSquare(const T* b)
 {
   return -(b[E12] * b[E12] + b[E13] * b[E13] + b[E23] * b[E23]) +
     2.0 * (b[E1NO] * b[E1NI] + b[E2NO] * b[E2NI] + b[E3NO] * b[E3NI]) + b[NONI] * b[NONI];
-}
-
-/// The value type of T: T itself, or a Dual's value without its tangents (DualNumber.h), on which
-/// the per-lane decisions (scales, branches, flags) are made.
-template <typename T>
-using ValueOf = decltype(valueOf(std::declval<const T&>()));
-
-/// A value as a T (for a Dual: a constant).
-template <typename T, typename V>
-BOOSTED_FORCE_INLINE T asNumber(const V& v)
-{
-  if constexpr (std::is_same<T, V>::value)
-  {
-    return v;
-  }
-  else
-  {
-    const LaneArray<V> lanes(v);
-    T x;
-    fromLanes(lanes.v, x);
-    return x;
-  }
 }
 
 /// Per lane, whether x is finite (|x| < inf: NaN is not).
@@ -460,10 +439,18 @@ void sandwichOrigin(const T* k, T* r)
 }
 
 /// m sqrt(l1) (a, the hyperbolic angle of B's hyperbolic plane) above which the field's frame maps
-/// by strongHyperbolicSandwich: there the closed form's sandwich cancels terms of size e^{2a} (or
+/// by sandwichWithStrongLanes: there the closed form's sandwich cancels terms of size e^{2a} (or
 /// forms 1 - tanh^2 a) to the point's weight, losing about e^{2a} units of 2^-53 (e^2 = 7 at the
 /// threshold: 1e-15).
 constexpr double kStrongHyperbolic = 1.0;
+
+/// a above which a strong lane whose split is not exact (a transversion part beside the planes)
+/// maps through its fixed points (strongImageByFixedPoints): below, the closed form's loss, measured
+/// 1 ... 40 e^{2a} units of 2^-53 of the scale, stays below 2.4e-13, a quarter of the tested bound,
+/// and the fixed points' path (taken by a whole block with the closed form for its other lanes) is
+/// not paid where it gains nothing measurable: the bench's field has 2.7 % of its points at a in
+/// (1, 1.5] at M = 16 and none above; at M = 64 31 % above 1, 0.06 % above 2.
+constexpr double kStrongGeneral = 2.0;
 
 /// a above which the field's frame keeps the closed form scaled by 1/cosh (item 7): e^a overflows
 /// from 709.78, and where the image is in range there it is the attracting fixed point, which the
@@ -475,6 +462,17 @@ constexpr double kStrongHyperbolicLimit = 700.0;
 /// move B's e_i^no parts (exactZeroStaysZero): their rounding, times e^{2a} <= 2^10, stays within
 /// 2^-43 of the derivative, as the closed form's (which such lanes took before they were strong).
 constexpr double kKeptLeavingTangents = 10.0 * 0.6931471805599453;
+
+/// Per lane, whether the e_i^no components that component(c) reads (c = E1NO, E2NO, E3NO) are all 0:
+/// for B's values, B is a similarity's bivector (similarityLanes); for its tangents along a seed,
+/// B stays one along that seed (exactZeroStaysZero).
+template <typename Component>
+BOOSTED_FORCE_INLINE auto noTransversionPart(const Component& component)
+{
+  using N = decltype(component(E1NO));
+  return maskAnd(maskAnd(equalTo(component(E1NO), N{}), equalTo(component(E2NO), N{})),
+    equalTo(component(E3NO), N{}));
+}
 
 /// q (a Dual: DualNumber.h) with its tangents dropped where its value is exactly 0, along the seeds
 /// that keep u a similarity's bivector (no e_i^no tangent), and along every seed where `dropAll`.
@@ -501,8 +499,7 @@ BOOSTED_FORCE_INLINE Dual<V, N> exactZeroStaysZero(Dual<V, N> q, const Dual<V, N
   const Mask<ValueOf<V>> zero = equalTo(valueOf(q.v), ValueOf<V>{});
   for (int k = 0; k < N; ++k)
   {
-    const auto staysSimilar = maskAnd(maskAnd(equalTo(u[E1NO].d[k], V{}), equalTo(u[E2NO].d[k], V{})),
-      equalTo(u[E3NO].d[k], V{}));
+    const auto staysSimilar = noTransversionPart([&](int c) { return u[c].d[k]; });
     q.d[k] = select(maskAnd(zero, maskOr(dropAll, staysSimilar)), V{}, q.d[k]);
   }
   return q;
@@ -531,16 +528,14 @@ BOOSTED_FORCE_INLINE ValueOf<T> imagePartExponent(const T* v)
 template <typename T>
 BOOSTED_FORCE_INLINE Mask<ValueOf<T>> similarityLanes(const T* u)
 {
-  using V = ValueOf<T>;
-  return maskAnd(maskAnd(equalTo(valueOf(u[E1NO]), V{}), equalTo(valueOf(u[E2NO]), V{})),
-    equalTo(valueOf(u[E3NO]), V{}));
+  return noTransversionPart([&](int c) { return valueOf(u[c]); });
 }
 
 /// Per lane, whether strongHyperbolicSandwich's parts that its factor e^{2a} multiplies come out
 /// exact where they vanish (docs/conventions.md section 2 item 12): B a 2-blade (W = 0: its plane
 /// is u itself) or a similarity's bivector (similarityLanes: its split is exact in the components
-/// that matter). Elsewhere (a strong plane beside a second one and a transversion part) the
-/// field's frame keeps the closed form.
+/// that matter). Elsewhere (a strong plane beside a second one and a transversion part)
+/// strongImageByFixedPoints maps instead.
 template <typename T>
 BOOSTED_FORCE_INLINE Mask<ValueOf<T>> strongSandwichIsExact(const UnitBivector<T>& unit)
 {
@@ -551,6 +546,24 @@ BOOSTED_FORCE_INLINE Mask<ValueOf<T>> strongSandwichIsExact(const UnitBivector<T
     blade = maskAnd(blade, equalTo(valueOf(unit.w[i]), V{}));
   }
   return maskOr(blade, similarityLanes(unit.u));
+}
+
+/// The elliptic part B2 = (wu/2 - l2 u)/(l1 - l2) of u = B1 + B2 (from <W u>_2 = 2 (l1 B2 + l2 B1),
+/// l1 > 0 the square of u's hyperbolic plane, l2 the other's, wu = <W u>_2) into b2, and returns
+/// sqrt(l1). Lanes where l1 is not positive (not strong: the caller selects them away) take l1 = 1,
+/// so that nothing divides by 0.
+template <typename T>
+BOOSTED_FORCE_INLINE T ellipticPart(const T* u, const T& l1, const T& l2, const T* wu, T* b2)
+{
+  using V = ValueOf<T>;
+  const Mask<V> positive = lessThan(V{}, valueOf(l1));
+  const T l1Safe = select(positive, l1, splat<T>(1.0));
+  const T inverseGap = 1.0 / (l1Safe - l2);
+  for (int c = 0; c < kBivector; ++c)
+  {
+    b2[c] = (0.5 * wu[c] - l2 * u[c]) * inverseGap;
+  }
+  return laneSqrt(l1Safe);
 }
 
 /// <K X ~K>_1 (up to a positive factor) for K = exp(B), B = m u with a strong hyperbolic plane
@@ -588,16 +601,8 @@ void strongHyperbolicSandwich(const UnitBivector<T>& unit, const T& l1Split, con
     l1 = withValueOf(similarity, u[NONI] * u[NONI], l1);
     l2 = withValueOf(similarity, -(u[E12] * u[E12] + u[E13] * u[E13] + u[E23] * u[E23]), l2);
   }
-  // Lanes that are not strong (selected away by the caller) must not divide by 0.
-  const Mask<V> positive = lessThan(V{}, valueOf(l1));
-  const T l1Safe = select(positive, l1, splat<T>(1.0));
-  const T inverseGap = 1.0 / (l1Safe - l2);
-  const T root1 = laneSqrt(l1Safe);
   T n1[kBivector], b2[kBivector];
-  for (int c = 0; c < kBivector; ++c)
-  {
-    b2[c] = (0.5 * wu[c] - l2 * u[c]) * inverseGap;
-  }
+  const T root1 = ellipticPart(u, l1, l2, wu, b2);
   if (anySimilarity)
   {
     for (const int c : { E12, E13, E23 })
@@ -659,6 +664,166 @@ void strongHyperbolicSandwich(const UnitBivector<T>& unit, const T& l1Split, con
   {
     r[i] = ((minus[i] * grow) * scale) * grow + scale * orthogonal[i] + ((plus[i] * shrink) * scale) * shrink;
   }
+}
+
+/// Newton steps from the split's guess of a fixed point to the zero of B's field: each about squares
+/// the guess's relative error, which the split's rounding makes a few units of 2^-53 times its
+/// conditioning, so three leave only the field's own rounding; cheap, on the strong general lanes
+/// only.
+constexpr int kFixedPointNewtonSteps = 3;
+
+/// The fixed point of exp(B) (B = E + A_i e_i^no + C_i e_i^ni + d no^ni, ten components u) on the
+/// null direction f of its hyperbolic plane: f's Euclidean point, refined by Newton steps on the
+/// zeros of B's Euclidean field (fixedPointNewtonStep), so that its error is that of the field's
+/// rounding at the point (a few units of 2^-53 of its terms over its derivative: the one-ulp
+/// sensitivity of the fixed point), not that of f. A point beyond the unit sphere (2|f_ni| > |f_no|)
+/// is found inverted, as the zero of the field of sigma(B) (the inversion no -> ni/2, ni -> 2 no:
+/// A and C swap with the factors 2 and 1/2, d changes sign; exact) near f_E / (2 f_ni), so that a
+/// far fixed point is as accurate relative to its size.
+template <typename T>
+BOOSTED_FORCE_INLINE void fixedPointAlong(const T* u, const T* f, T* point)
+{
+  using V = ValueOf<T>;
+  const Mask<V> inverse = lessThan(magnitude(valueOf(f[NO])), 2.0 * magnitude(valueOf(f[NI])));
+  T p[3], e[3], a[3], c[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    p[i] = select(inverse, f[E1 + i] / (2.0 * f[NI]), f[E1 + i] / f[NO]);
+    e[i] = u[E12 + i];
+    a[i] = select(inverse, 2.0 * u[E1NI + i], u[E1NO + i]);
+    c[i] = select(inverse, 0.5 * u[E1NO + i], u[E1NI + i]);
+  }
+  const T d = select(inverse, -u[NONI], u[NONI]);
+  for (int step = 0; step < kFixedPointNewtonSteps; ++step)
+  {
+    fixedPointNewtonStep(e, a, c, d, p);
+  }
+  T outside[3];
+  inverted(p, outside);
+  for (int i = 0; i < 3; ++i)
+  {
+    point[i] = select(inverse, outside[i], p[i]);
+  }
+}
+
+/// The image of x = up(p) under exp(B), B = m u with a strong hyperbolic plane (l1 > 0, the square of
+/// u's hyperbolic plane, l2 <= 0 the other's, wu = <W u>_2) beside an e_i^no part, where neither
+/// fixed point is ni and the split of strongHyperbolicSandwich is not exact: through the map's two
+/// fixed points (FixedPointImage.h; docs/conventions.md section 2 item 12, *A strong plane beside
+/// point pairs*). The split B1 = u - B2 gives the plane's null directions only as first guesses;
+/// the fixed points come from B's own field (fixedPointAlong), the rate and turn at the attractor
+/// a from B moved there (d' = d + A.a, n' = n_E + a x A: exp(B) has the derivative
+/// e^{2 m d'} exp(-2 m [n']_x) at a), and the image is a + inv(w + y) - inv(w) with
+/// y = e^{2 m d'} S Q S psi(p): the factor e^{2 m d'} <= 1 (formed as e^{m d'} twice) multiplies
+/// only psi(p), which is accurate relative to itself. r = (1, p', |p'|^2/2) (no = 1: the image
+/// is normalized). p on the repeller (p - r = 0, or psi(p) beyond the doubles) stays there.
+template <typename T>
+void strongImageByFixedPoints(const UnitBivector<T>& unit, const T& l1, const T& l2, const T* wu,
+                              const T* x, T* r)
+{
+  using V = ValueOf<T>;
+  const T* u = unit.u;
+  const T m = asNumber<T>(unit.scale.usableOrOne());
+  T n1[kBivector];
+  const T root1 = ellipticPart(u, l1, l2, wu, n1);
+  for (int c = 0; c < kBivector; ++c)
+  {
+    n1[c] = (u[c] - n1[c]) / root1;
+  }
+  // The plane's two null directions, projected from no + ni (whose product with every null
+  // vector is non-zero): (P - z)/2 grows by e^{2a}, (P + z)/2 shrinks.
+  T probe[kVector] = {};
+  probe[NO] = splat<T>(1.0);
+  probe[NI] = splat<T>(1.0);
+  T z[kVector], projection[kVector], grows[kVector], shrinks[kVector];
+  contract(probe, n1, z);
+  contract(z, n1, projection);
+  for (int i = 0; i < kVector; ++i)
+  {
+    grows[i] = 0.5 * (projection[i] - z[i]);
+    shrinks[i] = 0.5 * (projection[i] + z[i]);
+  }
+  T first[3], second[3];
+  fixedPointAlong(u, grows, first);
+  fixedPointAlong(u, shrinks, second);
+  // The attractor is the fixed point where B's dilation rate d' = d + A.f is negative.
+  const T a[3] = { u[E1NO], u[E2NO], u[E3NO] };
+  const T rateFirst = dot3(first, a) + u[NONI], rateSecond = dot3(second, a) + u[NONI];
+  const Mask<V> swap = lessThan(valueOf(rateSecond), valueOf(rateFirst));
+  T attractor[3], repeller[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    attractor[i] = select(swap, second[i], first[i]);
+    repeller[i] = select(swap, first[i], second[i]);
+  }
+  const T rate = select(swap, rateSecond, rateFirst);
+  // The turn at the attractor: omega = -2 m n', n' = n_E + attractor x A.
+  const T nE[3] = { u[E23], -u[E13], u[E12] };
+  T moved[3], omega[3];
+  cross3(attractor, a, moved);
+  for (int i = 0; i < 3; ++i)
+  {
+    omega[i] = (-2.0 * m) * (nE[i] + moved[i]);
+  }
+  // psi(p) = inv(p - r) - inv(a - r), then y = e^{2 m d'} S Q S psi(p).
+  const T p[3] = { x[E1], x[E2], x[E3] };
+  T across[3], fromAttractor[3], fromRepeller[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    across[i] = attractor[i] - repeller[i];
+    fromAttractor[i] = p[i] - attractor[i];
+    fromRepeller[i] = p[i] - repeller[i];
+  }
+  T psi[3];
+  differenceOfInverses(across, fromAttractor, fromRepeller, psi);
+  const T down = asNumber<T>(1.0 / vectorScale(across));
+  T normal[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    normal[i] = across[i] * down;
+  }
+  const T length = laneSqrt(dot3(normal, normal));
+  for (int i = 0; i < 3; ++i)
+  {
+    normal[i] = normal[i] / length;
+  }
+  T reflectedPsi[3], turned[3], y[3];
+  reflected(normal, psi, reflectedPsi);
+  rotatedBy(omega, reflectedPsi, turned);
+  reflected(normal, turned, y);
+  const T factor = laneExp(m * rate);
+  for (int i = 0; i < 3; ++i)
+  {
+    y[i] = (y[i] * factor) * factor;
+  }
+  // Back: p' = a + (inv(w + y) - inv(w)) near the attractor, r + inv(w + y) elsewhere.
+  T w[3], sum[3], offset[3], far[3];
+  inverted(across, w);
+  for (int i = 0; i < 3; ++i)
+  {
+    sum[i] = w[i] + y[i];
+  }
+  inverseDifference(w, y, sum, offset);
+  inverted(sum, far);
+  const Mask<V> nearAttractor = withinHalf(w, y);
+  Mask<V> onRepeller = maskAnd(maskAnd(equalTo(valueOf(fromRepeller[0]), V{}),
+    equalTo(valueOf(fromRepeller[1]), V{})), equalTo(valueOf(fromRepeller[2]), V{}));
+  for (int i = 0; i < 3; ++i)
+  {
+    onRepeller = maskOr(onRepeller, maskNot(finiteLanes(valueOf(y[i]))));
+  }
+  T image[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    image[i] = select(onRepeller, repeller[i],
+      select(nearAttractor, attractor[i] + offset[i], repeller[i] + far[i]));
+  }
+  r[NO] = splat<T>(1.0);
+  for (int i = 0; i < 3; ++i)
+  {
+    r[E1 + i] = image[i];
+  }
+  r[NI] = 0.5 * dot3(image, image);
 }
 
 /// fn(r): the Euclidean point r_e / r_no, and per lane whether it is mapped (normalizePoint: the
@@ -1013,10 +1178,11 @@ void tangentsInExtendedPrecision(const Mask<V>& lanes, const Dual<V, N>* b, cons
   }
 }
 
-/// Per lane, whether the field's frame maps by strongHyperbolicSandwich: among `candidates` (usable
-/// lanes not mapped around p), a = m sqrt(l1) in (kStrongHyperbolic, kStrongHyperbolicLimit] where
-/// the sandwich's parts come out exact (strongSandwichIsExact: B a 2-blade or a similarity's
-/// bivector). The angle first: the rest is tested only in blocks where some lane passes it.
+/// Per lane, whether the field's frame maps by sandwichWithStrongLanes: among `candidates` (usable
+/// lanes not mapped around p), a = m sqrt(l1) in (kStrongHyperbolic, kStrongHyperbolicLimit], and
+/// above kStrongGeneral where the split is not exact (strongSandwichIsExact: those take
+/// strongImageByFixedPoints). The angle first: the rest is tested only in blocks where some lane
+/// passes it.
 template <typename T>
 BOOSTED_FORCE_INLINE Mask<ValueOf<T>> strongLanes(const UnitBivector<T>& unit, const T& l1, const Mask<T>& candidates)
 {
@@ -1030,11 +1196,14 @@ BOOSTED_FORCE_INLINE Mask<ValueOf<T>> strongLanes(const UnitBivector<T>& unit, c
   {
     return strong;
   }
-  return maskAnd(strong, strongSandwichIsExact(unit));
+  const Mask<V> strongGeneral = lessThan(splat<V>(kStrongGeneral * kStrongGeneral), angleSquare);
+  return maskAnd(strong, maskOr(strongGeneral, strongSandwichIsExact(unit)));
 }
 
 /// The field frame's sandwich r = <K X ~K>_1 of a block with `strong` lanes: theirs by
-/// strongHyperbolicSandwich, the others' by the closed form of exp(B) (as mapPointBy's common path).
+/// strongHyperbolicSandwich where its split is exact (strongSandwichIsExact), by
+/// strongImageByFixedPoints elsewhere (r then the normalized image), the others' by the closed form
+/// of exp(B) (as mapPointBy's common path).
 /// Out of line and cold, called only for such blocks: inlined into mapPointBy, or called from its
 /// common path, its code changed how GCC kept the common path's values (registers, stack) and cost
 /// a block without a strong lane about 4 ns per point on AVX-512 (issue #11).
@@ -1050,7 +1219,22 @@ BOOSTED_COLD void sandwichWithStrongLanes(const T* b, const UnitBivector<T>& uni
     sandwichEven(k, x, r);
   }
   T fromStrong[kVector];
-  strongHyperbolicSandwich(unit, l1, l2, wu, x, fromStrong);
+  const Mask<ValueOf<T>> exactSplit = strongSandwichIsExact(unit);
+  const Mask<ValueOf<T>> general = maskAnd(strong, maskNot(exactSplit));
+  const bool allGeneral = allLanes(general);
+  if (!allGeneral)
+  {
+    strongHyperbolicSandwich(unit, l1, l2, wu, x, fromStrong);
+  }
+  if (anyLane(general))
+  {
+    T byFixedPoints[kVector];
+    strongImageByFixedPoints(unit, l1, l2, wu, x, byFixedPoints);
+    for (int i = 0; i < kVector; ++i)
+    {
+      fromStrong[i] = allGeneral ? byFixedPoints[i] : select(general, byFixedPoints[i], fromStrong[i]);
+    }
+  }
   for (int i = 0; i < kVector; ++i)
   {
     r[i] = allStrong ? fromStrong[i] : select(strong, fromStrong[i], r[i]);
@@ -1108,7 +1292,7 @@ void mapPointBy(const kernel::FieldArgs& args, T* b, const T* p, T* image, bool*
     return;
   }
   // The field's frame: the closed form of exp(B) and its sandwich, or where B's hyperbolic plane
-  // is strong (m^2 l1 above kStrongHyperbolic^2) strongHyperbolicSandwich.
+  // is strong (m^2 l1 above kStrongHyperbolic^2) sandwichWithStrongLanes.
   using V = ValueOf<T>;
   UnitBivector<T> unit;
   unitBivector(b, unit, false);
@@ -1129,8 +1313,8 @@ void mapPointBy(const kernel::FieldArgs& args, T* b, const T* p, T* image, bool*
   Mask<T> fieldMapped = normalizeLanes(p, r, image);
   if constexpr (kExtendedTangents<T>)
   {
-    // Not the strong lanes: their tangents come exact from strongHyperbolicSandwich, while the
-    // double-double path recomputes the cancelling closed form.
+    // Not the strong lanes: their tangents come exact from strongHyperbolicSandwich or
+    // strongImageByFixedPoints, while the double-double path recomputes the cancelling closed form.
     const Mask<T> wide = maskAnd(maskAnd(maskNot(aroundPoint), maskNot(strong)),
       tangentsNeedExtendedPrecision(b, valueOf(m), image));
     if (anyLane(wide))

@@ -4,8 +4,8 @@ every generator kind (point pairs, rotations, twists, dilations, translations, a
 space), alone and in clusters of mixed kinds: points on a generator (and on a rotation's axis) and
 1e-9 ... 1e-3 from one, epsilon from 1e-10 to 1e3, huge weights and strengths (of either sign)
 (docs/conventions.md section 2 item 12 states the bound tested here), lone dilations with factors up
-to e^700 and dilations with a rotation about an axis through their location (loxodromic maps) up to
-e^600.
+to e^700, dilations with a rotation about an axis through their location (loxodromic maps) up to
+e^600 and dilations beside one or two point pairs (two finite fixed points) up to e^700.
 
 Each image, from the batch path (PointPairField::mapPoints) and the pointwise path (map), of the
 field built from FieldGenerator::of (or the bivector) and from GeneratorParameters rows, printed by
@@ -160,6 +160,10 @@ DILATION_EXPONENTS = (5.0, 30.0, 300.0, 600.0, 650.0, 700.0)
 # location) and refused the point at c = 600.
 LOXODROMIC_EXPONENTS = (5.0, 30.0, 300.0, 600.0)
 
+# The factors of a dilation beside one or two point pairs (a general strong bivector: two finite
+# fixed points, an elliptic plane beside the hyperbolic one).
+PAIRED_DILATION_EXPONENTS = (5.0, 20.0, 30.0, 300.0, 700.0)
+
 
 def kind_configurations(around1, around2):
     """Each kind alone (on its location, its axis and next to them), huge weights and strengths of
@@ -198,6 +202,7 @@ def kind_configurations(around1, around2):
     # commuting planes), alone (the field's center on the location) and with a translation 0.4 away
     # (B has e_i^ni parts about the center, the fixed point moves)
     loxodromic_points = around1[::2] + axis1 + FAR[:1]
+    paired_dilation_points = offsets(X1, NEAR + [1e-1, 1.0], DIRECTIONS[:1])
     for exponent in LOXODROMIC_EXPONENTS:
         for eps, strength in ((1e-10, 1.0), (1e-10, -1.0), (1e-8, -1e6)):
             spiral = [generator("dilation", X1, V1, dilation_weight(exponent, eps, strength)),
@@ -208,6 +213,24 @@ def kind_configurations(around1, around2):
                      f"strength {strength:g}{', a translation' if extra else ''}", 1.0, eps,
                      strength, spiral + extra, loxodromic_points, False,
                      strength == 1.0 and eps == 1e-10 and not extra))
+    # a dilation beside point pairs (B has e_i^no parts: neither fixed point is ni, W != 0): the
+    # map is loxodromic with two finite fixed points, one next to the dilation's location. With the
+    # second pair the field's center (the mean of three locations) is not exact: p - center and
+    # x - center round, which changes d^2 by about 2^-53 |p - center| / |p - x| of itself, 1e-11
+    # where d^2 = eps (1e-5 from x at eps 1e-10); that moved the image by up to 8e-12 (c = 20), more
+    # than the bound, before and after the strong map (whose image of the doubles it maps, generators
+    # at x - center and the point p - center, is within 2e-15 there), so that distance is left out
+    # of the two-pair case (the one-pair case, whose center's differences are exact, keeps it).
+    for exponent in PAIRED_DILATION_EXPONENTS:
+        for eps, strength in ((1e-10, 1.0), (1e-10, -1.0), (1e-8, -1e6)):
+            dilation = generator("dilation", X1, V1, dilation_weight(exponent, eps, strength))
+            for pairs in ([pair(X2, V2, 0.3)], [pair(X2, V2, 0.3), pair(FAR[0], V1, 0.5)]):
+                points = paired_dilation_points if len(pairs) == 1 else \
+                    [p for p in paired_dilation_points if abs(math.dist(p, X1) - 1e-5) > 1e-7]
+                yield from one_per_point(
+                    (f"a dilation beside {len(pairs)} point pair(s), c {exponent:g}, eps {eps:g}, "
+                     f"strength {strength:g}", 1.0, eps, strength, [dilation] + pairs, points,
+                     False, strength == 1.0 and eps == 1e-10 and len(pairs) == 1))
     near3 = offsets(X3, NEAR, DIRECTIONS[:1])
     for eps, strength in ((1e-10, 1.0), (1e-10, -1.0), (1e-8, -1e6), (1e-6, 1e5)):
         mixed = [pair(X1, V1, 0.5), generator("rotation", X3, V3, 0.2),

@@ -17,7 +17,10 @@ namespace cga
 /// left unchanged where it is not. Returns how many points were not mapped.
 ///
 /// The same numbers as the pointwise sandwichPoint(exponential(b[i], rule), p[i]): to the bit for
-/// the Exact rule where b[i] is far from nilpotent (one template source), to round-off for the
+/// the Exact rule where b[i] is far from nilpotent (one template source) and has no strong
+/// hyperbolic plane (angle above 1: there the map scales the plane's null directions exactly or
+/// maps through the two fixed points, which the sandwich of K is not: it loses about e^{2 angle}
+/// units of 2^-53; docs/conventions.md section 2 item 12), to round-off for the
 /// Paper rule (its closed-form sandwich of c + B). Where b[i] is nearly nilpotent (a point pair,
 /// a generator next to p) the Exact rule maps in a frame around p[i] instead, which is more
 /// exact than the pointwise sandwich next to the nilpotent part's location (far from it, under a
