@@ -20,7 +20,9 @@ max(1, |d out / d B| |d B / d w_i|), the size the sum of its ten terms can err r
 (docs/conventions.md section 3 item 15). Along seeds that move B's e_i^no parts B leaves the
 similarities, and the strong sandwich's parts that are exactly zero there have tangents that are
 the derivative itself: before the closed form of those lanes the derivative missed this by up to
-the derivative's whole size.
+the derivative's whole size. A strong boost between two points (a hyperbolic 2-blade that is not
+a similarity's bivector) has no closed form yet: its derivative must be refused (false) within
+1e-5 of the point it fixes, and meet the bound at 1 from it.
 
     python3 test_strong_derivatives.py <ExactAccuracyProbe> [-v]
 """
@@ -42,7 +44,7 @@ UNITS = [[1 if i == k else 0 for i in range(10)] for k in range(10)]
 
 
 def configurations():
-    """(name, strength, generators, points). Every field has its center (the mean location) at the
+    """(name, strength, generators, points, refusable). Every field has its center (the mean location) at the
     origin, exactly: there generatorAt(p), the B(p) the reference is given, is the exponent the
     derivative is taken at to the bit (elsewhere it is that moved to space and rounded, which
     moves a strong dilation's fixed point, and the derivative with it, by its rounding). A
@@ -69,15 +71,28 @@ def configurations():
                             0.0)], X1)]
             for name, generators, location in fields:
                 yield (f"{name}, c {exponent:g}, strength {strength:g}", strength, generators,
-                       offsets(location, DISTANCES, DIRECTIONS[:1]))
+                       offsets(location, DISTANCES, DIRECTIONS[:1]), False)
+            # a boost between the origin and X2 given in space: a hyperbolic 2-blade that is not a
+            # similarity's bivector; where it is strong (within 1e-5 of the origin) the derivative
+            # has no closed form yet and must be refused (measured before: wrong by up to beyond
+            # its own size), elsewhere it must meet the bound
+            half = sum(c * c for c in X2) / 2     # |up(0) ^ up(X2)| = |X2|^2 / 2
+            with reference.mp.workdps(40):
+                boost = [float(c) for c in reference.components_of(
+                    reference.wedge(reference.up(origin), reference.up(X2)))]
+            yield (f"a boost between two points given in space, c {exponent:g}, strength "
+                   f"{strength:g}", strength,
+                   [generator("bivector", origin, boost, exponent / 2 * EPSILON / half)],
+                   offsets(origin, DISTANCES, DIRECTIONS[:1]), True)
 
 
 def run_probe(probe, cases):
     lines = []
-    for _, strength, generators, points in cases:
+    for _, strength, generators, points, _ in cases:
         lines.append(f"1.0 {EPSILON!r} {strength!r} {len(generators)} {len(points)}")
         for kind, x, v, pitch, w in generators:
-            lines.append(" ".join([str(KIND_CODES[kind])] + [repr(c) for c in (*x, *v, pitch, w)]))
+            values = (*x, *v, w) if kind == "bivector" else (*x, *v, pitch, w)
+            lines.append(" ".join([str(KIND_CODES[kind])] + [repr(c) for c in values]))
         lines += [" ".join(repr(c) for c in p) for p in points]
     out = subprocess.run([probe, "derivatives"], input="\n".join(lines) + "\n",
                          capture_output=True, text=True, check=True).stdout.split("\n")
@@ -121,16 +136,22 @@ def main():
     start = time.time()
     cases = list(configurations())
     output = run_probe(probe, cases)
-    failures = checked = 0
+    failures = checked = refused = 0
     worst = 0.0
     cross_checked = False
-    for name, strength, generators, points in cases:
+    for name, strength, generators, points, refusable in cases:
         for p in points:
             values = read_values(next(output), 43 + 3 * len(generators))
             if values is None:
+                if refusable and max(abs(c) for c in p) < 1e-3:
+                    refused += 1
+                    continue
                 print(f"FAIL {name}: {p} unmapped")
                 failures += 1
                 continue
+            if refusable and max(abs(c) for c in p) < 1e-3:
+                print(f"FAIL {name}: {p} not refused (no closed form for a strong boost yet)")
+                failures += 1
             b, by_bivector, by_weight = values[:10], values[13:43], values[43:]
             directions = UNITS + [weight_direction(g, p) for g in generators]
             _, ref = reference.bivector_derivatives(b, directions, p, strength)
@@ -163,8 +184,8 @@ def main():
                     print(f"  {name}: {p} {what} error {error:.3g} of its size "
                           f"({error / factor:.3g} of the bound)")
     check_read_all(output, "derivatives'")
-    print(f"{failures} failures of {checked} derivatives; the worst at {worst:.3g} of its bound "
-          f"({time.time() - start:.1f} s)")
+    print(f"{failures} failures of {checked} derivatives; the worst at {worst:.3g} of its bound; "
+          f"{refused} strong boosts refused ({time.time() - start:.1f} s)")
     return 1 if failures else 0
 
 
