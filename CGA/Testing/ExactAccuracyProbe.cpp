@@ -16,6 +16,12 @@
 // curvature patch's map), reading "count" and then per point the ten Bivector components of b and
 // p, and prints per point the batch image (mapPointsByExponentials) and the pointwise one
 // (sandwichPoint(exponential(b, Exact), p)), or "unmapped".
+//
+// With the argument "derivatives" it reads configurations as above (FieldGenerator::of or the
+// given bivector) and prints per point B(p) (generatorAt: the ten components, in space), the image
+// and d out / d B of mapWithBivectorDerivative (30 numbers, byBivector[10 j + c]), then
+// d out / d w_i of mapWithWeightDerivatives (3 per generator), or "unmapped" where either refuses
+// the point (test_strong_derivatives.py).
 #include "cga/ExponentialMap.h"
 #include "cga/PointPairField.h"
 #include "cga/PointSandwich.h"
@@ -115,12 +121,48 @@ bool readGenerator(cga::FieldGenerator& field, cga::GeneratorParameters& row, bo
 }
 } // namespace
 
+namespace
+{
+void printDerivatives(const cga::PointPairField& field, const std::vector<double>& points, double strength)
+{
+  constexpr int kBivector = cga::Bivector::Count;
+  for (std::size_t i = 0; 3 * i < points.size(); ++i)
+  {
+    const cga::Vec3 p{ points[3 * i], points[3 * i + 1], points[3 * i + 2] };
+    cga::Vec3 image, weighted;
+    double byBivector[3 * kBivector];
+    std::vector<double> byWeight(3 * field.size());
+    if (!field.mapWithBivectorDerivative(p, strength, cga::ExponentialRule::Exact, image, byBivector) ||
+      !field.mapWithWeightDerivatives(p, strength, cga::ExponentialRule::Exact, weighted, byWeight.data()))
+    {
+      std::printf("unmapped\n");
+      continue;
+    }
+    for (const double c : field.generatorAt(p).c)
+    {
+      std::printf("%.17g ", c);
+    }
+    std::printf("%.17g %.17g %.17g", image.x, image.y, image.z);
+    for (const double entry : byBivector)
+    {
+      std::printf(" %.17g", entry);
+    }
+    for (const double entry : byWeight)
+    {
+      std::printf(" %.17g", entry);
+    }
+    std::printf("\n");
+  }
+}
+} // namespace
+
 int main(int argc, char** argv)
 {
   if (argc > 1 && std::strcmp(argv[1], "exponents") == 0)
   {
     return mapExponents();
   }
+  const bool derivatives = argc > 1 && std::strcmp(argv[1], "derivatives") == 0;
   double falloff, epsilon, strength;
   int generatorCount, pointCount;
   while (std::scanf("%lf %lf %lf %d %d", &falloff, &epsilon, &strength, &generatorCount,
@@ -147,6 +189,11 @@ int main(int argc, char** argv)
       }
     }
     const cga::PointPairField field(generators.data(), generators.size(), falloff, epsilon);
+    if (derivatives)
+    {
+      printDerivatives(field, points, strength);
+      continue;
+    }
     const cga::PointPairField rowsField(everyRow ? rows.data() : nullptr,
       everyRow ? rows.size() : 0, falloff, epsilon);
     field.mapPoints(points.data(), batch.data(), pointCount, strength, cga::ExponentialRule::Exact);

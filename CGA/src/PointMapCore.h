@@ -482,8 +482,9 @@ BOOSTED_FORCE_INLINE auto noTransversionPart(const Component& component)
 /// B of the similarities, their values to the bit, while their tangents would carry the rounding of
 /// N1's normalization times e^{2a}. Along a seed that moves B's e_i^no parts (d p' / d B) B leaves
 /// the similarities and those tangents are the derivative's own: kept where e^{2a} is small
-/// (kKeptLeavingTangents), dropped beyond (dropAll; docs/conventions.md section 3 item 15 states
-/// what that derivative misses there).
+/// (kKeptLeavingTangents), dropped beyond (dropAll). Either way they are not that derivative's
+/// final value there: PointPairField's derivative by B takes the closed form of
+/// StrongSimilarityDerivative.h on such lanes (docs/conventions.md section 3 item 15).
 template <typename V, int N>
 BOOSTED_FORCE_INLINE Dual<V, N> exactZeroStaysZero(Dual<V, N> q, const Dual<V, N>* u, const Mask<ValueOf<V>>& dropAll)
 {
@@ -1241,6 +1242,29 @@ BOOSTED_COLD void sandwichWithStrongLanes(const T* b, const UnitBivector<T>& uni
   }
 }
 
+/// Per lane, whether the Exact rule maps b around p: mapPointBy's test (B nearly nilpotent: both
+/// plane squares of B below kNearlyNilpotent m^2, m = maxAbs(b)) for strongSandwichLane.
+/// mapPointBy keeps its own copy of these lines: called there, the helper changed the kernel's
+/// AVX-512, AVX2 and baseline code (registers, stack) for the same arithmetic; the two must stay
+/// the same test.
+template <typename T>
+BOOSTED_FORCE_INLINE Mask<T> nearlyNilpotentLanes(const T* b, const T& m)
+{
+  const T threshold = (kNearlyNilpotent * m) * m;
+  const T s = scalarSquare(b);
+  Mask<T> aroundPoint = lessThan(0.5 * magnitude(s), threshold);
+  if (anyLane(aroundPoint))
+  {
+    T w[kQuadvector], w2, l1, l2;
+    detail::applyProduct<detail::kWedge>(b, b, w);
+    detail::applyProduct<detail::kQuadvectorSquare>(w, w, &w2);
+    detail::planeSquares(s, w2, l1, l2);
+    const T largest = select(lessThan(magnitude(l1), magnitude(l2)), magnitude(l2), magnitude(l1));
+    aroundPoint = lessThan(largest, threshold);
+  }
+  return aroundPoint;
+}
+
 /// The map p -> fn(<K up(p) ~K>_1), K = exp(b) by the rule of args, on every lane, for a given
 /// bivector b (overwritten): mapPoint after its B(p), for callers with their own exponent per point
 /// (kernel::MapBlockBy; the curvature patch, the generator tree's B(p)).
@@ -1331,6 +1355,29 @@ void mapPointBy(const kernel::FieldArgs& args, T* b, const T* p, T* image, bool*
     fieldMapped = maskOr(maskAnd(aroundPoint, aroundMapped), maskAnd(maskNot(aroundPoint), fieldMapped));
   }
   toFlags<ValueOf<T>>(fieldMapped, mapped);
+}
+
+/// Whether mapPointBy's Exact rule maps the one exponent b (double) by strongHyperbolicSandwich
+/// (its lanes' decisions, for double), and then in `similarity` whether b is a similarity's
+/// bivector: the lanes whose d out / d b StrongSimilarityDerivative.h computes in closed form.
+inline bool strongSandwichLane(const double* b, bool& similarity)
+{
+  similarity = false;
+  if (nearlyNilpotentLanes(b, maxAbs(b)))
+  {
+    return false;
+  }
+  UnitBivector<double> unit;
+  unitBivector(b, unit, false);
+  double wu[kBivector], l1, l2;
+  detail::applyProduct<detail::kRightContraction>(unit.w, unit.u, wu);
+  detail::planeSquares(unit.s, unit.w2, l1, l2);
+  if (!strongLanes(unit, l1, true))
+  {
+    return false;
+  }
+  similarity = similarityLanes(unit.u);
+  return true;
 }
 
 /// The map p -> fn(<K up(p) ~K>_1), K = exp(-strength B(p)) by the rule of args, on every lane.

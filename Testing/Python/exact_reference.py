@@ -328,3 +328,134 @@ def bivector_sensitivity(s, p, strength, trials=3, seed=1):
             moved = image_of_bivector(t, p, strength)
             largest = max(largest, mpmath.sqrt(sum((moved[i] - base[i]) ** 2 for i in range(3))))
         return float(largest)
+
+
+def _fraction(x):
+    """x (a double, an integer, a Fraction or an mpf) as an exact Fraction."""
+    from fractions import Fraction
+    if isinstance(x, mpmath.mpf):
+        mantissa, exponent = x.man_exp            # the mantissa's magnitude
+        return (-1 if x < 0 else 1) * Fraction(mantissa) * Fraction(2) ** exponent
+    return Fraction(x)
+
+
+def components_of(s):
+    """The ten null-basis components of the bivector with the antisymmetric array s (mpf), the
+    inverse of bivector_from_components (a 10 x 10 solve at the working precision)."""
+    units = [bivector_from_components([1 if i == k else 0 for i in range(10)]) for k in range(10)]
+    entries = [(i, j) for i in range(5) for j in range(i + 1, 5)]
+    a = mpmath.matrix([[u[i][j] for u in units] for i, j in entries])
+    c = mpmath.lu_solve(a, mpmath.matrix([s[i][j] for i, j in entries]))
+    return [c[k] for k in range(10)]
+
+
+def _action_fraction(components):
+    """action() of the bivector with the ten null-basis components (doubles, Fractions or mpf) in
+    exact rationals (fractions.Fraction): the entries are sums of the components times +-1/2,
+    +-1, +-2."""
+    from fractions import Fraction
+    with mp.workdps(20):
+        unit_actions = []
+        for k in range(10):
+            unit = [0] * 10
+            unit[k] = 1
+            a = action(bivector_from_components(unit))
+            unit_actions.append([[Fraction(int(a[i, j] * 4), 4) for j in range(5)]
+                                 for i in range(5)])
+    return [[sum(_fraction(c) * u[i][j] for c, u in zip(components, unit_actions) if c)
+             for j in range(5)] for i in range(5)]
+
+
+def _toward_zero(n, divisor):
+    """n / divisor rounded toward zero (integers): a tiny term becomes 0, not -1."""
+    return n // divisor if n >= 0 else -(-n // divisor)
+
+
+def _fixed_product(a, b, bits):
+    """a b of 5x5 fixed-point matrices (integers, value = n 2^-bits), rounded toward zero."""
+    columns = list(zip(*b))
+    one = 1 << bits
+    return [[_toward_zero(sum(x * y for x, y in zip(row, column)), one) for column in columns]
+            for row in a]
+
+
+def expm_frechet(x, directions):
+    """(expm(X), [L(X, E) for E in directions]) for 5x5 matrices of exact rationals: the Frechet
+    derivative L(X, E) = d/dt expm(X + t E) at t = 0 without differences, by the Taylor series of
+    the block matrix [[X, E], [0, X]] (whose exponential holds expm(X) and L(X, E)) after scaling
+    by 2^-s, then s squarings (expm(X) = F^2 and L(X, E) = F L + L F for F = expm(X/2) and
+    L = L(X/2, E/2)), in fixed point on Python integers. The bits are chosen from the norm of X:
+    the entries reach e^|X| and the image's weight may be e^-|X| of them (a strong dilation), so
+    3 |X| + 400 bits keep 70 digits beyond every such cancellation. Returns fixed-point integers
+    and the bits."""
+    norm = max(sum(abs(c) for c in row) for row in x)
+    s = max(0, int(mpmath.ceil(mpmath.log(float(norm) + 1, 2)))) + 12
+    bits = int(3 * float(norm)) + 400
+    one = 1 << bits
+    scale = 1 << s
+
+    def fixed(m):
+        return [[int(c * one / scale) for c in row] for row in m]
+
+    xs = fixed(x)
+    # each direction scaled by a power of two to about X's size (L is linear in E), so that its
+    # series ends with X's
+    powers = []
+    for e in directions:
+        size = max(abs(c) for row in e for c in row)
+        powers.append(0 if size == 0 else int(mpmath.floor(mpmath.log(float(size) / float(norm + 1), 2))))
+    es = [fixed([[c / _fraction(2) ** k for c in row] for row in e]) for e, k in zip(directions, powers)]
+    term = [[one if i == j else 0 for j in range(5)] for i in range(5)]
+    total = [row[:] for row in term]
+    dterms = [[[0] * 5 for _ in range(5)] for _ in es]
+    dtotals = [[[0] * 5 for _ in range(5)] for _ in es]
+    n = 0
+    while any(c for row in term for c in row) or any(c for d in dterms for row in d for c in row):
+        n += 1
+        dterms = [[[_toward_zero(c, n) for c in row] for row in
+                   [[a + b for a, b in zip(r1, r2)] for r1, r2 in
+                    zip(_fixed_product(d, xs, bits), _fixed_product(term, e, bits))]]
+                  for d, e in zip(dterms, es)]
+        term = [[_toward_zero(c, n) for c in row] for row in _fixed_product(term, xs, bits)]
+        total = [[a + b for a, b in zip(r1, r2)] for r1, r2 in zip(total, term)]
+        dtotals = [[[a + b for a, b in zip(r1, r2)] for r1, r2 in zip(t, d)]
+                   for t, d in zip(dtotals, dterms)]
+    for _ in range(s):
+        dtotals = [[[a + b for a, b in zip(r1, r2)] for r1, r2 in
+                    zip(_fixed_product(total, d, bits), _fixed_product(d, total, bits))]
+                   for d in dtotals]
+        total = _fixed_product(total, total, bits)
+    dtotals = [[[c * 2 ** k if k >= 0 else _toward_zero(c, 2 ** -k) for c in row] for row in d]
+               for d, k in zip(dtotals, powers)]
+    return total, dtotals, bits
+
+
+def bivector_derivatives(components, directions, p, strength):
+    """(image, [d image along D for D in directions]) of p -> fn(expm(-strength A(B)) up(p)) at
+    the bivector B with the ten null-basis components `components` (doubles, B in space), along
+    directions D given by their ten null-basis components (exact rationals or doubles): the
+    Frechet derivative of the matrix exponential (expm_frechet) applied to up(p), then fn's
+    quotient rule, d x = (d Y_e - x d w) / w, in exact rationals from the fixed-point integers.
+    Everything from the definitions and the same double inputs; no differences. Floats."""
+    from fractions import Fraction
+    x = [[-Fraction(strength) * c for c in row] for row in _action_fraction(components)]
+    es = [[[-Fraction(strength) * c for c in row] for row in _action_fraction(d)]
+          for d in directions]
+    total, dtotals, bits = expm_frechet(x, es)
+    # up(p) in e1, e2, e3, e+, e-: no = (e- + e+)/2, ni = e- - e+
+    q = [Fraction(c) for c in p]
+    half = sum(c * c for c in q) / 2
+    u = [q[0], q[1], q[2], Fraction(1, 2) - half, Fraction(1, 2) + half]
+
+    def apply(m):
+        return [sum(Fraction(m[i][j]) * u[j] for j in range(5)) / (1 << bits) for i in range(5)]
+
+    y = apply(total)
+    weight = y[3] + y[4]                       # -ni.Y
+    image = [y[i] / weight for i in range(3)]
+    derivatives = []
+    for d in dtotals:
+        dy = apply(d)
+        dweight = dy[3] + dy[4]
+        derivatives.append([float((dy[i] - image[i] * dweight) / weight) for i in range(3)])
+    return [float(c) for c in image], derivatives

@@ -292,6 +292,10 @@ public:
   /// (Compact.h order) of B(p) (generatorAt(p), in space, before the factor -strength):
   /// byBivector[10 j + c] = d out_j / d B_c. For a parameter theta of the generators,
   /// d out / d theta = sum_c byBivector[10 j + c] d B_c / d theta.
+  /// Next to a strong dilation (a similarity's bivector with a strong hyperbolic plane) it is
+  /// computed in closed form; next to a strong boost between two points (a hyperbolic 2-blade that
+  /// is not a similarity's: no closed form yet) it returns false, as mapWithWeightDerivatives
+  /// (docs/conventions.md section 3 item 15).
   bool mapWithBivectorDerivative(
     Vec3 p, double strength, ExponentialRule rule, Vec3& out, double* byBivector) const;
 
