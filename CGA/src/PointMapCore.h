@@ -1376,6 +1376,12 @@ inline bool strongSandwichLane(const double* b, bool& similarity)
   {
     return false;
   }
+  // The strong lanes whose split is not exact (beside point pairs) take strongImageByFixedPoints,
+  // whose tangents follow the fixed points as b moves: the dual numbers' derivative is theirs.
+  if (!strongSandwichIsExact(unit))
+  {
+    return false;
+  }
   similarity = similarityLanes(unit.u);
   return true;
 }

@@ -228,9 +228,11 @@ bool PointPairField::mapWithExponentDerivative(
   }
   // Where the map took the strong sandwich of a similarity's bivector, the tangents along seeds
   // that leave the similarities (B's e_i^no parts) are the derivative of parts that are exactly 0
-  // at b: the closed form instead. Other strong lanes (a hyperbolic 2-blade with e_i^no parts)
+  // at b: the closed form instead. Strong 2-blades with e_i^no parts (a boost between two points)
   // have no closed form yet and their tangents miss the derivative (measured: up to beyond its
-  // size): refused, not answered wrong (docs/conventions.md section 3 item 15).
+  // size): refused, not answered wrong (docs/conventions.md section 3 item 15). The strong lanes
+  // beside point pairs (strongImageByFixedPoints) are not among them: their tangents follow the
+  // fixed points and are the derivative (Python.StrongDerivatives).
   bool similarity = false;
   if (rule == ExponentialRule::Exact && core::strongSandwichLane(b, similarity))
   {

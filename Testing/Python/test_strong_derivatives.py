@@ -8,7 +8,9 @@ run).
 
 Fields (falloff 1, epsilon 1e-10, strength +1 and -1: the dilation grows or shrinks): a lone
 dilation, a dilation with a rotation by 2 about its axis (a loxodromic map), and that with a
-translation 0.4 away (the fixed point is not on the field's center), with the factor e^c,
+translation 0.4 away (the fixed point is not on the field's center), and a dilation beside a
+point pair (B is not a similarity's there: the image through the map's two fixed points, whose dual
+numbers' tangents follow the fixed points; refused before, as a strong boost), with the factor e^c,
 c = 5, 30, 300 on the location; points on the location and 1e-9, 1e-5 and 1 from it (c at 1e-9
 is that on the location, at 1e-5 half of it, at 1 the map is far from strong). Each
 derivative must lie within
@@ -69,6 +71,10 @@ def configurations():
                   generator("translation", X2, V2, 0.1),
                   generator("translation", tuple(-(2.0 * a + b) for a, b in zip(X1, X2)), V1,
                             0.0)], X1)]
+            fields.append(("dilation beside a point pair",
+                 [of("dilation", X1, exponent), generator("pair", X2, V2, 0.3),
+                  generator("dilation", mirror, V2, 0.0),
+                  generator("pair", tuple(-b for b in X2), V1, 0.0)], X1))
             for name, generators, location in fields:
                 yield (f"{name}, c {exponent:g}, strength {strength:g}", strength, generators,
                        offsets(location, DISTANCES, DIRECTIONS[:1]), False)
