@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace cga
 {
@@ -761,87 +762,73 @@ void GeneratorTree::addNear(const int* starts, std::size_t count, const double* 
   }
 }
 
+// The lanes in one vector (Eight), each moment's terms summed in a register (they are consecutive),
+// in the same order and with the same bits as the loops over lanes through arrays before.
 BOOSTED_LANE_CLONES
 void GeneratorTree::addMultipole(const Node& node, const double* moments, int degree, const double* p,
                                  double* sums) const
 {
+  static_assert(L == 8, "one vector of Eight per block of lanes");
   const int M = monomialCount(degree);
-  alignas(64) double u[3][L], q[L], scale[L];
-  alignas(64) double power[kMaxMoments][L], e[kMaxMoments][L];
+  alignas(64) double uLanes[3][L], qLanes[L], scaleLanes[L];
   for (int l = 0; l < L; ++l)
   {
     const double d0 = p[l] - node.center[0], d1 = p[L + l] - node.center[1],
                  d2 = p[2 * L + l] - node.center[2];
     const double D = this->Falloff * (d0 * d0 + d1 * d1 + d2 * d2) + this->Epsilon;
     const double rootKappa = std::sqrt(this->Falloff / D);
-    q[l] = node.radius * rootKappa; // 0 for a node of coincident generators (only mu_0 != 0)
-    u[0][l] = rootKappa * d0;
-    u[1][l] = rootKappa * d1;
-    u[2][l] = rootKappa * d2;
-    scale[l] = 1.0 / D;
-    power[0][l] = 1.0;
+    qLanes[l] = node.radius * rootKappa; // 0 for a node of coincident generators (only mu_0 != 0)
+    uLanes[0][l] = rootKappa * d0;
+    uLanes[1][l] = rootKappa * d1;
+    uLanes[2][l] = rootKappa * d2;
+    scaleLanes[l] = 1.0 / D;
   }
+  Eight u[3], q, scale;
+  std::memcpy(u, uLanes, sizeof u);
+  std::memcpy(&q, qLanes, sizeof q);
+  std::memcpy(&scale, scaleLanes, sizeof scale);
+  Eight power[kMaxMoments], e[kMaxMoments];
+  power[0] = Eight{} + 1.0;
   for (int m = 1; m < M; ++m)
   {
-    const double* parent = power[this->MonomialParent[static_cast<std::size_t>(m)]];
-    const double* axis = u[this->MonomialAxis[static_cast<std::size_t>(m)]];
-    for (int l = 0; l < L; ++l)
-    {
-      power[m][l] = parent[l] * axis[l];
-    }
-  }
-  for (int m = 0; m < M; ++m)
-  {
-    for (int l = 0; l < L; ++l)
-    {
-      e[m][l] = 0.0;
-    }
+    power[m] = power[this->MonomialParent[static_cast<std::size_t>(m)]] *
+      u[this->MonomialAxis[static_cast<std::size_t>(m)]];
   }
   const std::size_t termCount = this->TermsOfDegree[static_cast<std::size_t>(degree)];
-  for (std::size_t t = 0; t < termCount; ++t)
+  for (std::size_t t = 0; t < termCount;)
   {
-    const Term& term = this->Terms[t];
-    const double* from = power[term.monomial];
-    double* to = e[term.moment];
-    for (int l = 0; l < L; ++l)
+    const int moment = this->Terms[t].moment;
+    Eight sum = {};
+    for (; t < termCount && this->Terms[t].moment == moment; ++t)
     {
-      to[l] += term.coefficient * from[l];
+      sum += this->Terms[t].coefficient * power[this->Terms[t].monomial];
     }
+    e[moment] = sum;
   }
   // Each moment's coefficient (b! e_b, the moments being mu_b / b!) times q^|b| / D.
   int n = 0;
-  double out[kComponents][L] = {};
+  Eight out[kComponents] = {};
   for (int m = 0; m < M; ++m)
   {
     if (this->MonomialDegree[static_cast<std::size_t>(m)] != n)
     {
       n = this->MonomialDegree[static_cast<std::size_t>(m)];
-      for (int l = 0; l < L; ++l)
-      {
-        scale[l] *= q[l];
-      }
+      scale *= q;
     }
     // e scale once per monomial (the same bits: (e scale) mu, left to right, as before).
     const double* mu = moments + m * kComponents;
-    double term[L];
-    for (int l = 0; l < L; ++l)
-    {
-      term[l] = e[m][l] * scale[l];
-    }
+    const Eight term = e[m] * scale;
     for (int c = 0; c < kComponents; ++c)
     {
-      for (int l = 0; l < L; ++l)
-      {
-        out[c][l] += term[l] * mu[c];
-      }
+      out[c] += term * mu[c];
     }
   }
   for (int c = 0; c < kComponents; ++c)
   {
-    for (int l = 0; l < L; ++l)
-    {
-      sums[c * L + l] += out[c][l];
-    }
+    Eight sum;
+    std::memcpy(&sum, sums + c * L, sizeof sum);
+    sum += out[c];
+    std::memcpy(sums + c * L, &sum, sizeof sum);
   }
 }
 

@@ -41,6 +41,11 @@ namespace cga
 {
 namespace detail
 {
+// GCC's vector extension, in the tree's loops where its own vectorization did worse: eight
+// doubles (the kLanes points of a block, or eight of a bivector's ten components) and two.
+typedef double Eight __attribute__((vector_size(8 * sizeof(double))));
+typedef double Two __attribute__((vector_size(2 * sizeof(double))));
+
 /// One use of a node's expansion, recorded for the test that splits the bound's excess
 /// (TestGeneratorTree.cpp, BoundSplit): the node, its degree, the cube of points it was used for
 /// (center, radius; the leaf's for a per-point use) and the quantities its degree was chosen from

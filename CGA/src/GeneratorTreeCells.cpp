@@ -76,10 +76,8 @@ long long floorDivide(long long a, int shift)
 
 namespace
 {
-// The ten components of a bivector in registers: eight in one vector, two in another (GCC's
-// vector extension; the compiler does not vectorize the loop of ten over arrays that may alias).
-typedef double Eight __attribute__((vector_size(8 * sizeof(double))));
-typedef double Two __attribute__((vector_size(2 * sizeof(double))));
+// The ten components of a bivector in registers: eight in one vector, two in another (the
+// compiler does not vectorize the loop of ten over arrays that may alias).
 struct Components
 {
   Eight low = {};
@@ -493,49 +491,45 @@ void GeneratorTree::shiftLocal(const double* parent, const double* parentCenter,
   }
 }
 
-// sums[c * L + l] += the local polynomial at lane l's point.
+// sums[c * L + l] += the local polynomial at lane l's point. The lanes in one vector (Eight): the
+// compiler's own vectorization of the loops over lanes shuffled the ten components instead
+// (16 % of the mapping's samples at Tolerance 0.1, M = 100,000).
 BOOSTED_LANE_CLONES
 void GeneratorTree::addLocal(const double* local, const double* center, double radius, const double* p,
                              double* sums) const
 {
+  static_assert(L == 8, "one vector of Eight per block of lanes");
   const int M = this->MomentCount;
   const double inverse = 1.0 / radius;
-  alignas(64) double y[3][L], power[kMaxMomentsOfDegree][L];
-  for (int l = 0; l < L; ++l)
+  Eight y[3];
+  for (int k = 0; k < 3; ++k)
   {
-    for (int k = 0; k < 3; ++k)
-    {
-      y[k][l] = (p[k * L + l] - center[k]) * inverse;
-    }
-    power[0][l] = 1.0;
+    Eight coordinate;
+    std::memcpy(&coordinate, p + k * L, sizeof coordinate);
+    y[k] = (coordinate - center[k]) * inverse;
   }
+  Eight power[kMaxMomentsOfDegree];
+  power[0] = Eight{} + 1.0;
   for (int m = 1; m < M; ++m)
   {
-    const double* from = power[this->MonomialParent[static_cast<std::size_t>(m)]];
-    const double* axis = y[this->MonomialAxis[static_cast<std::size_t>(m)]];
-    for (int l = 0; l < L; ++l)
-    {
-      power[m][l] = from[l] * axis[l];
-    }
+    power[m] = power[this->MonomialParent[static_cast<std::size_t>(m)]] *
+      y[this->MonomialAxis[static_cast<std::size_t>(m)]];
   }
-  alignas(64) double out[kComponents][L] = {};
+  Eight out[kComponents] = {};
   for (int m = 0; m < M; ++m)
   {
     const double* coefficients = local + m * kComponents;
     for (int c = 0; c < kComponents; ++c)
     {
-      for (int l = 0; l < L; ++l)
-      {
-        out[c][l] += coefficients[c] * power[m][l];
-      }
+      out[c] += coefficients[c] * power[m];
     }
   }
   for (int c = 0; c < kComponents; ++c)
   {
-    for (int l = 0; l < L; ++l)
-    {
-      sums[c * L + l] += out[c][l];
-    }
+    Eight sum;
+    std::memcpy(&sum, sums + c * L, sizeof sum);
+    sum += out[c];
+    std::memcpy(sums + c * L, &sum, sizeof sum);
   }
 }
 } // namespace detail
