@@ -546,9 +546,8 @@ bool vtkPointPairFitSolver::SearchKinds(const vtkPointPairFitProblem& problem,
   vtkPointPairFitResult& result, std::vector<bool>& identified, int& fits, std::string& error)
 {
   using Kind = cga::GeneratorKind;
-  const Kind kinds[] = { Kind::PointPair, Kind::Rotation, Kind::Twist, Kind::Dilation,
+  const Kind kinds[KindCount] = { Kind::PointPair, Kind::Rotation, Kind::Twist, Kind::Dilation,
     Kind::Translation };
-  constexpr int kindCount = 5;
   const std::size_t count = start.size();
   vtkPointPairFitResult best;
   if (!Solve(problem, start, start, 0.0, 0.2, best, error))
@@ -560,22 +559,26 @@ bool vtkPointPairFitSolver::SearchKinds(const vtkPointPairFitProblem& problem,
   const double initialData = best.InitialData;
   const double margin = separation * initialData;
   std::vector<cga::GeneratorParameters> bestStart = start; // the initial values, the best kinds
-  std::vector<std::array<double, kindCount>> costs(count);
+  std::vector<std::array<double, KindCount>> costs(count);
   for (int sweep = 0; sweep < MaximumKindSweeps; ++sweep)
   {
     // Sweep s reports progress in [1 - 0.8 / 2^s, 1 - 0.8 / 2^(s+1)].
     const double sweepBegin = 1.0 - 0.8 * std::ldexp(1.0, -sweep);
-    const double trialShare = 0.4 * std::ldexp(1.0, -sweep) / (count * (kindCount - 1));
+    const double trialShare = 0.4 * std::ldexp(1.0, -sweep) / (count * (KindCount - 1));
     int trial = 0;
     bool changed = false;
     for (std::size_t g = 0; g < count; ++g)
     {
-      for (int k = 0; k < kindCount; ++k)
+      // The kind g has when its turn begins is not fitted again after another replaced it in
+      // this turn (the fits stay within MaximumKindFits): its cost is the best's before.
+      const Kind original = bestStart[g].kind;
+      const double originalCost = best.Cost;
+      for (int k = 0; k < KindCount; ++k)
       {
         const Kind current = bestStart[g].kind;
-        if (kinds[k] == current)
+        if (kinds[k] == original)
         {
-          costs[g][k] = best.Cost;
+          costs[g][k] = originalCost;
           continue;
         }
         std::vector<cga::GeneratorParameters> candidateStart = bestStart;
@@ -617,7 +620,7 @@ bool vtkPointPairFitSolver::SearchKinds(const vtkPointPairFitProblem& problem,
   for (std::size_t g = 0; g < count; ++g)
   {
     const Kind chosen = bestStart[g].kind;
-    for (int k = 0; k < kindCount; ++k)
+    for (int k = 0; k < KindCount; ++k)
     {
       const bool contains = chosen == Kind::Rotation && kinds[k] == Kind::Twist;
       if (kinds[k] != chosen && !contains && !(costs[g][k] > best.Cost + margin))

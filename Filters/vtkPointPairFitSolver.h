@@ -73,19 +73,35 @@ bool Solve(const vtkPointPairFitProblem& problem,
   const std::vector<cga::GeneratorParameters>& first, double progressBegin, double progressEnd,
   vtkPointPairFitResult& result, std::string& error);
 
+constexpr int MaximumKindSweeps = 4;
+constexpr int KindCount = 5;
+
+/// The most fits SearchKinds runs for `generators` generators (MaximumKindSweeps sweeps of
+/// KindCount - 1 kinds each, after the first fit).
+constexpr double MaximumKindFits(double generators)
+{
+  return 1.0 + MaximumKindSweeps * (KindCount - 1) * generators;
+}
+
+/// The bound of SearchKinds' work that MaximumKindSearchWork limits: every fit at its most
+/// iterations (each an evaluation, plus the start's) of every point by every generator.
+inline double KindSearchWork(double generators, double points, int maximumIterations)
+{
+  return MaximumKindFits(generators) * (maximumIterations + 1.0) * points * generators;
+}
+
 /// The kinds search of FitKinds, a greedy coordinate search over the discrete kinds: fit `start`
-/// as it is; then, generator by generator, fit every other kind in its place (that generator's
-/// unknowns restarted from its initial values, the others from the best fit so far) and keep a
-/// kind whose converged cost is lower than the best by more than `separation` times the initial
-/// data cost (a Rotation also replaces a Twist whose cost it matches within that margin: the
-/// twist with its pitch contains it); sweep again until a sweep changes no kind, at most
+/// as it is; then, generator by generator, fit every kind other than the one it has when its turn
+/// begins in its place (that generator's unknowns restarted from its initial values, the others
+/// from the best fit so far) and keep a kind whose converged cost is lower than the best by more
+/// than `separation` times the initial data cost (a Rotation also replaces a Twist whose cost it
+/// matches within that margin: the twist with its pitch contains it); sweep again until a sweep changes no kind, at most
 /// MaximumKindSweeps sweeps. `identified[g]` is true when in the last sweep every other kind of
 /// generator g cost more than the best by more than the margin (the Twist's cost is not counted
 /// against a Rotation). `result` is the best fit (Improved: below the initial data cost), its
 /// Iterations the sum over every fit run, `fits` their number. False as Solve is, for the first
 /// fit; a candidate kind that cannot be evaluated (a point sent to infinity) counts as
 /// infinitely costly.
-constexpr int MaximumKindSweeps = 4;
 bool SearchKinds(const vtkPointPairFitProblem& problem,
   const std::vector<cga::GeneratorParameters>& start, double separation,
   vtkPointPairFitResult& result, std::vector<bool>& identified, int& fits, std::string& error);

@@ -1246,7 +1246,7 @@ BOOSTED_COLD void sandwichWithStrongLanes(const T* b, const UnitBivector<T>& uni
 /// plane squares of B below kNearlyNilpotent m^2, m = maxAbs(b)) for strongSandwichLane.
 /// mapPointBy keeps its own copy of these lines: called there, the helper changed the kernel's
 /// AVX-512, AVX2 and baseline code (registers, stack) for the same arithmetic; the two must stay
-/// the same test.
+/// the same test (NearlyNilpotent.*, CGA/Testing/TestNearlyNilpotent.cpp, fails where they part).
 template <typename T>
 BOOSTED_FORCE_INLINE Mask<T> nearlyNilpotentLanes(const T* b, const T& m)
 {

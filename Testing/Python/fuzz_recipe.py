@@ -49,6 +49,12 @@ NAMES = ["Direction", "Weight", "Normals", "", "missing", "x" * 300, "\u00dcn\u0
 ROW_KINDS = {"Generator": (7, [0, 1, 2, 3, 4])}
 BAD_KIND_RATE = 0.04
 
+# Setters the fuzz holds at or below a value: set to it first in every trial of a class that has
+# one, and a larger drawn value is lowered to it (NaN stays: a refusal). The fit filter's FitKinds
+# search may do up to MaximumKindSearchWork units of work (README, "Kinds": up to about 14 us
+# each); its default, minutes, is beyond the driver's --timeout, 1e6 is seconds.
+HELD_AT_MOST = {"MaximumKindSearchWork": 1e6}
+
 # The value regimes of a trial: most trials stay where the classes do real work, so that valid
 # outputs are checked as often as refusals.
 REGIMES = [("typical", 0.55), ("extreme", 0.33), ("non-finite", 0.12)]
@@ -338,6 +344,8 @@ def mutation(rng, values, model, rows):
     if all(t == "float" for t in types) and len(types) > 1 and rng.random() < 0.1:
         return ("Set" + name, [0.0] * len(types))  # a zero vector
     arguments = [values.value(t, bounds) for t in types]
+    if name in HELD_AT_MOST:
+        arguments = [a if not a > HELD_AT_MOST[name] else HELD_AT_MOST[name] for a in arguments]
     if name.endswith("Range") and len(types) == 2 and rng.random() < 0.85:
         arguments.sort(key=lambda x: (math.isnan(x), x))  # mostly [min, max] (a NaN stays)
     return ("Set" + name, arguments)
@@ -350,7 +358,8 @@ def make_recipe(models, seed, trial):
     regime = rng.choices([r for r, _ in REGIMES], [w for _, w in REGIMES])[0]
     values = Values(rng, regime)
     rows = {row: None for row in model.lists}  # None: the class's own initial count
-    calls = []
+    calls = [("Set" + name, [value]) for name, value in sorted(HELD_AT_MOST.items())
+             if name in model.setters]
     first = None
     for port, (required, optional) in enumerate(model.ports):
         if not optional or rng.random() < 0.5:
