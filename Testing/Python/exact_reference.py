@@ -222,6 +222,19 @@ def field_bivector_derivatives(generators, p, falloff, epsilon):
     return derivatives
 
 
+def frechet_expm(x, e):
+    """(expm(X), L(X, E)) for 5x5 mpmath matrices at the working precision: the Frechet derivative
+    L(X, E) = d/dt expm(X + t E) at t = 0 is the upper right block of expm([[X, E], [0, X]])
+    (mpmath.expm of the 10x10 block matrix; no differences)."""
+    block = mpmath.zeros(10, 10)
+    for a in range(5):
+        for c in range(5):
+            block[a, c] = block[a + 5, c + 5] = x[a, c]
+            block[a, c + 5] = e[a, c]
+    exponential = mpmath.expm(block)
+    return exponential[0:5, 0:5], exponential[0:5, 5:10]
+
+
 def jacobian_of_bivector(s, ds, p, strength, digits=DIGITS):
     """d image / d p (row-major 3x3, mpf) of p -> fn(expm(X(p)) up(p)), X = -strength A(s), for
     the bivector s at p and its derivatives ds[j] = ds/dp_j, without differences: the derivative
@@ -240,17 +253,11 @@ def jacobian_of_bivector(s, ds, p, strength, digits=DIGITS):
         columns = []
         for j in range(3):
             e = action([[-mpf(strength) * c for c in row] for row in ds[j]])
-            block = mpmath.zeros(10, 10)
-            for a in range(5):
-                for c in range(5):
-                    block[a, c] = block[a + 5, c + 5] = x[a, c]
-                    block[a, c + 5] = e[a, c]
-            exponential = mpmath.expm(block)
-            y = exponential[0:5, 0:5] * u
+            exponential, frechet = frechet_expm(x, e)
+            y = exponential * u
             tangent = [mpf(0)] * 5
             tangent[j] = mpf(1)
-            dy = exponential[0:5, 5:10] * u + exponential[0:5, 0:5] * mpmath.matrix(
-                combine((1, tangent), (mpf(p[j]), NI)))
+            dy = frechet * u + exponential * mpmath.matrix(combine((1, tangent), (mpf(p[j]), NI)))
             y, dy = [y[i] for i in range(5)], [dy[i] for i in range(5)]
             weight, dweight = -dot(NI, y), -dot(NI, dy)
             columns.append([dy[i] / weight - y[i] * dweight / weight ** 2 for i in range(3)])
