@@ -533,20 +533,15 @@ BOOSTED_FORCE_INLINE Mask<ValueOf<T>> similarityLanes(const T* u)
 }
 
 /// Per lane, whether strongHyperbolicSandwich's parts that its factor e^{2a} multiplies come out
-/// exact where they vanish (docs/conventions.md section 2 item 12): B a 2-blade (W = 0: its plane
-/// is u itself) or a similarity's bivector (similarityLanes: its split is exact in the components
-/// that matter). Elsewhere (a strong plane beside a second one and a transversion part)
-/// strongImageByFixedPoints maps instead.
+/// exact where they vanish (docs/conventions.md section 2 item 12): B a similarity's bivector
+/// (similarityLanes: its growing null direction is ni, its split exact in the components that
+/// matter). Elsewhere neither fixed point is ni, the part X- that e^{2a} multiplies is of order
+/// |p - r|^2 next to the repeller r with an error of 2^-53 |X| (a 2-blade's too: a boost between two
+/// points lost e^{4a} 2^-53 of its image there), and strongImageByFixedPoints maps instead.
 template <typename T>
 BOOSTED_FORCE_INLINE Mask<ValueOf<T>> strongSandwichIsExact(const UnitBivector<T>& unit)
 {
-  using V = ValueOf<T>;
-  Mask<V> blade = equalTo(valueOf(unit.w[0]), V{});
-  for (int i = 1; i < kQuadvector; ++i)
-  {
-    blade = maskAnd(blade, equalTo(valueOf(unit.w[i]), V{}));
-  }
-  return maskOr(blade, similarityLanes(unit.u));
+  return similarityLanes(unit.u);
 }
 
 /// The elliptic part B2 = (wu/2 - l2 u)/(l1 - l2) of u = B1 + B2 (from <W u>_2 = 2 (l1 B2 + l2 B1),
@@ -581,8 +576,8 @@ BOOSTED_FORCE_INLINE T ellipticPart(const T* u, const T& l1, const T& l2, const 
 /// each part multiplied by its exact factor. Since the image is homogeneous, the three are scaled by
 /// a power of two 2^-k that brings the largest of their no and Euclidean parts near 1, and e^{2a} is
 /// applied as e^a, 2^-k, e^a in turn, so that nothing overflows while the image is in range
-/// (a up to kStrongHyperbolicLimit). The caller takes it where strongSandwichIsExact: B a 2-blade
-/// (B2 = 0, Y = X) or a similarity's bivector, whose split takes its exact values (similarityLanes:
+/// (a up to kStrongHyperbolicLimit). The caller takes it where strongSandwichIsExact: B a
+/// similarity's bivector (a 2-blade among them: B2 = 0, Y = X), whose split takes its exact values (similarityLanes:
 /// l1 = d^2, l2 = -|E|^2, B2's E = u's and no^ni = 0), so that N1 = B1/|d| has no e_ij part and
 /// the no^ni component +-1 to the bit, and the parts that e^{2a} multiplies keep their exact zeros.
 template <typename T>
@@ -707,6 +702,49 @@ BOOSTED_FORCE_INLINE void fixedPointAlong(const T* u, const T* f, T* point)
   }
 }
 
+/// The two finite fixed points of exp(B), B = m u with a strong hyperbolic plane (l1 > 0, the square
+/// of u's hyperbolic plane, l2 <= 0 the other's, wu = <W u>_2) beside an e_i^no part: the split's
+/// null directions, projected from no + ni (whose product with every null vector is non-zero), as
+/// first guesses, refined on B's own field (fixedPointAlong). Returns u's dilation rate d' = d + A.a
+/// at the attractor a (negative: the fixed point where it is the smaller); r is the repeller.
+template <typename T>
+BOOSTED_FORCE_INLINE T attractorAndRepeller(const UnitBivector<T>& unit, const T& l1, const T& l2, const T* wu,
+                                            T* attractor, T* repeller)
+{
+  using V = ValueOf<T>;
+  const T* u = unit.u;
+  T n1[kBivector];
+  const T root1 = ellipticPart(u, l1, l2, wu, n1);
+  for (int c = 0; c < kBivector; ++c)
+  {
+    n1[c] = (u[c] - n1[c]) / root1;
+  }
+  // (P - z)/2 grows by e^{2a}, (P + z)/2 shrinks.
+  T probe[kVector] = {};
+  probe[NO] = splat<T>(1.0);
+  probe[NI] = splat<T>(1.0);
+  T z[kVector], projection[kVector], grows[kVector], shrinks[kVector];
+  contract(probe, n1, z);
+  contract(z, n1, projection);
+  for (int i = 0; i < kVector; ++i)
+  {
+    grows[i] = 0.5 * (projection[i] - z[i]);
+    shrinks[i] = 0.5 * (projection[i] + z[i]);
+  }
+  T first[3], second[3];
+  fixedPointAlong(u, grows, first);
+  fixedPointAlong(u, shrinks, second);
+  const T a[3] = { u[E1NO], u[E2NO], u[E3NO] };
+  const T rateFirst = dot3(first, a) + u[NONI], rateSecond = dot3(second, a) + u[NONI];
+  const Mask<V> swap = lessThan(valueOf(rateSecond), valueOf(rateFirst));
+  for (int i = 0; i < 3; ++i)
+  {
+    attractor[i] = select(swap, second[i], first[i]);
+    repeller[i] = select(swap, first[i], second[i]);
+  }
+  return select(swap, rateSecond, rateFirst);
+}
+
 /// The image of x = up(p) under exp(B), B = m u with a strong hyperbolic plane (l1 > 0, the square of
 /// u's hyperbolic plane, l2 <= 0 the other's, wu = <W u>_2) beside an e_i^no part, where neither
 /// fixed point is ni and the split of strongHyperbolicSandwich is not exact: through the map's two
@@ -725,39 +763,9 @@ void strongImageByFixedPoints(const UnitBivector<T>& unit, const T& l1, const T&
   using V = ValueOf<T>;
   const T* u = unit.u;
   const T m = asNumber<T>(unit.scale.usableOrOne());
-  T n1[kBivector];
-  const T root1 = ellipticPart(u, l1, l2, wu, n1);
-  for (int c = 0; c < kBivector; ++c)
-  {
-    n1[c] = (u[c] - n1[c]) / root1;
-  }
-  // The plane's two null directions, projected from no + ni (whose product with every null
-  // vector is non-zero): (P - z)/2 grows by e^{2a}, (P + z)/2 shrinks.
-  T probe[kVector] = {};
-  probe[NO] = splat<T>(1.0);
-  probe[NI] = splat<T>(1.0);
-  T z[kVector], projection[kVector], grows[kVector], shrinks[kVector];
-  contract(probe, n1, z);
-  contract(z, n1, projection);
-  for (int i = 0; i < kVector; ++i)
-  {
-    grows[i] = 0.5 * (projection[i] - z[i]);
-    shrinks[i] = 0.5 * (projection[i] + z[i]);
-  }
-  T first[3], second[3];
-  fixedPointAlong(u, grows, first);
-  fixedPointAlong(u, shrinks, second);
-  // The attractor is the fixed point where B's dilation rate d' = d + A.f is negative.
-  const T a[3] = { u[E1NO], u[E2NO], u[E3NO] };
-  const T rateFirst = dot3(first, a) + u[NONI], rateSecond = dot3(second, a) + u[NONI];
-  const Mask<V> swap = lessThan(valueOf(rateSecond), valueOf(rateFirst));
   T attractor[3], repeller[3];
-  for (int i = 0; i < 3; ++i)
-  {
-    attractor[i] = select(swap, second[i], first[i]);
-    repeller[i] = select(swap, first[i], second[i]);
-  }
-  const T rate = select(swap, rateSecond, rateFirst);
+  const T rate = attractorAndRepeller(unit, l1, l2, wu, attractor, repeller);
+  const T a[3] = { u[E1NO], u[E2NO], u[E3NO] };
   // The turn at the attractor: omega = -2 m n', n' = n_E + attractor x A.
   const T nE[3] = { u[E23], -u[E13], u[E12] };
   T moved[3], omega[3];
@@ -813,10 +821,30 @@ void strongImageByFixedPoints(const UnitBivector<T>& unit, const T& l1, const T&
   {
     onRepeller = maskOr(onRepeller, maskNot(finiteLanes(valueOf(y[i]))));
   }
+  T stays[3] = { repeller[0], repeller[1], repeller[2] };
+  if constexpr (kHasTangents<T>)
+  {
+    // p on r stays r, but its tangents are not r's alone: r moves by dr, and p, left at dp - dr
+    // from it, is carried by exp(B)'s derivative there, e^{2 m d'} Q (d' and n' of B moved to r):
+    // r's value with the tangents of r + e^{2 m d'} Q (p - r).
+    const T rateAtRepeller = dot3(repeller, a) + u[NONI];
+    T movedAtRepeller[3], omegaAtRepeller[3], turnedOffset[3];
+    cross3(repeller, a, movedAtRepeller);
+    for (int i = 0; i < 3; ++i)
+    {
+      omegaAtRepeller[i] = (-2.0 * m) * (nE[i] + movedAtRepeller[i]);
+    }
+    rotatedBy(omegaAtRepeller, fromRepeller, turnedOffset);
+    const T growth = laneExp(m * rateAtRepeller);
+    for (int i = 0; i < 3; ++i)
+    {
+      stays[i] = withValueOf(onRepeller, repeller[i], repeller[i] + (turnedOffset[i] * growth) * growth);
+    }
+  }
   T image[3];
   for (int i = 0; i < 3; ++i)
   {
-    image[i] = select(onRepeller, repeller[i],
+    image[i] = select(onRepeller, stays[i],
       select(nearAttractor, attractor[i] + offset[i], repeller[i] + far[i]));
   }
   r[NO] = splat<T>(1.0);
@@ -1243,7 +1271,7 @@ BOOSTED_COLD void sandwichWithStrongLanes(const T* b, const UnitBivector<T>& uni
 }
 
 /// Per lane, whether the Exact rule maps b around p: mapPointBy's test (B nearly nilpotent: both
-/// plane squares of B below kNearlyNilpotent m^2, m = maxAbs(b)) for strongSandwichLane.
+/// plane squares of B below kNearlyNilpotent m^2, m = maxAbs(b)) for strongExponentLane.
 /// mapPointBy keeps its own copy of these lines: called there, the helper changed the kernel's
 /// AVX-512, AVX2 and baseline code (registers, stack) for the same arithmetic; the two must stay
 /// the same test (NearlyNilpotent.*, CGA/Testing/TestNearlyNilpotent.cpp, fails where they part).
@@ -1357,10 +1385,12 @@ void mapPointBy(const kernel::FieldArgs& args, T* b, const T* p, T* image, bool*
   toFlags<ValueOf<T>>(fieldMapped, mapped);
 }
 
-/// Whether mapPointBy's Exact rule maps the one exponent b (double) by strongHyperbolicSandwich
-/// (its lanes' decisions, for double), and then in `similarity` whether b is a similarity's
-/// bivector: the lanes whose d out / d b StrongSimilarityDerivative.h computes in closed form.
-inline bool strongSandwichLane(const double* b, bool& similarity)
+/// Whether mapPointBy's Exact rule maps the one exponent b (double) by its strong lanes
+/// (strongHyperbolicSandwich or strongImageByFixedPoints; its lanes' decisions, for double), and
+/// then in `similarity` whether b is a similarity's bivector: the lanes whose d out / d b
+/// StrongSimilarityDerivative.h computes in closed form (a similarity's, or conjugated to one by
+/// the inversion about the repeller).
+inline bool strongExponentLane(const double* b, bool& similarity)
 {
   similarity = false;
   if (nearlyNilpotentLanes(b, maxAbs(b)))
@@ -1373,12 +1403,6 @@ inline bool strongSandwichLane(const double* b, bool& similarity)
   detail::applyProduct<detail::kRightContraction>(unit.w, unit.u, wu);
   detail::planeSquares(unit.s, unit.w2, l1, l2);
   if (!strongLanes(unit, l1, true))
-  {
-    return false;
-  }
-  // The strong lanes whose split is not exact (beside point pairs) take strongImageByFixedPoints,
-  // whose tangents follow the fixed points as b moves: the dual numbers' derivative is theirs.
-  if (!strongSandwichIsExact(unit))
   {
     return false;
   }

@@ -226,17 +226,18 @@ bool PointPairField::mapWithExponentDerivative(
   {
     return false;
   }
-  // Where the map took the strong sandwich of a similarity's bivector, the tangents along seeds
-  // that leave the similarities (B's e_i^no parts) are the derivative of parts that are exactly 0
-  // at b: the closed form instead. Strong 2-blades with e_i^no parts (a boost between two points)
-  // have no closed form yet and their tangents miss the derivative (measured: up to beyond its
-  // size): refused, not answered wrong (docs/conventions.md section 3 item 15). The strong lanes
-  // beside point pairs (strongImageByFixedPoints) are not among them: their tangents follow the
-  // fixed points and are the derivative (Python.StrongDerivatives).
+  // On the strong lanes the tangents miss the derivative: where the map took the strong sandwich
+  // of a similarity's bivector, along seeds that leave the similarities (B's e_i^no parts) they are
+  // the derivative of parts that are exactly 0 at b; where it took the two fixed points (B with
+  // e_i^no parts), p on the repeller stays it and takes its tangents alone, without the factor
+  // e^{2a} that carries p's offset from the moved repeller. The closed form instead
+  // (docs/conventions.md section 3 item 15).
   bool similarity = false;
-  if (rule == ExponentialRule::Exact && core::strongSandwichLane(b, similarity))
+  if (rule == ExponentialRule::Exact && core::strongExponentLane(b, similarity))
   {
-    if (!similarity || !core::strongSimilarityExponentDerivative(b, relative, byExponent))
+    const bool computed = similarity ? core::strongSimilarityExponentDerivative(b, relative, byExponent)
+                                     : core::strongBoostExponentDerivative(b, relative, byExponent);
+    if (!computed)
     {
       return false; // out unwritten (byExponent is the callers' scratch)
     }

@@ -74,7 +74,7 @@ void solveFixedPoint(double d, const double* w, const double* v, double* x)
 }
 } // namespace
 
-bool strongSimilarityExponentDerivative(const double* b, const double* p, double* byExponent)
+bool strongSimilarityExponentDerivative(const double* b, const double* p, double* byExponent, double* image)
 {
   const double d = b[NONI];
   if (b[E1NO] != 0.0 || b[E2NO] != 0.0 || b[E3NO] != 0.0 || !(d != 0.0))
@@ -181,6 +181,15 @@ bool strongSimilarityExponentDerivative(const double* b, const double* p, double
     }
   }
   const double scale = growing ? 1.0 : shrink; // (x' - x) = scale U (e^mu qe)
+  if (image != nullptr)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      const Complex moved = u[j][0] * (expMu[0] * qe[0]) + u[j][1] * (expMu[1] * qe[1]) +
+        u[j][2] * (expMu[2] * qe[2]);
+      image[j] = (xHigh[j] + xLow[j]) + scale * moved.real();
+    }
+  }
   const double shift[3] = { -xHigh[0], -xHigh[1], -xHigh[2] };
   for (int k = 0; k < kBivector; ++k)
   {
@@ -234,6 +243,159 @@ bool strongSimilarityExponentDerivative(const double* b, const double* p, double
     {
       const double value =
         (u[j][0] * derivative[0] + u[j][1] * derivative[1] + u[j][2] * derivative[2]).real();
+      if (!std::isfinite(value))
+      {
+        return false;
+      }
+      byExponent[kBivector * j + k] = value;
+    }
+  }
+  return true;
+}
+
+namespace
+{
+/// The Euclidean field v(x) = n_E x x + |x|^2/2 A + C - (x.A + d) x of b (FixedPointImage.h): its
+/// zeros are the fixed points of exp(b), and it is linear in b.
+void fieldAt(const double* b, const double* x, double* v)
+{
+  const double n[3] = { b[E23], -b[E13], b[E12] }, a[3] = { b[E1NO], b[E2NO], b[E3NO] };
+  const double half = 0.5 * dot3(x, x), rate = dot3(x, a) + b[NONI];
+  double turn[3];
+  cross3(n, x, turn);
+  for (int i = 0; i < 3; ++i)
+  {
+    v[i] = turn[i] + half * a[i] + b[E1NI + i] - rate * x[i];
+  }
+}
+
+/// d out / d b at p on the repeller r (its image): r moves with b by dr = -Dv(r)^-1 v_e(r) along a
+/// seed e, and p, left behind at -dr from it, is carried by exp(b)'s derivative there,
+/// e^{2 d'} Q (d' = d + A.r, Q = exp(-2 [n']_x), n' = n_E + r x A): d out = (I - e^{2 d'} Q) dr.
+bool repellerDerivative(const double* b, const double* r, double* byExponent)
+{
+  const double a[3] = { b[E1NO], b[E2NO], b[E3NO] }, nE[3] = { b[E23], -b[E13], b[E12] };
+  const double alpha = dot3(r, a) + b[NONI];
+  double n[3], omega[3];
+  cross3(r, a, n);
+  for (int i = 0; i < 3; ++i)
+  {
+    n[i] += nE[i];
+    omega[i] = -2.0 * n[i];
+  }
+  const double growth = std::exp(alpha); // e^{d'}, applied twice
+  const double denominator = -alpha * (alpha * alpha + dot3(n, n));
+  for (int k = 0; k < kBivector; ++k)
+  {
+    double unit[kBivector] = {}, v[3], cross[3], dr[3], turned[3];
+    unit[k] = 1.0;
+    fieldAt(unit, r, v);
+    cross3(n, v, cross);
+    const double nv = dot3(n, v);
+    for (int i = 0; i < 3; ++i) // dr = -Dv^-1 v, Dv^-1 = (alpha^2 I + n n^T + alpha [n]_x) / denominator
+    {
+      dr[i] = -(alpha * alpha * v[i] + n[i] * nv + alpha * cross[i]) / denominator;
+    }
+    rotatedBy(omega, dr, turned);
+    for (int j = 0; j < 3; ++j)
+    {
+      const double value = dr[j] - (turned[j] * growth) * growth;
+      if (!std::isfinite(value))
+      {
+        return false;
+      }
+      byExponent[kBivector * j + k] = value;
+    }
+  }
+  return true;
+}
+
+/// sigma(T(-x) c ~T(-x)): the bivector c moved by -x, then inverted in the unit sphere (sigma:
+/// no -> ni/2, ni -> 2 no, e_i fixed; exact): E fixed, A and C swap with the factors 2 and 1/2, d
+/// changes sign.
+void movedAndInverted(const double* c, const double* x, double* out)
+{
+  const double t[3] = { -x[0], -x[1], -x[2] };
+  double moved[kBivector];
+  translateBivector(c, t, moved);
+  for (const int e : { E12, E13, E23 })
+  {
+    out[e] = moved[e];
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    out[E1NO + i] = 2.0 * moved[E1NI + i];
+    out[E1NI + i] = 0.5 * moved[E1NO + i];
+  }
+  out[NONI] = -moved[NONI];
+}
+} // namespace
+
+bool strongBoostExponentDerivative(const double* b, const double* p, double* byExponent)
+{
+  UnitBivector<double> unit;
+  unitBivector(b, unit, false);
+  double wu[kBivector], l1, l2, attractor[3], repeller[3];
+  detail::applyProduct<detail::kRightContraction>(unit.w, unit.u, wu);
+  detail::planeSquares(unit.s, unit.w2, l1, l2);
+  if (!(l1 > 0.0))
+  {
+    return false;
+  }
+  attractorAndRepeller(unit, l1, l2, wu, attractor, repeller);
+  if (p[0] == repeller[0] && p[1] == repeller[1] && p[2] == repeller[2])
+  {
+    return repellerDerivative(b, repeller, byExponent);
+  }
+  // About the repeller r, inverted: sigma(T(-r) b ~T(-r)) fixes infinity (r's image), a
+  // similarity's bivector whose e_i^no part, twice the field of b at r, is the rounding of r (a
+  // perturbation of b within its one-ulp sensitivity): set to 0. Its derivative maps p'' = inv(p - r)
+  // to out'' (out = r + inv(out'')), and the seeds move with it, e_i^no parts kept.
+  double similar[kBivector], field[3];
+  movedAndInverted(b, repeller, similar);
+  fieldAt(b, repeller, field);
+  double terms = std::fabs(b[NONI]) + std::fabs(b[E12]) + std::fabs(b[E13]) + std::fabs(b[E23]);
+  for (int i = 0; i < 3; ++i)
+  {
+    terms += std::fabs(b[E1NI + i]) + std::fabs(b[E1NO + i]) * (1.0 + std::fabs(repeller[i]));
+  }
+  const double size = terms * (1.0 + std::sqrt(dot3(repeller, repeller)));
+  for (int i = 0; i < 3; ++i)
+  {
+    if (!(std::fabs(field[i]) <= 0x1p-40 * size)) // not a fixed point (or not finite)
+    {
+      return false;
+    }
+    similar[E1NO + i] = 0.0;
+  }
+  const double offset[3] = { p[0] - repeller[0], p[1] - repeller[1], p[2] - repeller[2] };
+  double pInverted[3], byInverted[3 * kBivector], imageInverted[3];
+  inverted(offset, pInverted);
+  if (!strongSimilarityExponentDerivative(similar, pInverted, byInverted, imageInverted))
+  {
+    return false;
+  }
+  // d inv(y) = (I - 2 y y^T / |y|^2) / |y|^2 at y = out'', with y scaled by a power of two.
+  const double down = 1.0 / vectorScale(imageInverted);
+  const double y[3] = { imageInverted[0] * down, imageInverted[1] * down, imageInverted[2] * down };
+  const double ySquare = dot3(y, y);
+  for (int k = 0; k < kBivector; ++k)
+  {
+    double unitSeed[kBivector] = {}, seed[kBivector], column[3];
+    unitSeed[k] = 1.0;
+    movedAndInverted(unitSeed, repeller, seed);
+    for (int i = 0; i < 3; ++i)
+    {
+      column[i] = 0.0;
+      for (int c = 0; c < kBivector; ++c)
+      {
+        column[i] += byInverted[kBivector * i + c] * seed[c];
+      }
+    }
+    const double along = 2.0 * dot3(y, column) / ySquare;
+    for (int j = 0; j < 3; ++j)
+    {
+      const double value = ((column[j] - along * y[j]) / ySquare * down) * down;
       if (!std::isfinite(value))
       {
         return false;

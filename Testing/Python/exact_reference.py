@@ -10,6 +10,8 @@ the matrix exponential of that 5x5 map (mpmath.expm). The image of p under
 K = exp(-strength B(p)), B(p) = sum_i w_i G_i / (k |p - x_i|^2 + eps), is fn(expm(-strength
 A(B)) up(p)): the Euclidean part divided by -ni.Y. Every input double enters exactly (mpf(float)).
 """
+import functools
+import operator
 import random
 
 import mpmath
@@ -222,6 +224,19 @@ def field_bivector_derivatives(generators, p, falloff, epsilon):
     return derivatives
 
 
+def frechet_expm(x, e):
+    """(expm(X), L(X, E)) for 5x5 mpmath matrices at the working precision: the Frechet derivative
+    L(X, E) = d/dt expm(X + t E) at t = 0 is the upper right block of expm([[X, E], [0, X]])
+    (mpmath.expm of the 10x10 block matrix; no differences)."""
+    block = mpmath.zeros(10, 10)
+    for a in range(5):
+        for c in range(5):
+            block[a, c] = block[a + 5, c + 5] = x[a, c]
+            block[a, c + 5] = e[a, c]
+    exponential = mpmath.expm(block)
+    return exponential[0:5, 0:5], exponential[0:5, 5:10]
+
+
 def jacobian_of_bivector(s, ds, p, strength, digits=DIGITS):
     """d image / d p (row-major 3x3, mpf) of p -> fn(expm(X(p)) up(p)), X = -strength A(s), for
     the bivector s at p and its derivatives ds[j] = ds/dp_j, without differences: the derivative
@@ -240,17 +255,11 @@ def jacobian_of_bivector(s, ds, p, strength, digits=DIGITS):
         columns = []
         for j in range(3):
             e = action([[-mpf(strength) * c for c in row] for row in ds[j]])
-            block = mpmath.zeros(10, 10)
-            for a in range(5):
-                for c in range(5):
-                    block[a, c] = block[a + 5, c + 5] = x[a, c]
-                    block[a, c + 5] = e[a, c]
-            exponential = mpmath.expm(block)
-            y = exponential[0:5, 0:5] * u
+            exponential, frechet = frechet_expm(x, e)
+            y = exponential * u
             tangent = [mpf(0)] * 5
             tangent[j] = mpf(1)
-            dy = exponential[0:5, 5:10] * u + exponential[0:5, 0:5] * mpmath.matrix(
-                combine((1, tangent), (mpf(p[j]), NI)))
+            dy = frechet * u + exponential * mpmath.matrix(combine((1, tangent), (mpf(p[j]), NI)))
             y, dy = [y[i] for i in range(5)], [dy[i] for i in range(5)]
             weight, dweight = -dot(NI, y), -dot(NI, dy)
             columns.append([dy[i] / weight - y[i] * dweight / weight ** 2 for i in range(3)])
@@ -339,10 +348,27 @@ def _fraction(x):
     return Fraction(x)
 
 
+@functools.lru_cache(maxsize=None)
+def _unit_arrays():
+    """bivector_from_components of the ten unit components: exact (entries 0, +-1/2, +-1), built
+    once."""
+    return [bivector_from_components([1 if i == k else 0 for i in range(10)]) for k in range(10)]
+
+
+@functools.lru_cache(maxsize=None)
+def _unit_actions():
+    """action() of the ten unit components in exact rationals (entries multiples of 1/4), built
+    once."""
+    from fractions import Fraction
+    with mp.workdps(20):
+        return [[[Fraction(int(a[i, j] * 4), 4) for j in range(5)] for i in range(5)]
+                for a in (action(u) for u in _unit_arrays())]
+
+
 def components_of(s):
     """The ten null-basis components of the bivector with the antisymmetric array s (mpf), the
     inverse of bivector_from_components (a 10 x 10 solve at the working precision)."""
-    units = [bivector_from_components([1 if i == k else 0 for i in range(10)]) for k in range(10)]
+    units = _unit_arrays()
     entries = [(i, j) for i in range(5) for j in range(i + 1, 5)]
     a = mpmath.matrix([[u[i][j] for u in units] for i, j in entries])
     c = mpmath.lu_solve(a, mpmath.matrix([s[i][j] for i, j in entries]))
@@ -353,16 +379,7 @@ def _action_fraction(components):
     """action() of the bivector with the ten null-basis components (doubles, Fractions or mpf) in
     exact rationals (fractions.Fraction): the entries are sums of the components times +-1/2,
     +-1, +-2."""
-    from fractions import Fraction
-    with mp.workdps(20):
-        unit_actions = []
-        for k in range(10):
-            unit = [0] * 10
-            unit[k] = 1
-            a = action(bivector_from_components(unit))
-            unit_actions.append([[Fraction(int(a[i, j] * 4), 4) for j in range(5)]
-                                 for i in range(5)])
-    return [[sum(_fraction(c) * u[i][j] for c, u in zip(components, unit_actions) if c)
+    return [[sum(_fraction(c) * u[i][j] for c, u in zip(components, _unit_actions()) if c)
              for j in range(5)] for i in range(5)]
 
 
@@ -374,9 +391,8 @@ def _toward_zero(n, divisor):
 def _fixed_product(a, b, bits):
     """a b of 5x5 fixed-point matrices (integers, value = n 2^-bits), rounded toward zero."""
     columns = list(zip(*b))
-    one = 1 << bits
-    return [[_toward_zero(sum(x * y for x, y in zip(row, column)), one) for column in columns]
-            for row in a]
+    products = ([sum(map(operator.mul, row, column)) for column in columns] for row in a)
+    return [[n >> bits if n >= 0 else -(-n >> bits) for n in row] for row in products]
 
 
 def expm_frechet(x, directions):
