@@ -618,15 +618,7 @@ bool GeneratorTree::computeMoments(int index)
   this->Nodes[static_cast<std::size_t>(index)].moments = static_cast<long>(offset);
   const double scale = node.radius > 0.0 ? node.radius : 1.0;
   std::vector<double> power(static_cast<std::size_t>(M));
-  auto powers = [&](const double* y) {
-    power[0] = 1.0;
-    for (int m = 1; m < M; ++m)
-    {
-      power[static_cast<std::size_t>(m)] =
-        power[static_cast<std::size_t>(this->MonomialParent[static_cast<std::size_t>(m)])] *
-        y[this->MonomialAxis[static_cast<std::size_t>(m)]];
-    }
-  };
+  auto powers = [&](const double* y) { this->monomialPowers(y, M, power.data()); };
   if (!childrenHaveMoments)
   {
     for (std::size_t i = node.first; i < node.first + node.count; ++i)
@@ -788,12 +780,7 @@ void GeneratorTree::addMultipole(const Node& node, const double* moments, int de
   std::memcpy(&q, qLanes, sizeof q);
   std::memcpy(&scale, scaleLanes, sizeof scale);
   Eight power[kMaxMoments], e[kMaxMoments];
-  power[0] = Eight{} + 1.0;
-  for (int m = 1; m < M; ++m)
-  {
-    power[m] = power[this->MonomialParent[static_cast<std::size_t>(m)]] *
-      u[this->MonomialAxis[static_cast<std::size_t>(m)]];
-  }
+  this->monomialPowers(u, M, power);
   const std::size_t termCount = this->TermsOfDegree[static_cast<std::size_t>(degree)];
   for (std::size_t t = 0; t < termCount;)
   {
@@ -823,13 +810,7 @@ void GeneratorTree::addMultipole(const Node& node, const double* moments, int de
       out[c] += term * mu[c];
     }
   }
-  for (int c = 0; c < kComponents; ++c)
-  {
-    Eight sum;
-    std::memcpy(&sum, sums + c * L, sizeof sum);
-    sum += out[c];
-    std::memcpy(sums + c * L, &sum, sizeof sum);
-  }
+  addLanes(sums, out);
 }
 
 // The generators of `node` summed directly for the lanes' points: the block kernel's generator

@@ -32,6 +32,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstring>
 #include <vector>
 
 // The loops over lanes and over the ten components are compiled for AVX-512, AVX2 and the
@@ -45,6 +46,20 @@ namespace detail
 // doubles (the kLanes points of a block, or eight of a bivector's ten components) and two.
 typedef double Eight __attribute__((vector_size(8 * sizeof(double))));
 typedef double Two __attribute__((vector_size(2 * sizeof(double))));
+
+/// sums[c kLanes, (c + 1) kLanes) += out[c] for a bivector's ten components (a block's lanes per
+/// component; sums need not be aligned).
+__attribute__((always_inline)) inline void addLanes(double* sums, const Eight* out)
+{
+  static_assert(kernel::kLanes == 8, "one vector of Eight per block of lanes");
+  for (int c = 0; c < kernel::kBivectorComponents; ++c)
+  {
+    Eight sum;
+    std::memcpy(&sum, sums + c * kernel::kLanes, sizeof sum);
+    sum += out[c];
+    std::memcpy(sums + c * kernel::kLanes, &sum, sizeof sum);
+  }
+}
 
 /// One use of a node's expansion, recorded for the test that splits the bound's excess
 /// (TestGeneratorTree.cpp, BoundSplit): the node, its degree, the cube of points it was used for
@@ -189,6 +204,18 @@ private:
   bool computeMoments(int node);
   void addDirect(const Node& node, const double* p, double* sums) const;
   void addMultipole(const Node& node, const double* moments, int degree, const double* p, double* b) const;
+  // power[m], m < count, of the coordinates y in the graded order, each its parent's times one
+  // coordinate; T is double or Eight (a block's lanes), inlined into each lane clone.
+  template <typename T>
+  __attribute__((always_inline)) void monomialPowers(const T* y, int count, T* power) const
+  {
+    power[0] = T{} + 1.0;
+    for (int m = 1; m < count; ++m)
+    {
+      power[m] = power[this->MonomialParent[static_cast<std::size_t>(m)]] *
+        y[this->MonomialAxis[static_cast<std::size_t>(m)]];
+    }
+  }
 
   std::vector<double> Generators; // permuted, kGeneratorStride doubles each
   std::vector<Node> Nodes;

@@ -346,12 +346,7 @@ void GeneratorTree::addSourceToLocal(const Node& node, const double* center, dou
   const double a = rootKappa * radius;
   const double b = rootKappa * (node.radius > 0.0 ? node.radius : 1.0);
   double power[kMaxMomentsOfDegree], e[kMaxMomentsOfDegree];
-  power[0] = 1.0;
-  for (int m = 1; m < M; ++m)
-  {
-    power[m] = power[this->MonomialParent[static_cast<std::size_t>(m)]] *
-      u[this->MonomialAxis[static_cast<std::size_t>(m)]];
-  }
+  this->monomialPowers(u, M, power);
   // gamma! e_gamma (the terms' coefficients carry gamma!).
   std::fill_n(e, M, 0.0);
   const std::size_t termCount = this->TermsOfDegree[static_cast<std::size_t>(degree)];
@@ -509,12 +504,7 @@ void GeneratorTree::addLocal(const double* local, const double* center, double r
     y[k] = (coordinate - center[k]) * inverse;
   }
   Eight power[kMaxMomentsOfDegree];
-  power[0] = Eight{} + 1.0;
-  for (int m = 1; m < M; ++m)
-  {
-    power[m] = power[this->MonomialParent[static_cast<std::size_t>(m)]] *
-      y[this->MonomialAxis[static_cast<std::size_t>(m)]];
-  }
+  this->monomialPowers(y, M, power);
   Eight out[kComponents] = {};
   for (int m = 0; m < M; ++m)
   {
@@ -524,13 +514,7 @@ void GeneratorTree::addLocal(const double* local, const double* center, double r
       out[c] += coefficients[c] * power[m];
     }
   }
-  for (int c = 0; c < kComponents; ++c)
-  {
-    Eight sum;
-    std::memcpy(&sum, sums + c * L, sizeof sum);
-    sum += out[c];
-    std::memcpy(sums + c * L, &sum, sizeof sum);
-  }
+  addLanes(sums, out);
 }
 } // namespace detail
 } // namespace cga
