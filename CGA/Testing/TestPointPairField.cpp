@@ -421,14 +421,24 @@ TEST(PointPairField, TranslatingPointsAndGeneratorsTranslatesTheImages)
   }
 }
 
-TEST(PointPairField, TheCenterIsTheMeanOfTheKeptGeneratorsAndAPointOnALoneOneIsFixed)
+// Per coordinate the mean of the kept locations where each lies within [0.6, 1.6] times it (there
+// every x_i - c is exact), else 0.
+TEST(PointPairField, TheCenterIsTheMeanWhereItKeepsDifferencesExactAndAPointOnALoneOneIsFixed)
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const PointPairField field({ { { 1, 2, 3 }, { 0, 1, 0 }, 1.0 }, { { 3, 2, 1 }, { 1, 0, 0 }, 1.0 },
                                { { nan, 0, 0 }, { 1, 0, 0 }, 1.0 } },
     1.0, 0.1);
   EXPECT_EQ(field.size(), 2u);
-  EXPECT_EQ(distance(field.center(), { 2, 2, 2 }), 0.0);
+  // x and z: 1 and 3 about the mean 2, 1 below 0.6 * 2; y: both 2
+  EXPECT_EQ(distance(field.center(), { 0, 2, 0 }), 0.0);
+  // 0.6 m and 1.6 m themselves are kept (3, 4.5, 4.5 and 8 about m = 5, either sign); 8.01 is not
+  const PointPairField edges({ { { 3, -3, 3 }, { 0, 1, 0 }, 1.0 }, { { 4.5, -4.5, 4.5 }, { 0, 1, 0 }, 1.0 },
+                               { { 4.5, -4.5, 4.5 }, { 0, 1, 0 }, 1.0 }, { { 8, -8, 8.01 }, { 1, 0, 0 }, 1.0 } },
+    1.0, 0.1);
+  EXPECT_EQ(edges.center().x, 5.0);
+  EXPECT_EQ(edges.center().y, -5.0);
+  EXPECT_EQ(edges.center().z, 0.0); // 8.01 > 1.6 * 5.0025
   for (const double far : { 0.0, 1e6, 1e150 })
   {
     const Vec3 x{ far + 0.25, -far, 0.5 * far + 1.0 };

@@ -370,4 +370,84 @@ TEST(PointPairKernel, GeneratorSumIsFusedAndTheSameOnEveryInstructionSet)
     }
   }
 }
+// The pair loop's p - x_i is the difference of the doubles given, though both are taken relative
+// to the field's center c (p - c and x_i - c): where c is the mean of three locations far from
+// the origin (inexact, each x_i within [0.6, 1.6] of it, so x_i - c is exact) and where the
+// locations straddle the origin (c = 0). Before the center kept its exact differences, p - c and
+// x_i - c each rounded by up to half an ulp of |p - c|, which moved the near term by 2^-53
+// |p - c| / |p - x_i| of itself, 5e4 units of 2^-53 at 1e-5 from x_i (docs/conventions.md section
+// 2 item 12). The no^ni component of B(p) for dilations is exactly sum_i -w_i / 2 / (k |p -
+// x_i|^2 + eps) in space (a dilation has no e_i^no part, so moving it to c and back leaves no^ni
+// alone): against that sum in long double from the same doubles (each difference exact there),
+// within (M + 8) 2^-53 of the sum (its terms have one sign), on every instruction set, at 0 and
+// 1e-12 ... 1e-2 from each generator and at 0.3 and 1 from the first.
+TEST(PointPairKernel, PairDifferenceIsTheGivenDoublesWhereverTheCenterIs)
+{
+  InstructionSetScope scope;
+  const Vec3 shifts[2] = { { 0.0, 0.0, 0.0 }, { 100.1, -50.3, 20.7 } };
+  for (const Vec3& shift : shifts)
+  {
+    const bool far = shift.x != 0.0;
+    Vec3 locations[3] = { { 0.3, -0.2, 0.1 }, { 0.7, -0.1, -0.1 }, { 0.9, 0.4, -0.5 } };
+    for (Vec3& x : locations)
+    {
+      x = x + shift;
+    }
+    const double weights[3] = { 0.6, 0.3, 0.5 }, falloff = 1.3, epsilon = 1e-10;
+    std::vector<FieldGenerator> generators;
+    for (int i = 0; i < 3; ++i)
+    {
+      generators.push_back(FieldGenerator::dilation(locations[i], weights[i]));
+    }
+    const PointPairField field(generators.data(), generators.size(), falloff, epsilon);
+    const Vec3 c = field.center();
+    if (far)
+    {
+      // the mean kept, and it is not exact: the case the frame's choice is for
+      const long double exactMeanX =
+        (static_cast<long double>(locations[0].x) + locations[1].x + locations[2].x) / 3.0L;
+      EXPECT_NE(static_cast<long double>(c.x), exactMeanX);
+      EXPECT_GT(c.x, 100.0);
+    }
+    else
+    {
+      EXPECT_TRUE(c.x == 0.0 && c.y == 0.0 && c.z == 0.0);
+    }
+    const Vec3 direction = normalized(Vec3{ 0.6, -0.3, 0.7 });
+    for (const std::string& set : kernel::availableInstructionSets())
+    {
+      ASSERT_TRUE(kernel::useInstructionSet(set));
+      double worst = 0.0;
+      std::vector<Vec3> points;
+      for (int i = 0; i < 3; ++i)
+      {
+        for (const double d : { 0.0, 1e-12, 1e-9, 1e-7, 1e-5, 1e-3, 1e-2 })
+        {
+          points.push_back(locations[i] + d * direction);
+        }
+      }
+      for (const double d : { 0.3, 1.0 })
+      {
+        points.push_back(locations[0] + d * direction);
+      }
+      for (const Vec3& p : points)
+      {
+        long double sum = 0.0L;
+        for (int j = 0; j < 3; ++j)
+        {
+          const long double dx = static_cast<long double>(p.x) - locations[j].x;
+          const long double dy = static_cast<long double>(p.y) - locations[j].y;
+          const long double dz = static_cast<long double>(p.z) - locations[j].z;
+          sum += -0.5L * weights[j] / (falloff * (dx * dx + dy * dy + dz * dz) + epsilon);
+        }
+        const double noni = field.generatorAt(p).c[Bivector::NONI];
+        const double error = static_cast<double>(std::fabs((noni - sum) / sum)) / ((3 + 8) * 0x1p-53);
+        EXPECT_LE(error, 1.0) << set << " shift " << shift.x << " point " << p.x << " " << p.y
+                              << " " << p.z;
+        worst = std::max(worst, error);
+      }
+      RecordProperty("worst_" + set + (far ? "_far" : "_near_origin"), std::to_string(worst));
+    }
+  }
+}
 } // namespace

@@ -216,22 +216,18 @@ def kind_configurations(around1, around2):
                      strength == 1.0 and eps == 1e-10 and not extra))
     # a dilation beside point pairs (B has e_i^no parts: neither fixed point is ni, W != 0): the
     # map is loxodromic with two finite fixed points, one next to the dilation's location. With the
-    # second pair the field's center (the mean of three locations) is not exact: p - center and
-    # x - center round, which changes d^2 by about 2^-53 |p - center| / |p - x| of itself, 1e-11
-    # where d^2 = eps (1e-5 from x at eps 1e-10); that moved the image by up to 8e-12 (c = 20), more
-    # than the bound, before and after the strong map (whose image of the doubles it maps, generators
-    # at x - center and the point p - center, is within 2e-15 there), so that distance is left out
-    # of the two-pair case (the one-pair case, whose center's differences are exact, keeps it).
+    # second pair the mean of three locations is not exact: the field's center, had it been that
+    # mean, made p - center and x - center round, which moved the image 1e-5 from x (d^2 = eps at
+    # eps 1e-10) by up to 8.2e-12 of the scale (c = 20); the center keeps those differences exact.
     for exponent in PAIRED_DILATION_EXPONENTS:
         for eps, strength in ((1e-10, 1.0), (1e-10, -1.0), (1e-8, -1e6)):
             dilation = generator("dilation", X1, V1, dilation_weight(exponent, eps, strength))
             for pairs in ([pair(X2, V2, 0.3)], [pair(X2, V2, 0.3), pair(FAR[0], V1, 0.5)]):
-                points = paired_dilation_points if len(pairs) == 1 else \
-                    [p for p in paired_dilation_points if abs(math.dist(p, X1) - 1e-5) > 1e-7]
                 yield from one_per_point(
                     (f"a dilation beside {len(pairs)} point pair(s), c {exponent:g}, eps {eps:g}, "
-                     f"strength {strength:g}", 1.0, eps, strength, [dilation] + pairs, points,
-                     False, strength == 1.0 and eps == 1e-10 and len(pairs) == 1))
+                     f"strength {strength:g}", 1.0, eps, strength, [dilation] + pairs,
+                     paired_dilation_points, False,
+                     strength == 1.0 and eps == 1e-10 and len(pairs) == 1))
     # a boost between two points (a hyperbolic 2-blade with e_i^no parts, W = 0: neither fixed point
     # is ni), given in space between the origin and X2 and as a point pair and a dilation at one
     # place, c = 5 ... 700 at the origin (at eps 1e4 the same everywhere: points next to X2 and 1

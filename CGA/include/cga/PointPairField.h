@@ -167,7 +167,9 @@ public:
   std::size_t skippedGenerators() const { return this->Skipped; }
   double falloff() const { return this->Falloff; }
   double epsilon() const { return this->Epsilon; }
-  /// The center c the field computes relative to: the mean location of the kept generators.
+  /// The center c the field computes relative to: per coordinate, the mean of the kept generators'
+  /// locations where every one lies within [0.6, 1.6] times it, else 0, so that p - x_i formed from
+  /// p - c and x_i - c is the difference of the given doubles (docs/conventions.md section 2 item 12).
   Vec3 center() const { return this->Center; }
 
   /// The far-field approximation of B(p) (docs/conventions.md section 3 item 14): with a
