@@ -479,6 +479,71 @@ TEST(Derivatives, NextToAStrongGeneralBivectorTheJacobianIsExactToRounding)
   ASSERT_TRUE(useMapPointsInstructionSet(active));
 }
 
+// A strong boost between the origin and x2 = (0.7, -0.1, -0.1) given in space (up(0) ^ up(x2):
+// e_i^no parts -x2, no^ni |x2|^2 / 2), whose repeller for strength -1 is the origin, c = 30 and
+// 700 there. map() and mapPoints map every point next to it (the same bits). The derivatives do
+// while |p - r|^2 is a normal double; within about 1e-154 of r the inversion's tangent
+// (1/|p - r|^2) passes the doubles though J is finite, and they refuse the point: false and
+// nothing written, the batch copying it with the identity and counting it (docs/conventions.md
+// section 3 item 15). At c = 30 the map is linear there, J = e^30 Q (Q orthogonal).
+TEST(Derivatives, NextToAStrongBoostsRepellerTheDerivativesRefuseOnlyWhereTheInversionOverflows)
+{
+  Bivector boost;
+  boost.c = { 0.0, 0.0, 0.0, -0.7, 0.1, 0.1, 0.0, 0.0, 0.0, 0.255 };
+  const double epsilon = 1e-10;
+  const Vec3 direction = normalized(Vec3{ 0.6, -0.3, 0.74 });
+  for (const double c : { 30.0, 700.0 })
+  {
+    const FieldGenerator g{ { 0.0, 0.0, 0.0 }, boost, c / 2.0 * epsilon / 0.255 };
+    const PointPairField field(&g, 1, 1.0, epsilon);
+    for (const double distance : { 1e-140, 1e-150, 1e-160, 1e-200, 1e-300 })
+    {
+      const Vec3 p = distance * direction;
+      Vec3 image, batch;
+      ASSERT_TRUE(field.map(p, -1.0, ExponentialRule::Exact, image)) << c << " " << distance;
+      EXPECT_TRUE(isFinite(image));
+      EXPECT_EQ(0u, field.mapPoints(&p.x, &batch.x, 1, -1.0, ExponentialRule::Exact));
+      EXPECT_EQ(0, std::memcmp(&image, &batch, sizeof image));
+      const bool expected = distance > 1e-154;
+      Vec3 withJacobian{ 7, 7, 7 };
+      Jacobian j;
+      j.fill(5.0);
+      EXPECT_EQ(expected, field.mapWithJacobian(p, -1.0, ExponentialRule::Exact, withJacobian, j.data()))
+        << c << " " << distance;
+      double out[3], jacobian[9];
+      EXPECT_EQ(expected ? 0u : 1u,
+        field.mapPointsWithJacobians(&p.x, out, jacobian, 1, -1.0, ExponentialRule::Exact));
+      if (!expected)
+      {
+        EXPECT_EQ(7.0, withJacobian.x);
+        EXPECT_EQ(5.0, j[0]);
+        EXPECT_TRUE(out[0] == p.x && out[1] == p.y && out[2] == p.z);
+        EXPECT_TRUE(jacobian[0] == 1.0 && jacobian[1] == 0.0 && jacobian[4] == 1.0 && jacobian[8] == 1.0);
+        continue;
+      }
+      EXPECT_EQ(0, std::memcmp(&image, &withJacobian, sizeof image));
+      EXPECT_EQ(0, std::memcmp(j.data(), jacobian, sizeof jacobian));
+      for (const double e : j)
+      {
+        EXPECT_TRUE(std::isfinite(e));
+      }
+      if (c == 30.0)
+      {
+        // J^T J = e^60 I
+        const double scale = std::exp(60.0);
+        for (int a = 0; a < 3; ++a)
+        {
+          for (int b = 0; b < 3; ++b)
+          {
+            const double entry = j[a] * j[b] + j[3 + a] * j[3 + b] + j[6 + a] * j[6 + b];
+            EXPECT_NEAR(entry / scale, a == b ? 1.0 : 0.0, 1e-9) << distance << " " << a << b;
+          }
+        }
+      }
+    }
+  }
+}
+
 TEST(Derivatives, WeightDerivativesMatchCentralDifferencesAlsoAtZeroWeights)
 {
   Random random(5);
