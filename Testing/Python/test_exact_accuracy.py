@@ -233,7 +233,8 @@ def kind_configurations(around1, around2):
     # place, c = 5 ... 700 at the origin (at eps 1e4 the same everywhere: points next to X2 and 1
     # away are strong too): through the map's two fixed points. The strong sandwich it took before
     # lost e^{4a} 2^-53 of the image next to the repeller (wrong by 1e4 times its size at c = 30,
-    # 1e-9 from it)
+    # 1e-9 from it). Their Jacobians too at eps 1e-10 up to c = 30: beyond, e^c times the
+    # reference's step (1e-25) leaves the map's linear range next to the repeller
     origin = (0.0, 0.0, 0.0)
     half = sum(c * c for c in X2) / 2
     with reference.mp.workdps(40):
@@ -248,13 +249,13 @@ def kind_configurations(around1, around2):
                     (f"a boost between two points given in space, c {exponent:g}, eps {eps:g}, "
                      f"strength {strength:g}", 1.0, eps, strength,
                      [generator("bivector", origin, boost, exponent / 2 * eps / half)], points,
-                     False, False))
+                     False, eps < 1e-9 and exponent <= 30))
             w = dilation_weight(exponent, 1e-10, strength)
             yield from one_per_point(
                 (f"a point pair and a dilation at one place, c {exponent:g}, strength {strength:g}",
                  1.0, 1e-10, strength, [generator("dilation", origin, V1, w),
                                         generator("pair", origin, V2, w)], near_origin, False,
-                 False))
+                 exponent <= 30))
     near3 = offsets(X3, NEAR, DIRECTIONS[:1])
     for eps, strength in ((1e-10, 1.0), (1e-10, -1.0), (1e-8, -1e6), (1e-6, 1e5)):
         mixed = [pair(X1, V1, 0.5), generator("rotation", X3, V3, 0.2),
