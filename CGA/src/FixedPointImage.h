@@ -131,34 +131,63 @@ BOOSTED_FORCE_INLINE void differenceOfInverses(const T* w, const T* y, const T* 
   }
 }
 
-/// The Euclidean field v(p) = y_E - y_no p of y = up(p) _| B for B = E + A_i e_i^no + C_i e_i^ni +
-/// d no^ni (its zeros are the fixed points of exp(B)): v(p) = n_E x p + |p|^2/2 A + C - (p.A + d) p,
-/// n_E = (E23, -E13, E12). One Newton step p -= Dv(p)^-1 v(p): Dv(p) = -alpha I + [n]_x with
-/// alpha = p.A + d and n = n_E + p x A, whose inverse is (alpha^2 I + n n^T + alpha [n]_x) /
-/// (-alpha (alpha^2 + |n|^2)).
+/// B = E + A_i e_i^no + C_i e_i^ni + d no^ni moved to x: its rate d' = x.A + d and the normal of its
+/// turn, n = n_E + x x A (n_E = (E23, -E13, E12)). The derivative of B's Euclidean field at x is
+/// -d' I + [n]_x, and at a fixed point x exp(B) has the derivative e^{2 d'} exp(-2 [n]_x).
+template <typename T>
+BOOSTED_FORCE_INLINE T rateAndNormalAt(const T* nE, const T* a, const T& d, const T* x, T* n)
+{
+  T xa[3];
+  cross3(x, a, xa);
+  for (int i = 0; i < 3; ++i)
+  {
+    n[i] = nE[i] + xa[i];
+  }
+  return dot3(x, a) + d;
+}
+
+/// The Euclidean field v(x) = y_E - y_no x of y = up(x) _| B: v(x) = n_E x x + |x|^2/2 A + C - d' x
+/// with d' = x.A + d (rateAndNormalAt). Its zeros are the fixed points of exp(B); it is linear in B.
+template <typename T>
+BOOSTED_FORCE_INLINE void euclideanField(const T* nE, const T* a, const T* c, const T& rate, const T* x, T* v)
+{
+  T turn[3];
+  cross3(nE, x, turn);
+  const T half = 0.5 * dot3(x, x);
+  for (int i = 0; i < 3; ++i)
+  {
+    v[i] = turn[i] + half * a[i] + c[i] - rate * x[i];
+  }
+}
+
+/// M^-1 z for M = -rate I + [n]_x (the field's derivative, rateAndNormalAt):
+/// (rate^2 z + n (n.z) + rate n x z) / (-rate (rate^2 + |n|^2)).
+template <typename T>
+BOOSTED_FORCE_INLINE void solveByFieldDerivative(const T& rate, const T* n, const T* z, T* out)
+{
+  T nz[3];
+  cross3(n, z, nz);
+  const T rate2 = rate * rate;
+  const T nDotZ = dot3(n, z);
+  const T denominator = -rate * (rate2 + dot3(n, n));
+  for (int i = 0; i < 3; ++i)
+  {
+    out[i] = (rate2 * z[i] + n[i] * nDotZ + rate * nz[i]) / denominator;
+  }
+}
+
+/// One Newton step on the zeros of B's Euclidean field: p -= Dv(p)^-1 v(p).
 template <typename T>
 BOOSTED_FORCE_INLINE void fixedPointNewtonStep(const T* e, const T* a, const T* c, const T& d, T* p)
 {
   const T nE[3] = { e[2], -e[1], e[0] };
-  T turn[3], pa[3];
-  cross3(nE, p, turn);
-  const T alpha = dot3(p, a) + d;
-  const T half = 0.5 * dot3(p, p);
-  T v[3];
+  T n[3], v[3], step[3];
+  const T rate = rateAndNormalAt(nE, a, d, p, n);
+  euclideanField(nE, a, c, rate, p, v);
+  solveByFieldDerivative(rate, n, v, step);
   for (int i = 0; i < 3; ++i)
   {
-    v[i] = turn[i] + half * a[i] + c[i] - alpha * p[i];
-  }
-  cross3(p, a, pa);
-  const T n[3] = { nE[0] + pa[0], nE[1] + pa[1], nE[2] + pa[2] };
-  T nv[3];
-  cross3(n, v, nv);
-  const T alpha2 = alpha * alpha;
-  const T nDotV = dot3(n, v);
-  const T denominator = -alpha * (alpha2 + dot3(n, n));
-  for (int i = 0; i < 3; ++i)
-  {
-    p[i] = p[i] - (alpha2 * v[i] + n[i] * nDotV + alpha * nv[i]) / denominator;
+    p[i] = p[i] - step[i];
   }
 }
 

@@ -745,6 +745,20 @@ BOOSTED_FORCE_INLINE T attractorAndRepeller(const UnitBivector<T>& unit, const T
   return select(swap, rateSecond, rateFirst);
 }
 
+/// The rate d' and the turn omega = -2 m n' of B = m u moved to x (rateAndNormalAt): exp(B) has the
+/// derivative e^{2 m d'} exp([omega]_x) at a fixed point x. Returns d'.
+template <typename T>
+BOOSTED_FORCE_INLINE T turnAt(const T* nE, const T* a, const T& d, const T& m, const T* x, T* omega)
+{
+  T n[3];
+  const T rate = rateAndNormalAt(nE, a, d, x, n);
+  for (int i = 0; i < 3; ++i)
+  {
+    omega[i] = (-2.0 * m) * n[i];
+  }
+  return rate;
+}
+
 /// The image of x = up(p) under exp(B), B = m u with a strong hyperbolic plane (l1 > 0, the square of
 /// u's hyperbolic plane, l2 <= 0 the other's, wu = <W u>_2) beside an e_i^no part, where neither
 /// fixed point is ni and the split of strongHyperbolicSandwich is not exact: through the map's two
@@ -768,12 +782,8 @@ void strongImageByFixedPoints(const UnitBivector<T>& unit, const T& l1, const T&
   const T a[3] = { u[E1NO], u[E2NO], u[E3NO] };
   // The turn at the attractor: omega = -2 m n', n' = n_E + attractor x A.
   const T nE[3] = { u[E23], -u[E13], u[E12] };
-  T moved[3], omega[3];
-  cross3(attractor, a, moved);
-  for (int i = 0; i < 3; ++i)
-  {
-    omega[i] = (-2.0 * m) * (nE[i] + moved[i]);
-  }
+  T omega[3];
+  turnAt(nE, a, u[NONI], m, attractor, omega);
   // psi(p) = inv(p - r) - inv(a - r), then y = e^{2 m d'} S Q S psi(p).
   const T p[3] = { x[E1], x[E2], x[E3] };
   T across[3], fromAttractor[3], fromRepeller[3];
@@ -827,13 +837,8 @@ void strongImageByFixedPoints(const UnitBivector<T>& unit, const T& l1, const T&
     // p on r stays r, but its tangents are not r's alone: r moves by dr, and p, left at dp - dr
     // from it, is carried by exp(B)'s derivative there, e^{2 m d'} Q (d' and n' of B moved to r):
     // r's value with the tangents of r + e^{2 m d'} Q (p - r).
-    const T rateAtRepeller = dot3(repeller, a) + u[NONI];
-    T movedAtRepeller[3], omegaAtRepeller[3], turnedOffset[3];
-    cross3(repeller, a, movedAtRepeller);
-    for (int i = 0; i < 3; ++i)
-    {
-      omegaAtRepeller[i] = (-2.0 * m) * (nE[i] + movedAtRepeller[i]);
-    }
+    T omegaAtRepeller[3], turnedOffset[3];
+    const T rateAtRepeller = turnAt(nE, a, u[NONI], m, repeller, omegaAtRepeller);
     rotatedBy(omegaAtRepeller, fromRepeller, turnedOffset);
     const T growth = laneExp(m * rateAtRepeller);
     for (int i = 0; i < 3; ++i)

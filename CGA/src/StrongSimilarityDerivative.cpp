@@ -60,17 +60,10 @@ void actionMatrix(const double* b, double a[5][5])
   }
 }
 
-/// x = M^-1 v for M = d I + K, K u = w x u: (d^2 v - d w x v + (w.v) w) / (d (d^2 + |w|^2)).
+/// x = M^-1 v for M = d I + K, K u = w x u (solveByFieldDerivative with rate -d).
 void solveFixedPoint(double d, const double* w, const double* v, double* x)
 {
-  const double wv = w[0] * v[0] + w[1] * v[1] + w[2] * v[2];
-  const double cross[3] = { w[1] * v[2] - w[2] * v[1], w[2] * v[0] - w[0] * v[2],
-    w[0] * v[1] - w[1] * v[0] };
-  const double denominator = d * (d * d + (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
-  for (int i = 0; i < 3; ++i)
-  {
-    x[i] = (d * d * v[i] - d * cross[i] + wv * w[i]) / denominator;
-  }
+  solveByFieldDerivative(-d, w, v, x);
 }
 } // namespace
 
@@ -255,18 +248,13 @@ bool strongSimilarityExponentDerivative(const double* b, const double* p, double
 
 namespace
 {
-/// The Euclidean field v(x) = n_E x x + |x|^2/2 A + C - (x.A + d) x of b (FixedPointImage.h): its
-/// zeros are the fixed points of exp(b), and it is linear in b.
+/// The Euclidean field of b at x (euclideanField): its zeros are the fixed points of exp(b), and it
+/// is linear in b.
 void fieldAt(const double* b, const double* x, double* v)
 {
-  const double n[3] = { b[E23], -b[E13], b[E12] }, a[3] = { b[E1NO], b[E2NO], b[E3NO] };
-  const double half = 0.5 * dot3(x, x), rate = dot3(x, a) + b[NONI];
-  double turn[3];
-  cross3(n, x, turn);
-  for (int i = 0; i < 3; ++i)
-  {
-    v[i] = turn[i] + half * a[i] + b[E1NI + i] - rate * x[i];
-  }
+  const double nE[3] = { b[E23], -b[E13], b[E12] }, a[3] = { b[E1NO], b[E2NO], b[E3NO] };
+  double n[3];
+  euclideanField(nE, a, b + E1NI, rateAndNormalAt(nE, a, b[NONI], x, n), x, v);
 }
 
 /// d out / d b at p on the repeller r (its image): r moves with b by dr = -Dv(r)^-1 v_e(r) along a
@@ -275,26 +263,22 @@ void fieldAt(const double* b, const double* x, double* v)
 bool repellerDerivative(const double* b, const double* r, double* byExponent)
 {
   const double a[3] = { b[E1NO], b[E2NO], b[E3NO] }, nE[3] = { b[E23], -b[E13], b[E12] };
-  const double alpha = dot3(r, a) + b[NONI];
   double n[3], omega[3];
-  cross3(r, a, n);
+  const double rate = rateAndNormalAt(nE, a, b[NONI], r, n);
   for (int i = 0; i < 3; ++i)
   {
-    n[i] += nE[i];
     omega[i] = -2.0 * n[i];
   }
-  const double growth = std::exp(alpha); // e^{d'}, applied twice
-  const double denominator = -alpha * (alpha * alpha + dot3(n, n));
+  const double growth = std::exp(rate); // e^{d'}, applied twice
   for (int k = 0; k < kBivector; ++k)
   {
-    double unit[kBivector] = {}, v[3], cross[3], dr[3], turned[3];
+    double unit[kBivector] = {}, v[3], dr[3], turned[3];
     unit[k] = 1.0;
     fieldAt(unit, r, v);
-    cross3(n, v, cross);
-    const double nv = dot3(n, v);
-    for (int i = 0; i < 3; ++i) // dr = -Dv^-1 v, Dv^-1 = (alpha^2 I + n n^T + alpha [n]_x) / denominator
+    solveByFieldDerivative(rate, n, v, dr);
+    for (int i = 0; i < 3; ++i)
     {
-      dr[i] = -(alpha * alpha * v[i] + n[i] * nv + alpha * cross[i]) / denominator;
+      dr[i] = -dr[i];
     }
     rotatedBy(omega, dr, turned);
     for (int j = 0; j < 3; ++j)

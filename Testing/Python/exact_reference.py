@@ -275,27 +275,47 @@ def jacobian_by_frechet(generators, p, falloff, epsilon, strength):
         return [float(c) for c in jacobian_of_bivector(s, ds, p, strength)]
 
 
-def jacobian_sensitivity(generators, p, falloff, epsilon, strength, trials=3, seed=1):
-    """The largest change of the Jacobian (its largest entry) when every component of B(p) and of
-    each dB/dp_j changes by one unit in the last place of a double (random signs): what no
-    derivative computed from double B(p) and dB/dp can avoid (one_ulp_sensitivity's analogue)."""
+def one_ulp_change(evaluate, inputs, distance, trials=3, seed=1):
+    """The largest distance(evaluate(moved), evaluate(inputs)) over `trials` draws in which every
+    independent entry of each input changes by one unit in the last place of a double (2^-53
+    relative, random signs): what no computation from the doubles `inputs` can avoid. An input is
+    an antisymmetric array (a bivector: its upper triangle moves, the lower one with it) or a list
+    of doubles (components)."""
     rng = random.Random(seed)
+
+    def moved(x):
+        if not isinstance(x[0], list):
+            return [c + rng.choice((-1, 1)) * abs(c) * 2.0 ** -53 for c in x]
+        t = [row[:] for row in x]
+        for i in range(5):
+            for j in range(i + 1, 5):
+                delta = t[i][j] * mpf(2) ** -53 * rng.choice((-1, 1))
+                t[i][j] += delta
+                t[j][i] -= delta
+        return t
+
     with mp.workdps(DIGITS):
-        s = field_bivector(generators, p, falloff, epsilon)
-        ds = field_bivector_derivatives(generators, p, falloff, epsilon)
-        base = jacobian_of_bivector(s, ds, p, strength)
+        base = evaluate(inputs)
         largest = mpf(0)
         for _ in range(trials):
-            moved = [[row[:] for row in m] for m in [s] + ds]
-            for m in moved:
-                for i in range(5):
-                    for j in range(i + 1, 5):
-                        delta = m[i][j] * mpf(2) ** -53 * rng.choice((-1, 1))
-                        m[i][j] += delta
-                        m[j][i] -= delta
-            other = jacobian_of_bivector(moved[0], moved[1:], p, strength)
-            largest = max(largest, max(abs(a - b) for a, b in zip(other, base)))
+            largest = max(largest, distance(evaluate([moved(x) for x in inputs]), base))
         return float(largest)
+
+
+def largest_entry_change(a, b):
+    """max |a_i - b_i| over two equally long flat lists."""
+    return max(abs(x - y) for x, y in zip(a, b))
+
+
+def jacobian_sensitivity(generators, p, falloff, epsilon, strength, trials=3, seed=1):
+    """The largest change of the Jacobian (its largest entry) when every component of B(p) and of
+    each dB/dp_j changes by one unit in the last place of a double (one_ulp_change): what no
+    derivative computed from double B(p) and dB/dp can avoid (one_ulp_sensitivity's analogue)."""
+    with mp.workdps(DIGITS):
+        inputs = ([field_bivector(generators, p, falloff, epsilon)] +
+                  field_bivector_derivatives(generators, p, falloff, epsilon))
+    return one_ulp_change(lambda m: jacobian_of_bivector(m[0], m[1:], p, strength), inputs,
+                          largest_entry_change, trials, seed)
 
 
 def one_ulp_sensitivity(generators, p, falloff, epsilon, strength, trials=3, seed=1):
@@ -323,20 +343,10 @@ def bivector_from_components(c):
 
 def bivector_sensitivity(s, p, strength, trials=3, seed=1):
     """one_ulp_sensitivity for a given bivector s (antisymmetric array)."""
-    rng = random.Random(seed)
-    with mp.workdps(DIGITS):
-        base = image_of_bivector(s, p, strength)
-        largest = mpf(0)
-        for _ in range(trials):
-            t = [row[:] for row in s]
-            for i in range(5):
-                for j in range(i + 1, 5):
-                    delta = t[i][j] * mpf(2) ** -53 * rng.choice((-1, 1))
-                    t[i][j] += delta
-                    t[j][i] -= delta
-            moved = image_of_bivector(t, p, strength)
-            largest = max(largest, mpmath.sqrt(sum((moved[i] - base[i]) ** 2 for i in range(3))))
-        return float(largest)
+    def distance(moved, base):
+        return mpmath.sqrt(sum((moved[i] - base[i]) ** 2 for i in range(3)))
+    return one_ulp_change(lambda m: image_of_bivector(m[0], p, strength), [s], distance, trials,
+                          seed)
 
 
 def _fraction(x):

@@ -31,7 +31,6 @@ there a refusal (false, the behaviour before it) is a failure, like any point le
     python3 test_strong_derivatives.py <ExactAccuracyProbe> [-v]
 """
 import math
-import random
 import subprocess
 import sys
 import time
@@ -139,18 +138,14 @@ def weight_direction(generator_row, p, epsilon):
 
 def derivative_sensitivity(components, directions, p, strength, trials=3, seed=1):
     """The largest change of d out / d B (its largest entry) when every component of the double
-    B(p) changes by one unit in the last place (random signs): what no derivative computed from the
-    double B(p) can avoid (exact_reference.jacobian_sensitivity's analogue). Next to a repeller that
-    the double B(p) does not hold to the bit, with e^c large, it is of the derivative's own size."""
-    rng = random.Random(seed)
-    _, base = reference.bivector_derivatives(components, directions, p, strength)
-    largest = 0.0
-    for _ in range(trials):
-        moved = [c + rng.choice((-1, 1)) * abs(c) * 2.0 ** -53 for c in components]
-        _, other = reference.bivector_derivatives(moved, directions, p, strength)
-        largest = max(largest, max(abs(a - b) for column, ref in zip(other[:10], base[:10])
-                                   for a, b in zip(column, ref)))
-    return largest
+    B(p) changes by one unit in the last place (exact_reference.one_ulp_change): what no derivative
+    computed from the double B(p) can avoid. Next to a repeller that the double B(p) does not hold
+    to the bit, with e^c large, it is of the derivative's own size."""
+    def derivative(inputs):
+        _, columns = reference.bivector_derivatives(inputs[0], directions, p, strength)
+        return [value for column in columns[:10] for value in column]
+    return reference.one_ulp_change(derivative, [components], reference.largest_entry_change,
+                                    trials, seed)
 
 
 def check_reference(components, p, strength, ref):
