@@ -17,7 +17,7 @@
 include_guard(GLOBAL)
 
 # The documentation (in `cmake --install`'s tree too).
-install(FILES README.md docs/architecture.md docs/conventions.md docs/gallery.png
+install(FILES README.md docs/architecture.md docs/conventions.md docs/performance.md docs/gallery.png
   DESTINATION "${CMAKE_INSTALL_DATAROOTDIR}/doc/boostedsurfaces")
 
 find_program(BOOSTEDSURFACES_DPKG_QUERY dpkg-query)
