@@ -6,7 +6,7 @@
 #   /usr/lib/python3/dist-packages/boostedsurfaces/                     `import boostedsurfaces`
 #   /usr/lib/libBoostedSurfaces*.so, /usr/include/boostedsurfaces/      the libraries and headers
 #   /usr/lib/cmake/BoostedSurfaces/                                     find_package(BoostedSurfaces)
-#   /usr/share/doc/boostedsurfaces/                                     README, docs, changelog.gz,
+#   /usr/share/doc/boostedsurfaces/                                     README, docs/, changelog.gz,
 #                                                                       copyright (debian/copyright)
 #   /usr/share/lintian/overrides/boostedsurfaces                        debian/lintian-overrides
 # Debian's ParaView 5.11 reads no plugin configuration file of its own (no paraview.conf, and its
@@ -16,9 +16,13 @@
 # subdir-in-usr-bin, overridden with that reason).
 include_guard(GLOBAL)
 
-# The documentation (in `cmake --install`'s tree too).
-install(FILES README.md docs/architecture.md docs/conventions.md docs/performance.md docs/gallery.png
-  DESTINATION "${CMAKE_INSTALL_DATAROOTDIR}/doc/boostedsurfaces")
+# The documentation (in `cmake --install`'s tree too), laid out as in the repository so that the
+# README's links (docs/conventions.md, docs/classes/*.png) resolve where it is installed.
+install(FILES README.md DESTINATION "${CMAKE_INSTALL_DATAROOTDIR}/doc/boostedsurfaces")
+install(FILES docs/architecture.md docs/conventions.md docs/performance.md docs/gallery.png
+  docs/many_generators.png DESTINATION "${CMAKE_INSTALL_DATAROOTDIR}/doc/boostedsurfaces/docs")
+install(DIRECTORY docs/classes/ DESTINATION "${CMAKE_INSTALL_DATAROOTDIR}/doc/boostedsurfaces/docs/classes"
+  FILES_MATCHING PATTERN "*.png")
 
 find_program(BOOSTEDSURFACES_DPKG_QUERY dpkg-query)
 if (NOT BOOSTEDSURFACES_DPKG_QUERY OR NOT ParaView_FOUND OR NOT BOOSTEDSURFACES_BUILD_PLUGIN)

@@ -23,9 +23,9 @@
  * patch flat. CurvaturePreset (other than CUSTOM) replaces KappaU, KappaV by the Fig 7 values.
  * ExponentialRule chooses the exact exponential (default) or the paper's eq 9-10.
  *
- * Output: quads (SURFACE) or one polyline per u row (LINES; also whenever Size[1] = 0), with point
- * normals, texture coordinates and the point arrays "u" (a), "v" (b) and "GeneratorWeight"
- * (sum of w_i in E = -sum_i w_i tau_i, tau_i of unit direction). Samples whose image is at
+ * Output: quads (SURFACE) or one polyline per u row (LINES; also whenever Size[1] = 0), with the
+ * point arrays "u" (a), "v" (b) and "GeneratorWeight" (sum of w_i in E = -sum_i w_i tau_i, tau_i
+ * of unit direction), and for SURFACE point normals and texture coordinates. Samples whose image is at
  * infinity are dropped with their cells; the output is cut exactly at the clip sphere, radius
  * ClipRadius about Origin (vtkBoostedGridDriver). With ComputeCurvatures (SURFACE), the normals
  * are exact (from the derivatives of E(a, b) and p(a, b) through the exponential,
@@ -113,6 +113,8 @@ public:
   /// EXACT (default): the true exponential; PAPER: eq 9-10 (not a versor for non-blade sums).
   vtkSetClampMacro(ExponentialRule, int, EXACT, PAPER);
   vtkGetMacro(ExponentialRule, int);
+  void SetExponentialRuleToExact() { this->SetExponentialRule(EXACT); }
+  void SetExponentialRuleToPaper() { this->SetExponentialRule(PAPER); }
   ///@}
 
   ///@{
@@ -146,6 +148,11 @@ public:
   /// CUSTOM (default) uses KappaU, KappaV; the others use the Fig 7 values instead.
   vtkSetClampMacro(CurvaturePreset, int, CUSTOM, HYPERBOLIC);
   vtkGetMacro(CurvaturePreset, int);
+  void SetCurvaturePresetToCustom() { this->SetCurvaturePreset(CUSTOM); }
+  void SetCurvaturePresetToParabolic() { this->SetCurvaturePreset(PARABOLIC); }
+  void SetCurvaturePresetToElliptic() { this->SetCurvaturePreset(ELLIPTIC); }
+  void SetCurvaturePresetToUmbilic() { this->SetCurvaturePreset(UMBILIC); }
+  void SetCurvaturePresetToHyperbolic() { this->SetCurvaturePreset(HYPERBOLIC); }
   ///@}
 
   ///@{

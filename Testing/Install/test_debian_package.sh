@@ -42,8 +42,17 @@ for file in "$plugin_dir/BoostedSurfaces.so" "$root/usr/bin/plugins/BoostedSurfa
             "$root/usr/lib/python3/dist-packages/boostedsurfaces/__init__.py" \
             "$root/usr/lib/cmake/BoostedSurfaces/BoostedSurfacesConfig.cmake" \
             "$root/usr/include/boostedsurfaces/vtkBoostedSurfaceSource.h" \
-            "$root/usr/share/doc/boostedsurfaces/README.md"; do
+            "$root/usr/share/doc/boostedsurfaces/README.md" \
+            "$root/usr/share/doc/boostedsurfaces/docs/conventions.md" \
+            "$root/usr/share/doc/boostedsurfaces/docs/classes/fig2_boosted_surfaces.png"; do
   [ -f "$file" ] || fail "the package has no ${file#"$root"}"
+done
+# Every link of the installed README into docs/ (documents and pictures) resolves beside it.
+doc_dir="$root/usr/share/doc/boostedsurfaces"
+links="$(grep -oE '\]\(docs/[^)#]+' "$doc_dir/README.md" | cut -c3- | sort -u)"
+[ -n "$links" ] || fail "the installed README links nothing in docs/"
+for link in $links; do
+  [ -f "$doc_dir/$link" ] || fail "the installed README links $link, which the package does not hold"
 done
 if find "$root" -type f -exec grep -lF "$build_dir/" {} + | grep .; then
   fail "files of the package name the build tree"

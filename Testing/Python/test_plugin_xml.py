@@ -3,7 +3,8 @@ ParaView: every scalar property's default is the class's, its range domain is th
 (a bound the setter does not clamp to must be one that an update rejects with an error), every
 label is the property name in words (paraview.simple names properties after labels), an
 enumeration lists exactly the clamped values, and each entry text is the class constant in words
-("Control Points" is CONTROL_POINTS; the precision entries name vtkAlgorithm's *_PRECISION). A
+("Control Points" is CONTROL_POINTS; the precision entries name vtkAlgorithm's *_PRECISION) and
+the name of its shortcut (SetMethodToControlPoints(); not for the precision). A
 table's Kind column (ParaView's tables hold numbers only) lists its values in the documentation,
 "1 Rotation (ROTATION ...", with the same rule: the value is the constant, the text its words.
 
@@ -160,6 +161,15 @@ class PluginXmlTest(unittest.TestCase):
                         constant += "_PRECISION"
                     self.assertEqual(getattr(cls, constant, None), value,
                                      "entry %r is not %s.%s" % (text, class_name, constant))
+                    if constant.endswith("_PRECISION"):
+                        continue  # VTK's OutputPointsPrecision has its constants only
+                    # The project's own enumerations have a Set...To...() shortcut per value.
+                    shortcut = "%sTo%s" % (prop.get("command"), text.replace(" ", ""))
+                    obj = new_object(class_name)
+                    self.assertTrue(hasattr(obj, shortcut), "%s has no %s()" % (class_name, shortcut))
+                    getattr(obj, prop.get("command"))(high if value == low else low)
+                    getattr(obj, shortcut)()
+                    self.assertEqual(getattr(obj, "G" + prop.get("command")[1:])(), value, shortcut)
 
     def test_decorators_name_properties_and_values_of_their_proxy(self):
         """Every visibility decorator of a panel names a property of its own proxy and, where that
