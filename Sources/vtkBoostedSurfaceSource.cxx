@@ -11,6 +11,7 @@
 
 #include "cga/Conformal.h"
 #include "cga/PointSandwich.h"
+#include "cga/SurfaceCurvature.h"
 #include "cga/surfaces/BoostedCircle.h"
 
 #include <algorithm>
@@ -105,6 +106,8 @@ int vtkBoostedSurfaceSource::RequestData(
   driver.SampleRows([&](int r) {
     // One 5x5 matrix per lambda row: the sandwich K up(p) ~K is linear in up(p).
     const cga::BoostedCircleRow row(centered, lambdas[r]);
+    // The row's points about the circle's center (NaN where mapped to infinity), for its plane.
+    std::vector<cga::Vec3> rowPoints(columns, cga::Vec3{ NAN, NAN, NAN });
     for (int c = 0; c < columns; ++c)
     {
       // False: the point went to infinity; left NaN and dropped.
@@ -116,14 +119,18 @@ int vtkBoostedSurfaceSource::RequestData(
       {
         const double point[3] = { x.point.x, x.point.y, x.point.z };
         grid.SetPoint(r, c, point);
+        rowPoints[c] = x.point;
         if (exact)
         {
           exact->Set(r, c, x);
         }
       }
     }
-    const cga::RoundInfo image = cga::readCircle(centered.imageBlade(lambdas[r]), 1e-12);
-    const double fallback[3] = { image.normal.x, image.normal.y, image.normal.z };
+    // The image circle's plane, for the normals where the surface's are degenerate: from the
+    // row's points at any scale (the circle's blade holds radius^2, which underflows for a
+    // circle below about 1e-154 across).
+    const cga::Vec3 normal = cga::planeNormal(rowPoints.data(), rowPoints.size(), cga::Vec3{});
+    const double fallback[3] = { normal.x, normal.y, normal.z };
     grid.SetRowFallbackNormal(r, fallback);
   });
   grid.AddRowParameter("lambda", lambdas);

@@ -14,6 +14,7 @@
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
+#include "cga/SurfaceCurvature.h"
 #include "cga/surfaces/HopfFibration.h"
 #include "cga/surfaces/HopfSampling.h"
 
@@ -25,25 +26,6 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkHopfFibrationSource);
-
-namespace
-{
-
-/// The normal of the fiber's plane (Newell's sum over its finite segments), for the normals
-/// where the mesh gives none.
-cga::Vec3 fiberPlaneNormal(const std::vector<cga::Vec3>& points, cga::Vec3 center)
-{
-  cga::Vec3 newell{ 0, 0, 0 };
-  for (size_t c = 1; c < points.size(); ++c)
-  {
-    if (cga::isFinite(points[c]) && cga::isFinite(points[c - 1]))
-    {
-      newell = newell + cga::cross(points[c - 1] - center, points[c] - center);
-    }
-  }
-  return cga::normalized(newell);
-}
-} // namespace
 
 vtkHopfFibrationSource::vtkHopfFibrationSource()
   : BasePoints(new vtkBoostedRowList(this, "BasePoint", { 0.0, 0.0 }))
@@ -187,7 +169,8 @@ int vtkHopfFibrationSource::RequestData(
       const double p[3] = { points[c].x, points[c].y, points[c].z };
       grid.SetPoint(r, c, p);
     }
-    const cga::Vec3 n = fiberPlaneNormal(points, hopf.center);
+    // The fiber's plane, for the normals where the mesh gives none.
+    const cga::Vec3 n = cga::planeNormal(points.data(), points.size(), hopf.center);
     const double fallback[3] = { n.x, n.y, n.z };
     grid.SetRowFallbackNormal(r, fallback);
   });

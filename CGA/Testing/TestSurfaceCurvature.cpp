@@ -5,8 +5,10 @@
 
 #include "cga/SurfaceCurvature.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace
 {
@@ -340,6 +342,39 @@ TEST(SurfaceCurvature, PlaneHasZeroCurvature)
   EXPECT_EQ(k.k1, 0.0);
   EXPECT_EQ(k.k2, 0.0);
   EXPECT_EQ(k.gaussian, 0.0);
+}
+
+// planeNormal: a closed polygon of a circle in a tilted plane, at every scale and far from the
+// origin, gives the plane's normal (oriented as the polygon turns) to rounding; its non-finite
+// points are skipped; points spanning no plane give 0.
+TEST(SurfaceCurvature, PlaneNormalOfAClosedPolylineAtAnyScale)
+{
+  const Vec3 n = normalized(Vec3{ 1.0, -2.0, 2.0 });
+  const Vec3 a = normalized(cross(n, Vec3{ 0.0, 0.0, 1.0 }));
+  const Vec3 b = cross(n, a); // a x b = n
+  for (double radius : { 1e-300, 1e-200, 1e-160, 1.0, 1e150, 1e300 })
+  {
+    for (Vec3 center : { Vec3{}, Vec3{ 3.0, -1.0, 2.0 } })
+    {
+      const Vec3 c = radius * 1e-3 * center; // a center close to the points, at their scale
+      std::vector<Vec3> points;
+      for (int i = 0; i <= 12; ++i)
+      {
+        const double t = 2.0 * M_PI * (i % 12) / 12.0;
+        points.push_back(c + radius * (std::cos(t) * a + std::sin(t) * b));
+      }
+      EXPECT_LE(distance(planeNormal(points.data(), points.size(), c), n), 1e-14) << radius;
+      std::reverse(points.begin(), points.end());
+      EXPECT_LE(distance(planeNormal(points.data(), points.size(), c), -1.0 * n), 1e-14) << radius;
+      points[3] = Vec3{ NAN, 0.0, 0.0 }; // a point at infinity: its two segments left out
+      EXPECT_LE(distance(planeNormal(points.data(), points.size(), c), -1.0 * n), 1e-14) << radius;
+    }
+  }
+  const Vec3 line[3] = { { 1.0, 1.0, 1.0 }, { 2.0, 2.0, 2.0 }, { 1.0, 1.0, 1.0 } };
+  EXPECT_EQ(norm(planeNormal(line, 3, Vec3{})), 0.0);
+  const Vec3 lone[1] = { { 1.0, 0.0, 0.0 } };
+  EXPECT_EQ(norm(planeNormal(lone, 1, Vec3{})), 0.0);
+  EXPECT_EQ(norm(planeNormal(nullptr, 0, Vec3{})), 0.0);
 }
 
 TEST(SurfaceCurvature, TinyCurvaturesUnderLargeTangentialSecondDerivativesKeepTheirSize)

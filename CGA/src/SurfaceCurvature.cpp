@@ -110,6 +110,33 @@ bool surfaceNormal(Vec3 du, Vec3 dv, Vec3& normal)
   return true;
 }
 
+Vec3 planeNormal(const Vec3* points, std::size_t count, Vec3 center)
+{
+  double largest = 0.0;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    if (isFinite(points[i]))
+    {
+      largest = std::max(largest, maxAbs(points[i] - center));
+    }
+  }
+  if (!(largest > 0.0) || !std::isfinite(largest))
+  {
+    return Vec3{};
+  }
+  const int e = exponentOf(largest); // |p - center| / 2^e < 1: no product below overflows
+  Vec3 newell{};
+  for (std::size_t i = 1; i < count; ++i)
+  {
+    if (isFinite(points[i - 1]) && isFinite(points[i]))
+    {
+      newell = newell + cross(scaledBy(points[i - 1] - center, e), scaledBy(points[i] - center, e));
+    }
+  }
+  const double size = std::sqrt(dot(newell, newell));
+  return size > 0.0 ? newell * (1.0 / size) : Vec3{};
+}
+
 SurfaceCurvature surfaceCurvature(const SurfaceDerivatives& x)
 {
   SurfaceCurvature result;

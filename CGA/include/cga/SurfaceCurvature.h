@@ -4,6 +4,8 @@
 // their constructions (no mesh, no finite differences) and output the result as point arrays.
 #pragma once
 
+#include <cstddef>
+
 #include "cga/Vec3.h"
 
 namespace cga
@@ -53,4 +55,11 @@ SurfaceCurvature surfaceCurvature(const SurfaceDerivatives& x);
 /// The unit normal x_u x x_v / |x_u x x_v| alone (surfaceCurvature's, at a third of its cost):
 /// false at a degenerate point (surfaceCurvature's first-derivative tests), normal unchanged.
 bool surfaceNormal(Vec3 du, Vec3 dv, Vec3& normal);
+
+/// The unit normal of the plane of a closed polyline (the first point repeated last): Newell's
+/// sum of (p_i - center) x (p_{i+1} - center) over its segments with both ends finite, oriented
+/// as the polyline turns; (0, 0, 0) where that sum vanishes. At any scale: the points are moved
+/// to center and divided by a power of two first (the products of a polyline 1e-200 across
+/// would underflow), so a close center keeps precision.
+Vec3 planeNormal(const Vec3* points, std::size_t count, Vec3 center);
 } // namespace cga

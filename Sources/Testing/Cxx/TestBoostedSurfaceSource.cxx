@@ -189,6 +189,7 @@ TEST(BoostedSurfaceSource, SurfaceHasUnitNormalsAndTextureCoordinatesInRange)
   {
     EXPECT_NEAR(vtkMath::Norm(normals->GetTuple3(i)), 1.0, 1e-6);
     const double* uv = tcoords->GetTuple2(i);
+    EXPECT_TRUE(std::isfinite(uv[0]) && std::isfinite(uv[1])) << i; // std::min/max drop a NaN
     minU = std::min(minU, uv[0]);
     maxU = std::max(maxU, uv[0]);
     minV = std::min(minV, uv[1]);
@@ -390,6 +391,32 @@ TEST(BoostedSurfaceSource, OutOfRangePiecesAreEmpty)
   {
     ExpectOutOfRangePiecesEmpty<vtkBoostedSurfaceSource>(
       [type](vtkBoostedSurfaceSource* s) { s->SetOutputType(type); });
+  }
+}
+
+// At a tiny radius the boost barely moves the circle (its motion grows like the radius squared),
+// so every sample is degenerate and takes its row's fallback normal, the image circle's plane:
+// unit at any scale (it came from the circle's blade, whose radius^2 underflows below about
+// 1e-154, and was (0, 0, 0) at 1e-200).
+TEST(BoostedSurfaceSource, ATinyCircleHasUnitNormals)
+{
+  for (double radius : { 1e-160, 1e-200, 1e-300 })
+  {
+    for (double offset : { 0.0, 1.0 })
+    {
+      vtkNew<vtkBoostedSurfaceSource> source;
+      source->SetCircleRadius(radius);
+      source->SetCircleCenter(offset, offset, offset);
+      source->Update();
+      vtkPolyData* output = source->GetOutput();
+      vtkDataArray* normals = output->GetPointData()->GetNormals();
+      ASSERT_NE(normals, nullptr);
+      ASSERT_GT(output->GetNumberOfPoints(), 0);
+      for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+      {
+        ASSERT_NEAR(vtkMath::Norm(normals->GetTuple3(i)), 1.0, 1e-6) << radius << " " << i;
+      }
+    }
   }
 }
 
