@@ -31,6 +31,7 @@
 #include "vtkSOADataArrayTemplate.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStructuredData.h"
 #include "vtkStructuredGrid.h"
 #include "vtkStructuredGridAlgorithm.h"
 
@@ -230,11 +231,37 @@ struct DeformWorker
   }
 };
 
+// An image or rectilinear grid whose extent is empty: VTK's empty extent (0, -1, ...) or any other
+// with an upper index below the lower, whose point count VTK reports as a negative product.
+bool hasEmptyExtent(vtkDataSet* input)
+{
+  int extent[6];
+  if (auto* image = vtkImageData::SafeDownCast(input))
+  {
+    image->GetExtent(extent);
+  }
+  else if (auto* grid = vtkRectilinearGrid::SafeDownCast(input))
+  {
+    grid->GetExtent(extent);
+  }
+  else
+  {
+    return false;
+  }
+  return vtkStructuredData::GetDataDescriptionFromExtent(extent) == VTK_EMPTY;
+}
+
 // The input as a point set: images and rectilinear grids through VTK's converters, which make a
-// vtkStructuredGrid with double points, the same extent and the same point and cell data.
+// vtkStructuredGrid with double points, the same extent and the same point and cell data (an
+// empty one for an empty or inverted extent, which the converters would turn into a grid of a
+// negative number of points).
 vtkSmartPointer<vtkPointSet> asPointSet(vtkDataSet* input)
 {
   vtkSmartPointer<vtkStructuredGridAlgorithm> converter;
+  if (hasEmptyExtent(input))
+  {
+    return vtkSmartPointer<vtkStructuredGrid>::New();
+  }
   if (vtkImageData::SafeDownCast(input))
   {
     converter = vtkSmartPointer<vtkImageDataToPointSet>::New();
@@ -284,7 +311,7 @@ double estimatedBytes(
   }
   const double perPoint = 2.0 * 3 * valueSize + (converted ? 3.0 * 8 : 0.0) +
     vtkPointPairJacobianArrays::BytesPerPoint(derivatives, input->GetPointData(), valueSize);
-  return perPoint * static_cast<double>(input->GetNumberOfPoints());
+  return hasEmptyExtent(input) ? 0.0 : perPoint * static_cast<double>(input->GetNumberOfPoints());
 }
 
 // What the filter's properties ask of the map's derivative.
@@ -597,7 +624,7 @@ bool vtkPointPairDeformationFilter::Deform(
                     << " are NaN or infinite, " << derivatives.Collapsed
                     << " normals have no direction where the map's derivative J flattens the "
                        "tangent plane (cof(J) n = 0), "
-                    << derivatives.Overflowed << " vectors J v overflow their type");
+                    << derivatives.Overflowed << " images J v or n' overflow their type");
   }
   if (derivatives.NonFiniteJacobians > 0)
   {

@@ -462,8 +462,14 @@ void vtkPointPairJacobianArrays::Write(vtkIdType first, vtkIdType count, const d
       }
       else if (t.AsNormal)
       {
+        // n' keeps |n|, which in a float array may exceed the largest float (up to sqrt 3 times).
         done = transformNormal(jacobian, v, out);
         collapsed += done ? 0 : 1;
+        if (done && !fitsIn(t.Output, out))
+        {
+          done = false;
+          ++overflowed;
+        }
       }
       else
       {
@@ -524,7 +530,7 @@ void vtkPointPairJacobianArrays::WriteNormal(
   const Transformed& t = this->Arrays[0];
   const TupleReader read(t.Input);
   const TupleWriter<3> write(t.Output);
-  vtkIdType nonFinite = 0, collapsed = 0;
+  vtkIdType nonFinite = 0, collapsed = 0, overflowed = 0;
   for (vtkIdType i = 0; i < count; ++i)
   {
     double n[3], out[3];
@@ -540,6 +546,11 @@ void vtkPointPairJacobianArrays::WriteNormal(
     {
       done = normalFromTangentImages(a, b, n, out);
       collapsed += done ? 0 : 1;
+      if (done && !fitsIn(t.Output, out))
+      {
+        done = false;
+        ++overflowed;
+      }
     }
     // (J fixes both tangents, e.g. J = I where a point is left in place: n' = n exactly, without
     // the rounding of t1 x t2; also for n = 0, whose tangents are 0)
@@ -547,6 +558,7 @@ void vtkPointPairJacobianArrays::WriteNormal(
   }
   this->NonFinite += nonFinite;
   this->Collapsed += collapsed;
+  this->Overflowed += overflowed;
 }
 
 void vtkPointPairJacobianArrays::AddTo(vtkPointData* output) const

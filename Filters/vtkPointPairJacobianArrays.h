@@ -18,7 +18,8 @@
  *   and 0 exactly then; 1 where J is singular (docs/conventions.md section 3 item 16).
  *
  * A normal or vector that is not finite passes unchanged and is counted (NonFinite), as is a
- * vector whose image overflows its type (Overflowed). Input arrays
+ * normal or vector whose image overflows its type (Overflowed: a float normal longer than the
+ * largest float may turn into one with a component beyond it). Input arrays
  * of any layout and value type are read (float and double AOS in place); an output array holds
  * float when its input does, double otherwise; the two scalar arrays hold the output points'
  * type.

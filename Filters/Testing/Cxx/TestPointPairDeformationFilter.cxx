@@ -700,6 +700,94 @@ TEST(PointPairDeformationFilter, ImagesAndRectilinearGridsDeformAsTheirPointsInD
   }
 }
 
+// An image or rectilinear grid of an empty extent, VTK's (0, -1, ...) or an inverted one (whose
+// point count VTK reports as a negative product), gives an empty structured grid without a
+// message, as an empty input does: before, an inverted extent gave a grid of -24 points whose
+// bounds aborted.
+TEST(PointPairDeformationFilter, ImagesAndRectilinearGridsOfEmptyOrInvertedExtentsGiveEmptyOutputs)
+{
+  const int extents[][6] = { { 0, -1, 0, -1, 0, -1 }, { 5, 0, 0, 5, 0, 0 }, { 0, 3, 2, 1, 0, 0 },
+    { 0, 3, 0, 3, 4, -4 } };
+  for (const auto& extent : extents)
+  {
+    vtkNew<vtkImageData> image;
+    image->SetExtent(const_cast<int*>(extent));
+    vtkNew<vtkRectilinearGrid> rectilinear;
+    rectilinear->SetExtent(const_cast<int*>(extent));
+    for (vtkDataSet* input :
+      { static_cast<vtkDataSet*>(image), static_cast<vtkDataSet*>(rectilinear) })
+    {
+      SCOPED_TRACE(std::string(input->GetClassName()) + " of extent " + std::to_string(extent[0]) +
+        " " + std::to_string(extent[1]) + " " + std::to_string(extent[2]) + " " +
+        std::to_string(extent[3]) + " " + std::to_string(extent[4]) + " " + std::to_string(extent[5]));
+      vtkNew<vtkPointPairDeformationFilter> filter;
+      filter->AddGenerator(0, 0, 0, 0, 0, 1, 0.5);
+      filter->SetInputData(input);
+      EventCounter events(filter);
+      filter->Update();
+      EXPECT_EQ(events.errors, 0) << events.lastError;
+      EXPECT_EQ(events.warnings, 0) << events.lastWarning;
+      vtkStructuredGrid* output = vtkStructuredGrid::SafeDownCast(filter->GetOutputDataObject(0));
+      ASSERT_NE(output, nullptr);
+      EXPECT_EQ(output->GetNumberOfPoints(), 0);
+      EXPECT_EQ(output->GetNumberOfCells(), 0);
+      double bounds[6];
+      output->GetBounds(bounds); // aborted before
+      EXPECT_GT(bounds[0], bounds[1]); // VTK's uninitialized bounds: an empty data set
+    }
+  }
+}
+
+// A float normal keeps its length, which may exceed the largest float: (3e38, 3e38, 3e38) turned
+// can have a component beyond it. Such a normal passes unchanged and is counted in the warning,
+// as a vector whose image overflows (before, it was written as infinity), through both paths:
+// the normals alone (from two tangents' images) and with a vector array (from J).
+TEST(PointPairDeformationFilter, FloatNormalsWhoseImagesOverflowPassUnchangedWithAWarning)
+{
+  Random random(23);
+  vtkNew<vtkPolyData> mesh = randomMesh(random, 30, 1.5);
+  vtkDataArray* normals = mesh->GetPointData()->GetArray("Normals");
+  ASSERT_EQ(normals->GetDataType(), VTK_FLOAT);
+  for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
+  {
+    normals->SetTuple3(i, 3e38, 3e38, 3e38);
+  }
+  mesh->GetPointData()->SetNormals(normals);
+  vtkNew<vtkFloatArray> velocity;
+  velocity->SetName("Velocity");
+  velocity->SetNumberOfComponents(3);
+  velocity->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  velocity->Fill(1.0);
+  mesh->GetPointData()->AddArray(velocity);
+  for (const bool withVector : { false, true })
+  {
+    vtkNew<vtkPointPairDeformationFilter> filter;
+    filter->SetInputData(mesh);
+    filter->AddGenerator(0, 0, 0.5, 1, 0, 1, 0.8);
+    filter->SetTransformNormals(true);
+    if (withVector)
+    {
+      filter->GetVectorArraySelection()->EnableArray("Velocity");
+    }
+    EventCounter events(filter);
+    filter->Update();
+    EXPECT_EQ(events.errors, 0) << events.lastError;
+    EXPECT_EQ(events.warnings, 1) << withVector;
+    EXPECT_NE(events.lastWarning.find("overflow their type"), std::string::npos) << events.lastWarning;
+    vtkDataArray* out = filter->GetOutput()->GetPointData()->GetNormals();
+    ASSERT_NE(out, nullptr);
+    vtkIdType unchanged = 0;
+    for (vtkIdType i = 0; i < out->GetNumberOfTuples(); ++i)
+    {
+      double n[3];
+      out->GetTuple(i, n);
+      ASSERT_TRUE(std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2])) << i;
+      unchanged += n[0] == 3e38f && n[1] == 3e38f && n[2] == 3e38f ? 1 : 0;
+    }
+    EXPECT_GT(unchanged, 0) << withVector; // the turned normals that would overflow
+  }
+}
+
 TEST(PointPairDeformationFilter, NoGeneratorsOrZeroStrengthIsTheIdentity)
 {
   Random random(18);
