@@ -113,10 +113,12 @@ int vtkHopfFibrationSource::RequestData(
     problem = this->BasePoints->Problem(); // a refused list
   }
   // The update's memory per grid sample, for the memory budget (vtkBoostedMemoryBudget): the peak
-  // resident memory at the 1e8-sample cap, double precision, measured once for issue 15 (14 and
-  // 23 GB; 84 and 138 bytes a sample at 4000 fibers of 1000 points, where the arrays' growth by
-  // doubling overshoots less).
-  const double bytesPerSample = mesh ? 230 : 140;
+  // resident memory, double precision, measured at the 1e8-sample cap for issue 15 (14 and 23 GB;
+  // 84 and 138 bytes a sample at 4000 fibers of 1000 points, where the arrays' growth by
+  // doubling overshoots less) and for the default 72 fibers of 500,000 and 1,000,000 points
+  // (155.5 and 154.6 bytes a sample for the fibers, 258.7 for the mesh at 500,000: long fibers
+  // cost more), with a few percent to spare.
+  const double bytesPerSample = mesh ? 265 : 160;
   if (problem.empty()) // before sampling: the base points alone could exhaust memory
   {
     problem = vtkBoostedGridDriver::GridProblem(sampling.rowCount(), columns, bytesPerSample,

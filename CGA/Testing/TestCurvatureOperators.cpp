@@ -393,7 +393,7 @@ TEST(CurvatureOperators, BilinearPaperAgainstExact)
   {
     for (double b = -1.0; b <= 1.0; b += 0.25)
     {
-      largest = std::max(largest, distance(mapWith(exact, a, b), mapWith(paper, a, b)));
+      largest = worseOf(largest, distance(mapWith(exact, a, b), mapWith(paper, a, b)));
       const CurvatureGenerator g = exact.generatorAt(a, b);
       const Multivector k = toMultivector(expExact(g.exponent));
       const Multivector image = k * up(exact.frame.at(a, b)) * k.reverse();

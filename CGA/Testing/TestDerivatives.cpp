@@ -60,7 +60,7 @@ double largestDifference(const Jacobian& a, const Jacobian& b)
   double d = 0.0;
   for (int i = 0; i < 9; ++i)
   {
-    d = std::max(d, std::fabs(a[i] - b[i]));
+    d = worseOf(d, std::fabs(a[i] - b[i]));
   }
   return d;
 }
@@ -70,7 +70,7 @@ double largestEntry(const Jacobian& a)
   double m = 0.0;
   for (const double x : a)
   {
-    m = std::max(m, std::fabs(x));
+    m = worseOf(m, std::fabs(x));
   }
   return m;
 }
@@ -216,7 +216,7 @@ TEST(Derivatives, JacobianMatchesTheMatrixExponentialReference)
       const ReferenceDerivative r = exactReference(c.generators, p, c.falloff, c.epsilon, c.strength);
       EXPECT_TRUE(pointsNear(image, r.image, 1e-11 * std::max(1.0, maxNorm(r.image))));
       const double error = largestDifference(j, r.jacobian) / std::max(1.0, largestEntry(r.jacobian));
-      worst = std::max(worst, error);
+      worst = worseOf(worst, error);
       EXPECT_LT(error, 1e-10) << "trial " << trial << " at " << p.x << " " << p.y << " " << p.z;
     }
   }
@@ -350,7 +350,7 @@ TEST(Derivatives, DirectionalDerivativesAreTheJacobianAlongTheDirections)
             {
               const double expected = j[3 * r] * t[0] + j[3 * r + 1] * t[1] + j[3 * r + 2] * t[2];
               const double error = std::fabs(got[r] - expected) / size;
-              worst = std::max(worst, error);
+              worst = worseOf(worst, error);
               EXPECT_LT(error, 1e-12) << isa << " point " << i;
             }
           }

@@ -26,6 +26,7 @@ namespace
 {
 using namespace cga;
 using cgatest::Random;
+using cgatest::worseOf;
 
 using cgatest::kAllKinds;
 using cgatest::referenceBivector;
@@ -140,7 +141,7 @@ double expectOneGeneratorIsItsClosedForm(GeneratorKind kind,
       }
       else
       {
-        largestOtherRuleError = std::max(largestOtherRuleError, distance(image, expected));
+        largestOtherRuleError = worseOf(largestOtherRuleError, distance(image, expected));
       }
     }
   }
@@ -325,7 +326,7 @@ TEST(GeneratorKinds, AStrongDilationScalesByItsFactorToTheLastBits)
         expectTheBatchBitsOnEveryInstructionSet(field, p, strength, image);
         const double error = norm(image - expected) / size;
         EXPECT_LE(error, 2e-15) << "c " << strength << " offset " << o;
-        worst = std::max(worst, error);
+        worst = worseOf(worst, error);
         // The location is the fixed point, to the bit, where its own c = strength/eps is at most
         // 1400 (kStrongHyperbolicLimit: the plane's angle is c/2).
         if (std::abs(strength) / epsilons[o] <= 1400.0)
@@ -394,7 +395,7 @@ TEST(GeneratorKinds, AStrongLoxodromicMapScalesAndTurnsByItsFactorAndAngle)
           expectTheBatchBitsOnEveryInstructionSet(field, p, strength, image);
           const double error = norm(image - expected) / size;
           EXPECT_LE(error, moved ? 5e-15 : 2e-15) << "c " << strength << " offset " << o << " moved " << moved;
-          worst[moved] = std::max(worst[moved], error);
+          worst[moved] = worseOf(worst[moved], error);
           if (!moved && std::abs(strength) / epsilons[o] <= 1400.0)
           {
             expectFixedToTheBit(field, location, strength);
@@ -504,7 +505,7 @@ TEST(GeneratorKinds, AStrongMapBesideATransversionScalesTowardItsAttractor)
           EXPECT_EQ(image.y, 0.0) << "c " << strength;
           EXPECT_EQ(image.z, 0.0) << "c " << strength;
         }
-        worst = std::max(worst, error);
+        worst = worseOf(worst, error);
       }
     }
   }
@@ -571,7 +572,7 @@ TEST(GeneratorKinds, ExactSumsOfKindsAreConformal)
     const double after = angleAt(referenceImage(k, a), referenceImage(k, b), referenceImage(k, c));
     EXPECT_LE(std::fabs(after - before), 10.0 * h);
     const Multivector paper = toMultivector(field.boostAt(a, 1.0, ExponentialRule::Paper));
-    largestPaperAngleChange = std::max(largestPaperAngleChange,
+    largestPaperAngleChange = worseOf(largestPaperAngleChange,
       std::fabs(angleAt(referenceImage(paper, a), referenceImage(paper, b), referenceImage(paper, c)) - before));
   }
   EXPECT_GT(largestPaperAngleChange, 100.0 * h);
@@ -602,8 +603,8 @@ RuleComparison compareRules(const std::vector<GeneratorParameters>& generators, 
     EXPECT_TRUE(field.map(p, 1.0, ExponentialRule::Paper, paper));
     EXPECT_TRUE(field.map(p, 1.0, ExponentialRule::Exact, exact));
     result.ruleDifference =
-      std::max(result.ruleDifference, distance(paper, exact) / (1.0 + norm(exact)));
-    result.outerSquare = std::max(result.outerSquare, outerSquareSize(field.generatorAt(p)));
+      worseOf(result.ruleDifference, distance(paper, exact) / (1.0 + norm(exact)));
+    result.outerSquare = worseOf(result.outerSquare, outerSquareSize(field.generatorAt(p)));
   }
   return result;
 }

@@ -70,8 +70,8 @@ Worst worstRelativeError(const std::vector<FieldGenerator>& generators,
     const double r = norm(p - c);
     const double rounding = kRounding * absoluteSum(generators, c, p, falloff, epsilon) *
       (2.0 * std::sqrt(3.0) + 4.0 * r + std::sqrt(3.0) * r * r);
-    worst.relativeError = std::max(worst.relativeError, error / budget);
-    worst.boundedError = std::max(worst.boundedError, error / (budget + rounding));
+    worst.relativeError = worseOf(worst.relativeError, error / budget);
+    worst.boundedError = worseOf(worst.boundedError, error / (budget + rounding));
   }
   return worst;
 }
@@ -398,8 +398,8 @@ TEST(GeneratorTree, ImagesFollowTheBoundThroughTheMap)
         {
           const Vec3 e{ exact[3 * i], exact[3 * i + 1], exact[3 * i + 2] };
           const Vec3 a{ approximate[3 * i], approximate[3 * i + 1], approximate[3 * i + 2] };
-          largestDisplacement = std::max(largestDisplacement, norm(e - points[i]));
-          largestError = std::max(largestError, norm(a - e));
+          largestDisplacement = worseOf(largestDisplacement, norm(e - points[i]));
+          largestError = worseOf(largestError, norm(a - e));
           if (i % 10 == 0)
           {
             Vec3 single;
@@ -459,7 +459,7 @@ TEST(GeneratorTree, FirstOrderMotionIsTheMapsDerivativeAndMeetsItsBound)
                       c[Bivector::E23] * c[Bivector::E23] + c[Bivector::NONI] * c[Bivector::NONI]) * r +
       std::hypot(c[Bivector::E1NO], c[Bivector::E2NO], c[Bivector::E3NO]) * r * r;
     EXPECT_LE(norm(motion), bound * (1.0 + 1e-14)) << "trial " << trial;
-    largestShare = std::max(largestShare, norm(motion) / bound);
+    largestShare = worseOf(largestShare, norm(motion) / bound);
   }
   EXPECT_GT(largestShare, 0.999); // attained (single parts)
 }
@@ -545,7 +545,7 @@ TEST(GeneratorTree, RemainderBoundHoldsForTheSeriesTail)
           }
           EXPECT_NEAR(static_cast<double>(1.0L / (1.0L - 2.0L * x * qq + qq * qq) - partial),
                       static_cast<double>(tail), 1e-15 / (1.0 - q));
-          worst = std::max(worst, static_cast<double>(std::fabs(tail)));
+          worst = worseOf(worst, static_cast<double>(std::fabs(tail)));
         }
         EXPECT_LE(worst, bound * (1.0 + 1e-12)) << "degree " << degree << " q " << q << " |u| " << u;
         if (u == 1.0 && q == 0.01)

@@ -17,6 +17,7 @@ using namespace cga;
 using cgatest::gaussLinkingIntegral;
 using cgatest::Random;
 using cgatest::relativeDifference;
+using cgatest::worseOf;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -45,7 +46,7 @@ double cocircularity(const std::vector<Vec3>& points, const EuclideanCircle& c)
     const Vec3 d = p - c.center;
     const double height = dot(d, c.normal);
     const double inPlane = norm(d - height * c.normal);
-    worst = std::max({ worst, std::fabs(height) / c.radius, std::fabs(inPlane - c.radius) / c.radius });
+    worst = worseOf(worst, worseOf(std::fabs(height) / c.radius, std::fabs(inPlane - c.radius) / c.radius));
   }
   return worst;
 }
@@ -354,7 +355,7 @@ TEST(HopfFibration, AntipodalFibersAreOrthogonalAndOnlyClassicalOnesCommute)
       }
       else
       {
-        worstPaperCommutator = std::max(worstPaperCommutator, commutator);
+        worstPaperCommutator = worseOf(worstPaperCommutator, commutator);
       }
     }
   }

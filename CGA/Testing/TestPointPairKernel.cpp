@@ -18,6 +18,7 @@ namespace
 {
 using namespace cga;
 using cgatest::Random;
+using cgatest::worseOf;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -168,7 +169,7 @@ TEST(PointPairKernel, IllConditionedFieldsStayAccurateAndEqualThePointwiseMap)
           ASSERT_TRUE(sameBits(batch[i], (&pointwise.x)[i])) << set << " case " << n;
         }
         const double scale = std::max(1.0, norm(expected));
-        worstError = std::max(worstError, norm(pointwise - expected) / scale);
+        worstError = worseOf(worstError, norm(pointwise - expected) / scale);
       }
     }
     EXPECT_LE(worstError, 1e-9) << set; // 2.7e-11 seen
@@ -363,7 +364,7 @@ TEST(PointPairKernel, GeneratorSumIsFusedAndTheSameOnEveryInstructionSet)
         // Each term errs by a few units of 2^-53 (distance, denominator, division, product), the
         // running sum by one per generator: (M + 8) 2^-53 of the sum of the terms' magnitudes.
         const double error = static_cast<double>(std::fabs(sums[j] - exact[j]));
-        worst = std::max(worst, error / ((generatorCount + 8) * 0x1p-53 * bound[j]));
+        worst = worseOf(worst, error / ((generatorCount + 8) * 0x1p-53 * bound[j]));
       }
       EXPECT_EQ(differing, 0) << set << " M=" << generatorCount;
       EXPECT_LE(worst, 1.0) << set << " M=" << generatorCount;
@@ -444,7 +445,7 @@ TEST(PointPairKernel, PairDifferenceIsTheGivenDoublesWhereverTheCenterIs)
         const double error = static_cast<double>(std::fabs((noni - sum) / sum)) / ((3 + 8) * 0x1p-53);
         EXPECT_LE(error, 1.0) << set << " shift " << shift.x << " point " << p.x << " " << p.y
                               << " " << p.z;
-        worst = std::max(worst, error);
+        worst = worseOf(worst, error);
       }
       RecordProperty("worst_" + set + (far ? "_far" : "_near_origin"), std::to_string(worst));
     }

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -124,15 +125,24 @@ inline double relativeDifference(const Bivector& a, const Bivector& b, double fl
   return relativeDifference(toMultivector(a), toMultivector(b), floor);
 }
 
-/// Maximum-norm distance of Euclidean vectors.
+/// The larger of a running worst error and a new one, NaN when either is NaN. Fold errors with
+/// this, never std::max: std::max(worst, NaN) keeps worst, so a NaN result would vanish and the
+/// EXPECT_LE(worst, tolerance) after the loop could not fail.
+inline double worseOf(double worst, double error)
+{
+  return std::isnan(worst) || std::isnan(error) ? std::numeric_limits<double>::quiet_NaN()
+                                                : std::max(worst, error);
+}
+
+/// Maximum-norm distance of Euclidean vectors (NaN if a coordinate is: worseOf).
 inline double distance(Vec3 a, Vec3 b)
 {
-  return std::max({ std::fabs(a.x - b.x), std::fabs(a.y - b.y), std::fabs(a.z - b.z) });
+  return worseOf(worseOf(std::fabs(a.x - b.x), std::fabs(a.y - b.y)), std::fabs(a.z - b.z));
 }
 
 inline double maxNorm(Vec3 a)
 {
-  return std::max({ std::fabs(a.x), std::fabs(a.y), std::fabs(a.z) });
+  return worseOf(worseOf(std::fabs(a.x), std::fabs(a.y)), std::fabs(a.z));
 }
 
 /// Relative closeness of Euclidean points: |a - b|_max <= tolerance * max(1, |b|_max).

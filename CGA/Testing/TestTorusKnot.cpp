@@ -18,6 +18,7 @@ using cgatest::gaussLinkingIntegral;
 using cgatest::polygonLinkingNumber;
 using cgatest::Random;
 using cgatest::relativeDifference;
+using cgatest::worseOf;
 
 std::vector<Vec3> circle(const TorusKnot::Circle& c, int count)
 {
@@ -159,7 +160,7 @@ TEST(TorusKnot, TheMiddleTorusThroughTheCenterPassesThroughInfinity)
     {
       Vec3 p;
       // A sample exactly at infinity has no point: count it as out of reach.
-      largest = std::max(largest, orbit.point(seed, orbit.period() * i / 2400, p) ? norm(p) : 1e300);
+      largest = worseOf(largest, orbit.point(seed, orbit.period() * i / 2400, p) ? norm(p) : 1e300);
     }
     return largest;
   };

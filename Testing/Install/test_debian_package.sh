@@ -66,8 +66,12 @@ for line in "Format: https://www.debian.org/doc/packaging-manuals/copyright-form
   grep -qxF -- "$line" <(sed 's/^ //' "$copyright") || fail "copyright lacks the line: $line"
 done
 # lintian, when installed: neither of the two tags this package answers (the copyright file; the
-# auto-load link, overridden with its reason) may be reported.
-if command -v lintian >/dev/null; then
+# auto-load link, overridden with its reason) may be reported. Without it the skip is said, in the
+# words of the configure's skipped tests (boostedsurfaces_skip_test), never passed over in silence.
+if ! command -v lintian >/dev/null; then
+  echo "BoostedSurfaces: lintian not found, skipping the lintian checks of $(basename "$deb")" \
+       "(no-copyright-file, subdir-in-usr-bin, copyright-format, malformed-override, unused-override)"
+else
   lintian --tag-display-limit 0 "$deb" >"$work/lintian.log" 2>&1 || true
   if grep -E "no-copyright-file|subdir-in-usr-bin|copyright-format|malformed-override|unused-override" "$work/lintian.log"; then
     fail "lintian reports the tags above"

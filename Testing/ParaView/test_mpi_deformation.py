@@ -48,8 +48,8 @@ single_points = keyed(single.GetPoint(i) for i in range(single.GetNumberOfPoints
 if gathered_points != single_points:
     failures.append("%d deformed points differ between the ranks and one process"
                     % len(gathered_points ^ single_points))
-moved = max(abs(a - b) for a, b in zip(single.GetBounds(), (-1, 1, -1, 1, -1, 1)))
-if moved < 1e-2:
+moved = common.largest(abs(a - b) for a, b in zip(single.GetBounds(), (-1, 1, -1, 1, -1, 1)))
+if not moved >= 1e-2:  # (a NaN bound must fail too)
     failures.append("the sphere was hardly deformed (%g): the test would prove nothing" % moved)
 
 common.report(failures, "Point Pair Deformation over MPI ranks")

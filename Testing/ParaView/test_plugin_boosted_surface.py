@@ -32,7 +32,8 @@ if info.GetNumberOfPoints() != 17 * 33 or info.GetNumberOfCells() != 16 * 32:
                     % (info.GetNumberOfPoints(), info.GetNumberOfCells(), 17 * 33, 16 * 32))
 bounds = info.GetBounds()
 # x runs from 0 (lambda = 0) to the largest plane x = lambda/(1+lambda^2) = 1/2 (lambda = 1).
-if abs(bounds[0]) > 1e-12 or abs(bounds[1] - 0.5) > 1e-12 or abs(bounds[3] - 1.0) > 1e-12:
+# `not ... <= 1e-12`, not `> 1e-12`: NaN bounds must fail
+if not (abs(bounds[0]) <= 1e-12 and abs(bounds[1] - 0.5) <= 1e-12 and abs(bounds[3] - 1.0) <= 1e-12):
     failures.append("unexpected bounds %r" % (bounds,))
 common.check_point_arrays(info, ("lambda", "theta", "Normals", "TextureCoordinates"), failures)
 

@@ -41,7 +41,7 @@ common.check_defaults(source, defaults, failures)
 source.UpdatePipeline()
 data = servermanager.Fetch(source)
 period = data.GetFieldData().GetArray("Period").GetValue(0)
-if abs(period - 6.0) > 1e-12:
+if not abs(period - 6.0) <= 1e-12:  # (`> 1e-12` would pass a NaN period)
     failures.append("the trefoil's period is %r, expected 6" % period)
 if data.GetNumberOfPoints() != 512 or data.GetNumberOfLines() != 1:
     failures.append("the trefoil has %d points in %d lines" % (data.GetNumberOfPoints(), data.GetNumberOfLines()))
@@ -60,7 +60,7 @@ source.SeedList = [1, 0, 0, 2, 0, 0.5, 0.5, 0.5, 0]
 source.UpdatePipeline()
 data = servermanager.Fetch(source)
 period = data.GetFieldData().GetArray("Period").GetValue(0)
-if abs(period - 6.283185307179586) > 1e-12:
+if not abs(period - 6.283185307179586) <= 1e-12:
     failures.append("a unit rotation row has the period %r, expected 2 pi" % period)
 if data.GetNumberOfLines() != 3:
     failures.append("three seeds give %d orbits" % data.GetNumberOfLines())

@@ -67,7 +67,7 @@ for label, (proxy, port, ports, first) in proxies.items():
     if aim != (1, "Direction", 1, "No Data Scaling Off"):
         failures.append("%s: the arrows are not aimed and sized: %r" % (label, aim))
     expected = 0.2 * largest_extent((proxy, 0), (proxy, port))
-    if abs(display.ScaleFactor - expected) > 1e-12 * expected:
+    if not abs(display.ScaleFactor - expected) <= 1e-12 * expected:  # (a NaN fails too)
         failures.append("%s: ScaleFactor %r, not 0.2 x the largest extent = %r"
                         % (label, display.ScaleFactor, expected))
     if simple.Show(simple.OutputPort(proxy, 0), view).Representation != first:

@@ -24,7 +24,7 @@ def points_of(proxy):
 def largest_distance(a, b):
     if len(a) != len(b):
         return float("inf")
-    return max(math.dist(p, q) for p, q in zip(a, b))
+    return common.largest(math.dist(p, q) for p, q in zip(a, b))  # NaN if any is
 
 
 sphere = simple.Sphere(Radius=1.0, ThetaResolution=32, PhiResolution=24)
@@ -69,7 +69,8 @@ for p in source_points:
     expected.append([x[i] + (y[i] + u[i] * y2) / denominator for i in range(3)])
 error = largest_distance(points_of(deformation), expected)
 print("one generator vs closed form: %g" % error)
-if error > 1e-5:  # the sphere's points are float
+# `not error <= bound`, not `error > bound`: a NaN error must fail
+if not error <= 1e-5:  # the sphere's points are float
     failures.append("one generator differs from the closed form by %g" % error)
 
 # The arrays through the derivative: the sphere's normals copied into "Copy" (a plain point
@@ -82,10 +83,10 @@ for mode in ("NormalArrays", "VectorArrays"):
                                    ComputeConformalityDefect=1, **{mode: ["Copy"]})
     data = servermanager.Fetch(through)
     normals, copy = data.GetPointData().GetNormals(), data.GetPointData().GetArray("Copy")
-    largest = max(math.dist(normals.GetTuple3(i), copy.GetTuple3(i))
-                  for i in range(data.GetNumberOfPoints()))
+    largest = common.largest(math.dist(normals.GetTuple3(i), copy.GetTuple3(i))
+                             for i in range(data.GetNumberOfPoints()))
     print("%s: Copy vs the transformed Normals: %g" % (mode, largest))
-    if (largest > 1e-6) if mode == "NormalArrays" else (largest < 1e-2):
+    if (not largest <= 1e-6) if mode == "NormalArrays" else (not largest >= 1e-2):
         failures.append("%s=['Copy'] did not transform it as documented (%g)" % (mode, largest))
     for name in ("ConformalScale", "ConformalityDefect"):
         if data.GetPointData().GetArray(name) is None:
@@ -101,7 +102,7 @@ from_port = PointPairDeformation(Input=sphere, Generators=weights, GeneratorList
                                  UseGeneratorWeightArray=1, GeneratorWeightArrayName="w")
 error = largest_distance(points_of(from_port), points_of(deformation))
 print("Generators input vs table: %g" % error)
-if error > 1e-6:
+if not error <= 1e-6:
     failures.append("the Generators input differs from the table by %g" % error)
 
 # The handle moves the selected row.
@@ -109,7 +110,7 @@ moved = PointPairDeformation(Input=sphere, GeneratorList=[0.5, 0.5, 0.5] + list(
                              SelectedGenerator=0, SelectedGeneratorLocation=list(x),
                              Falloff=k, Epsilon=eps)
 error = largest_distance(points_of(moved), points_of(deformation))
-if error > 1e-12:
+if not error <= 1e-12:
     failures.append("the selected generator did not take the handle's location (%g)" % error)
 
 # The Kind column: a Rotation row (kind 1) turns p about the axis through x along v by
@@ -124,7 +125,7 @@ for p in source_points:
                      x[1] + math.sin(c) * y[0] + math.cos(c) * y[1], p[2]])
 error = largest_distance(points_of(rotation), expected)
 print("a Rotation row vs closed form: %g" % error)
-if error > 1e-5:  # the sphere's points are float
+if not error <= 1e-5:  # the sphere's points are float
     failures.append("a Rotation row differs from the closed form by %g" % error)
 
 # Fig 11 style image: four generators around the sphere.

@@ -61,7 +61,7 @@ generators = simple.OutputPort(fit, 1)
 again = PointPairDeformation(Input=sphere, Generators=generators, GeneratorList=[],  # noqa: F821
                              UseGeneratorWeightArray=1, OutputPointsPrecision="Double")
 ours, theirs = mesh, servermanager.Fetch(again)
-difference = max(math.dist(ours.GetPoint(i), theirs.GetPoint(i))
+difference = common.largest(math.dist(ours.GetPoint(i), theirs.GetPoint(i))
                  for i in range(ours.GetNumberOfPoints())) if ours.GetNumberOfPoints() == \
     theirs.GetNumberOfPoints() else math.inf
 print("fitted mesh vs the deformation of the Generators output: %g" % difference)

@@ -44,6 +44,10 @@ x and 1e-9 ... 10 from it, against the same bound (the pointwise sandwichPoint(e
 shown with -v: it is not held to it). Far from x these take the double-double branch
 (docs/conventions.md section 2 item 12).
 
+Every number the probe writes, and every reference one, must be finite: a NaN would pass any
+comparison with a bound, so it is a failure of its own (errors are folded by largest(), which keeps
+a NaN, and fail on `not error <= bound`).
+
     python3 test_exact_accuracy.py <ExactAccuracyProbe> [-v]
 """
 import math
@@ -51,6 +55,7 @@ import subprocess
 import sys
 
 import exact_reference as reference
+from python_test_common import largest
 
 RELATIVE = 1e-12
 CONDITION_FACTOR = 8.0
@@ -307,21 +312,25 @@ def check_jacobian(name, p, jacobian, generators, falloff, eps, strength, verbos
     term). With cross_check, the reference's central differences must also agree with its
     Frechet derivative (exact_reference.jacobian_by_frechet) to 1e-14 of max(1, |J|)."""
     ref = reference.jacobian(generators, p, falloff, eps, strength)
+    if not all_finite(ref):
+        print(f"FAIL {name}: {p} the reference Jacobian is not finite: {ref}")
+        return 1, 0
     with reference.mp.workdps(reference.DIGITS):
         b = reference.field_bivector(generators, p, falloff, eps)
-        exponent = float(max(abs(c) for row in b for c in row)) * abs(strength)
-    size = max(1.0, max(abs(c) for c in ref))
+        exponent = float(largest(abs(c) for row in b for c in row)) * abs(strength)
+    size = max(1.0, largest(abs(c) for c in ref))
     failures = conditioned = 0
     if cross_check:
         frechet = reference.jacobian_by_frechet(generators, p, falloff, eps, strength)
-        disagreement = max(abs(a - r) for a, r in zip(frechet, ref))
-        if disagreement > 1e-14 * size:
+        disagreement = largest(abs(a - r) for a, r in zip(frechet, ref))
+        if not disagreement <= 1e-14 * size:
             print(f"FAIL {name}: {p} the reference's central differences and Frechet derivative "
                   f"differ by {disagreement:.3g}")
             failures += 1
-    error = max(abs(a - r) for a, r in zip(jacobian, ref))
+    # largest() and `not error <= bound` (not `error > bound`): a NaN must fail, not pass
+    error = largest(abs(a - r) for a, r in zip(jacobian, ref))
     bound = size * (RELATIVE + JACOBIAN_EXPONENT_FACTOR * max(1.0, exponent))
-    if error > bound:
+    if not error <= bound:
         # an ill-conditioned Jacobian: one ulp of B(p) or dB/dp moves it beyond the bound
         bound += CONDITION_FACTOR * reference.jacobian_sensitivity(generators, p, falloff, eps,
                                                                    strength)
@@ -329,7 +338,7 @@ def check_jacobian(name, p, jacobian, generators, falloff, eps, strength, verbos
     if verbose and error > RELATIVE * size:
         print(f"  {name}: {p} Jacobian error {error:.3g} = {error / size:.3g} of max(1, |J|), "
               f"|sB| {exponent:.3g}, bound {bound:.3g}{' (conditioned)' if conditioned else ''}")
-    if error > bound:
+    if not error <= bound:
         print(f"FAIL {name}: {p} Jacobian error {error:.3g} > bound {bound:.3g}")
         failures += 1
     return failures, conditioned
@@ -381,21 +390,25 @@ def check_exponents(probe, verbose):
                 refs.append(reference.image_of_bivector(
                     reference.bivector_from_components(b), p, -1.0))
         size = max(abs(c) for _, p in pairs for c in p)
-        displacement = max(math.dist([float(c) for c in r], p) for r, (_, p) in zip(refs, pairs))
+        displacement = largest(math.dist([float(c) for c in r], p) for r, (_, p) in zip(refs, pairs))
         scale = max(size, displacement)
         for (b, p), ref, q in zip(pairs, refs, got):
             if q is None:
                 print(f"FAIL {name}: {p} unmapped")
                 failures += 1
                 continue
+            if not all_finite(q) or not all_finite(ref):
+                print(f"FAIL {name}: {p} not finite: batch and pointwise images {q}, reference {ref}")
+                failures += 1
+                continue
             errors = [float(reference.mpmath.sqrt(sum((image[i] - ref[i]) ** 2 for i in range(3))))
                       for image in (q[:3], q[3:])]
             bound = RELATIVE * scale
-            if errors[0] > bound:
+            if not errors[0] <= bound:
                 with reference.mp.workdps(reference.DIGITS):
                     bound += CONDITION_FACTOR * reference.bivector_sensitivity(
                         reference.bivector_from_components(b), p, -1.0)
-            if errors[0] > bound:
+            if not errors[0] <= bound:
                 print(f"FAIL {name}: {p} error {errors[0]:.3g} > bound {bound:.3g}")
                 failures += 1
             if verbose:
@@ -406,6 +419,12 @@ def check_exponents(probe, verbose):
 
 
 PATHS = ("batch", "pointwise", "rows batch", "rows pointwise")
+
+
+def all_finite(values):
+    """Every number (float or mpmath's) is finite: a NaN or an infinity from the probe or the
+    reference is a failure of its own, never an error that comparisons let through."""
+    return all(reference.mpmath.isfinite(c) for c in values)
 
 
 def read_values(line, count):
@@ -450,7 +469,7 @@ def check_configuration(case, output, verbose):
     got_all = [read_images(next(output), rows) for _ in points]
     refs = [reference.image(generators, p, falloff, eps, strength) for p in points]
     size = max(abs(c) for p in points for c in p)
-    displacement = max(math.dist([float(c) for c in r], p) for r, p in zip(refs, points))
+    displacement = largest(math.dist([float(c) for c in r], p) for r, p in zip(refs, points))
     scale = max(size, displacement)
     failures = conditioned = jacobians_conditioned = 0
     worst = 0.0
@@ -460,6 +479,12 @@ def check_configuration(case, output, verbose):
             failures += 1
             continue
         images, jacobian = got
+        if not all_finite([c for q in images.values() for c in q] + jacobian) or \
+                not all_finite(ref):
+            print(f"FAIL {name}: {p} not finite: images {images}, Jacobian {jacobian}, "
+                  f"reference {ref}")
+            failures += 1
+            continue
         if check_jacobians:
             f, c = check_jacobian(name, p, jacobian, generators, falloff, eps, strength, verbose,
                                   check_jacobians == "cross-checked")
@@ -472,7 +497,7 @@ def check_configuration(case, output, verbose):
             q = images[path]
             error = float(reference.mpmath.sqrt(sum((q[i] - ref[i]) ** 2 for i in range(3))))
             bound = RELATIVE * scale
-            if error > bound:
+            if not error <= bound:
                 if sensitivity is None:
                     sensitivity = reference.one_ulp_sensitivity(generators, p, falloff, eps,
                                                                 strength)
@@ -481,11 +506,11 @@ def check_configuration(case, output, verbose):
                 if verbose:
                     print(f"  {name}: {p} {path} error {error:.3g} beyond 1e-12 scale; "
                           f"one-ulp sensitivity {sensitivity:.3g}")
-            if error > bound:
+            if not error <= bound:
                 print(f"FAIL {name}: {p} {path} error {error:.3g} > bound {bound:.3g}")
                 failures += 1
             if scale:  # a fixed point at the origin: scale 0, bound 0, so it must map exactly
-                worst = max(worst, error / scale)
+                worst = largest([worst, error / scale])
             if lone and has_fixed_location(generators[0]) and p == generators[0][1] and \
                     tuple(q) != p:
                 print(f"FAIL {name}: the point on the lone generator moved to {q} ({path})")

@@ -1,12 +1,29 @@
-"""Shared by the Python tests: error observation, and the image tests' arguments, actors, window,
-camera and regression-image comparison."""
+"""Shared by the Python tests: error observation, a NaN-aware maximum, and the image tests'
+arguments, actors, window, camera and regression-image comparison."""
 import argparse
+import math
 
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderWindow
 from vtkmodules.vtkTestingRendering import vtkTesting
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL render window)
+
+
+def largest(values):
+    """The largest of `values` (an iterable of numbers, floats or mpmath's), NaN if any is NaN.
+    Python's max() keeps what it has against a NaN (every comparison with NaN is false), so a NaN
+    error would vanish from the largest and `largest > bound` could never fail: fold errors with
+    this and fail on `not (largest(...) <= bound)`."""
+    result = None
+    for value in values:
+        if math.isnan(value):
+            return math.nan
+        if result is None or value > result:
+            result = value
+    if result is None:
+        raise ValueError("largest() of no values")
+    return result
 
 
 class ErrorRecorder:

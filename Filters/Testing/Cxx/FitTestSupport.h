@@ -4,6 +4,7 @@
 #ifndef FitTestSupport_h
 #define FitTestSupport_h
 
+#include "TestSupport.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkNew.h"
@@ -97,7 +98,7 @@ double largestResidual(vtkPolyData* output)
   double largest = -1.0;
   for (vtkIdType i = 0; residual && i < residual->GetNumberOfTuples(); ++i)
   {
-    largest = std::max(largest, residual->GetComponent(i, 0));
+    largest = cgatest::worseOf(largest, residual->GetComponent(i, 0));
   }
   return largest;
 }

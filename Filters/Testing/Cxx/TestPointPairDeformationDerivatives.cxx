@@ -40,6 +40,7 @@ using cga::GeneratorKind;
 using cga::GeneratorParameters;
 using cga::Vec3;
 using cgatest::Random;
+using cgatest::worseOf;
 
 constexpr int Exact = vtkPointPairDeformationFilter::EXACT;
 constexpr int Paper = vtkPointPairDeformationFilter::PAPER;
@@ -214,7 +215,7 @@ TEST(PointPairDeformationDerivatives, NormalsAndVectorsMatchFiniteDifferencesOfT
         {
           for (int c = 0; c < 3; ++c)
           {
-            size = std::max(size, std::fabs(j[r][c]));
+            size = worseOf(size, std::fabs(j[r][c]));
           }
         }
         const Vec3 n = tupleOf(data->GetPointData()->GetNormals(), i);
@@ -222,13 +223,13 @@ TEST(PointPairDeformationDerivatives, NormalsAndVectorsMatchFiniteDifferencesOfT
         const Vec3 expected = normalBySolve(j, n);
         const Vec3 got = tupleOf(normals, i);
         EXPECT_NEAR(cga::norm(got), 1.0, 1e-14);
-        worstAngle = std::max(worstAngle, angleBetween(got, expected));
+        worstAngle = worseOf(worstAngle, angleBetween(got, expected));
         const Vec3 v = tupleOf(data->GetPointData()->GetArray("Velocity"), i);
         const Vec3 jv{ j[0][0] * v.x + j[0][1] * v.y + j[0][2] * v.z,
           j[1][0] * v.x + j[1][1] * v.y + j[1][2] * v.z,
           j[2][0] * v.x + j[2][1] * v.y + j[2][2] * v.z };
         worstVector =
-          std::max(worstVector, cga::norm(tupleOf(velocity, i) - jv) / (size * cga::norm(v)));
+          worseOf(worstVector, cga::norm(tupleOf(velocity, i) - jv) / (size * cga::norm(v)));
       }
       EXPECT_LE(worstAngle, 1e-8) << "rule " << rule << (soa ? " SOA" : " AOS");
       EXPECT_LE(worstVector, 1e-8) << "rule " << rule << (soa ? " SOA" : " AOS");
@@ -296,13 +297,13 @@ TEST(PointPairDeformationDerivatives, NormalsAloneFromTwoTangentsEqualTheCofacto
       const double length = std::fabs(cga::norm(got) / cga::norm(n) - 1.0);
       EXPECT_LE(angle, 1e-12) << i;
       EXPECT_LE(length, 1e-14) << i;
-      worstAngle = std::max(worstAngle, angle);
-      worstLength = std::max(worstLength, length);
+      worstAngle = worseOf(worstAngle, angle);
+      worstLength = worseOf(worstLength, length);
       double j[3][3];
       finiteDifferenceJacobian(setup, pointOf(data, i), 1e-3, j);
       const double difference = angleBetween(got, normalBySolve(j, n));
       EXPECT_LE(difference, 1e-8) << i;
-      worstDifference = std::max(worstDifference, difference);
+      worstDifference = worseOf(worstDifference, difference);
     }
     std::cout << "rule " << rule << ": two tangents against the cofactor form: largest angle "
               << worstAngle << " rad, largest relative length error " << worstLength
@@ -434,8 +435,8 @@ TEST(PointPairDeformationDerivatives, ALoneDilationHasItsClosedFormScaleAndDefec
         const double s = std::exp(c) * std::cbrt(std::fabs(1.0 + g));
         const double radial = std::fabs(1.0 + g);
         const double expectedDefect = 1.0 - std::min(radial, 1.0) / std::max(radial, 1.0);
-        worstScale = std::max(worstScale, std::fabs(scale->GetComponent(i, 0) / s - 1.0));
-        worstDefect = std::max(worstDefect, std::fabs(defect->GetComponent(i, 0) - expectedDefect));
+        worstScale = worseOf(worstScale, std::fabs(scale->GetComponent(i, 0) / s - 1.0));
+        worstDefect = worseOf(worstDefect, std::fabs(defect->GetComponent(i, 0) - expectedDefect));
       }
       EXPECT_LE(worstScale, 1e-13) << "falloff " << falloff << ", rule " << rule;
       EXPECT_LE(worstDefect, 1e-12) << "falloff " << falloff << ", rule " << rule;
@@ -466,7 +467,7 @@ TEST(PointPairDeformationDerivatives, ALoneRotationKeepsVolumes)
     double worst = 0.0;
     for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
     {
-      worst = std::max(worst, std::fabs(scale->GetComponent(i, 0) - 1.0));
+      worst = worseOf(worst, std::fabs(scale->GetComponent(i, 0) - 1.0));
     }
     EXPECT_LE(worst, 1e-13) << "falloff " << falloff;
     if (falloff == 0.0)
@@ -501,7 +502,7 @@ TEST(PointPairDeformationDerivatives, AConstantFieldIsConformalForTheExactRule)
       double j[3][3];
       finiteDifferenceJacobian(setup, pointOf(data, i), 1e-3, j);
       const double s = std::cbrt(std::fabs(vtkMath::Determinant3x3(j)));
-      worstScale = std::max(worstScale, std::fabs(scale->GetComponent(i, 0) / s - 1.0));
+      worstScale = worseOf(worstScale, std::fabs(scale->GetComponent(i, 0) / s - 1.0));
     }
     EXPECT_LE(worstScale, 1e-9) << "rule " << rule;
     if (rule == Exact)

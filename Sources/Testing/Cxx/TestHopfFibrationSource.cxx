@@ -7,6 +7,7 @@
 #include "GeneratorGlyphCacheChecks.h"
 #include "GridSourceChecks.h"
 #include "ProgressLog.h"
+#include "TestSupport.h"
 #include "TranslationChecks.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -31,6 +32,8 @@
 
 namespace
 {
+using cgatest::worseOf;
+
 constexpr double kPi = 3.14159265358979323846;
 
 using Point = std::array<double, 3>;
@@ -75,7 +78,7 @@ double cocircularity(const std::vector<Point>& points)
     vtkMath::Subtract(p.data(), center, d);
     const double height = vtkMath::Dot(d, w);
     const double inPlane = std::sqrt(std::max(0.0, vtkMath::Dot(d, d) - height * height));
-    worst = std::max({ worst, std::fabs(height) / radius, std::fabs(inPlane - radius) / radius });
+    worst = worseOf(worst, worseOf(std::fabs(height) / radius, std::fabs(inPlane - radius) / radius));
   }
   return worst;
 }
@@ -334,7 +337,7 @@ TEST(HopfFibrationSource, TwistorMeshesAreContinuousAlongTheBaseSphere)
         output->GetPoint(ids[0], p0);
         output->GetPoint(ids[1], p1);
         output->GetPoint(ids[3], p3);
-        worst = std::max(worst,
+        worst = worseOf(worst,
           std::sqrt(vtkMath::Distance2BetweenPoints(p0, p3) / vtkMath::Distance2BetweenPoints(p0, p1)));
       }
       EXPECT_LT(worst, 3.0) << "mode " << mode << " sweep " << sweep;
