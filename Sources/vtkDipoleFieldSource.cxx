@@ -394,8 +394,8 @@ int vtkDipoleFieldSource::RequestData(
   if (failures > 0)
   {
     vtkWarningMacro(<< failures
-                    << " boost(s) sent a grid point to infinity, or overflowed (a weight "
-                       "near 1e150 or above); their displacements are zero");
+                    << " boost(s) sent a grid point to infinity, or their B(p) overflowed (a "
+                       "weight near 1e300 or above); their displacements are zero");
   }
 
   vtkPointData* pointData = output->GetPointData();

@@ -144,6 +144,62 @@ TEST(PointPairField, OneGeneratorIsATranslatedSpecialConformalTransformation)
   }
 }
 
+TEST(PointPairField, AHugePointPairMovesPointsNextToItsLocation)
+{
+  // The transversion's closed form in long double (its 64-bit significand and its range to 1e4932:
+  // |u|^2 |y|^2 reaches 1e616 here) against both paths: K = 1 + B then has components of size
+  // |B| and its sandwich terms of size |B|^2 (beyond the doubles' range from w ~ 1e154), the image
+  // x + O(1/|u|) (the limit of the transversion: every point but x's antipode -u/|u|^2 goes to x).
+  Random random(91);
+  for (const double magnitude : { 1e100, 1e154, 1e155, 1e160, 1e200, 1e300, 1e305 })
+  {
+    for (int n = 0; n < 40; ++n)
+    {
+      const Vec3 x = random.vec3(2.0);
+      const Vec3 v = random.uniform(0.1, 1.0) * random.unit();
+      const double w = (n % 2 == 0 ? 1.0 : -1.0) * magnitude * random.uniform(0.5, 1.0);
+      const double k = random.uniform(0.5, 2.0), eps = random.uniform(0.01, 1.0);
+      const PointPairField field({ { x, v, w } }, k, eps);
+      const bool onLocation = n % 10 == 0;
+      const Vec3 p = onLocation ? x : random.vec3(3.0);
+      long double y[3], u[3], yy = 0, uy = 0, uu = 0;
+      const long double c = -static_cast<long double>(w) /
+        (static_cast<long double>(k) * static_cast<long double>(norm2(p - x)) + eps);
+      for (int i = 0; i < 3; ++i)
+      {
+        y[i] = static_cast<long double>(p[i]) - x[i];
+        u[i] = c * v[i];
+        yy += y[i] * y[i];
+        uy += u[i] * y[i];
+        uu += u[i] * u[i];
+      }
+      const long double denominator = 1.0L + 2.0L * uy + uu * yy;
+      const Vec3 expected{ static_cast<double>(x[0] + (y[0] + yy * u[0]) / denominator),
+        static_cast<double>(x[1] + (y[1] + yy * u[1]) / denominator),
+        static_cast<double>(x[2] + (y[2] + yy * u[2]) / denominator) };
+      std::vector<double> batch(3);
+      for (ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
+      {
+        const std::string label = "w " + std::to_string(w) + " case " + std::to_string(n) +
+          (rule == ExponentialRule::Exact ? " Exact" : " Paper");
+        Vec3 image;
+        ASSERT_TRUE(field.map(p, 1.0, rule, image)) << label;
+        EXPECT_LE(distance(image, expected), 1e-12 * (1.0 + norm(expected))) << label;
+        if (onLocation)
+        {
+          EXPECT_EQ(distance(image, x), 0.0) << label; // the boost's fixed point, to the bit
+        }
+        const double point[3] = { p[0], p[1], p[2] };
+        ASSERT_EQ(field.mapPoints(point, batch.data(), 1, 1.0, rule), 0u) << label;
+        for (int i = 0; i < 3; ++i)
+        {
+          EXPECT_EQ(batch[i], image[i]) << label << " coordinate " << i; // the same source
+        }
+      }
+    }
+  }
+}
+
 TEST(PointPairField, ZeroStrengthAndNoGeneratorsAreTheIdentity)
 {
   Random random(74);

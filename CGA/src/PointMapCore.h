@@ -168,16 +168,54 @@ BOOSTED_FORCE_INLINE void unitScaled(const T* b, Scale<T>& scale, T* u)
   }
 }
 
+/// Scale m of B above which the sandwich of K = exp(B) may overflow: where B is (nearly) nilpotent
+/// (a point pair of weight beyond about 1e154) K = 1 + B has components of size m, and <K X ~K>_1
+/// terms of size m^2.
+constexpr double kHugeExponent = 256.0;
+constexpr double kHugeExponentScale = 0x1p256;
+
+/// The power of two 2^-h, per lane of `huge` (1 elsewhere), that brings a K whose largest
+/// component is `largest` near 2^kHugeExponent: h = e - 256 (e the binary exponent of `largest`),
+/// so that the sandwich's terms |K|^2 |X| stay in range for any moderate X, at most 537, so that
+/// 2^-2h times a component of 1 (c where B is nilpotent: the only term left at p = x) is still a
+/// number (2^-1074, the smallest subnormal): from e = 793 the largest is 2^(e - 537) <= 2^487.
+/// (A NaN lane gets 1; an infinite one may be scaled: its image is not finite either way.)
+template <typename V>
+BOOSTED_FORCE_INLINE V hugeSandwichFactor(const Mask<V>& huge, const V& largest)
+{
+  V h = binaryExponentOf(largest) - splat<V>(kHugeExponent);
+  h = select(lessThan(splat<V>(537.0), h), splat<V>(537.0), h);
+  h = select(maskAnd(huge, lessThan(V{}, h)), h, V{});
+  return powerOfTwoOf(-h);
+}
+
 /// K = c + B' for the unit-scaled u = B/m (scale from unitScaled) with <u u>_0 = s: exp(B) where B
 /// is a 2-blade (B^2 = m^2 s), the Paper rule otherwise; on return u holds B' = sHat u. NaN where
-/// B is not finite, c = 1 and B' = 0 where B = 0.
+/// B is not finite, c = 1 and B' = 0 where B = 0. With keepInRange (for a sandwich, not for K
+/// itself) K is divided by hugeSandwichFactor where m is above kHugeExponentScale: its image is
+/// the same, and a (nearly) nilpotent B's K = 1 + B, of size m, does not overflow the sandwich's
+/// terms (docs/conventions.md section 2 item 7); two products, on such lanes only.
 template <typename T>
-BOOSTED_FORCE_INLINE void bladeExponential(const Scale<T>& scale, const T& s, bool divideByCosh, T* u, T& c)
+BOOSTED_FORCE_INLINE void bladeExponential(
+  const Scale<T>& scale, const T& s, bool divideByCosh, T* u, T& c, bool keepInRange = false)
 {
+  using V = ValueOf<T>;
   const detail::PlaneFunctions<T> f =
     detail::planeFunctions(asNumber<T>(scale.usableOrOne()), s, divideByCosh);
   c = nanWhereNotFinite(scale, f.c);
-  const T factor = nanWhereNotFinite(scale, f.sHat);
+  T factor = nanWhereNotFinite(scale, f.sHat);
+  if (keepInRange)
+  {
+    const Mask<V> huge = maskAnd(scale.usable, lessThan(splat<V>(kHugeExponentScale), scale.m));
+    if (anyLane(huge))
+    {
+      // K's largest component within a factor 2 of max(|c|, |sHat|) (u's largest is in [1, 2))
+      const V a = magnitude(valueOf(c)), b = magnitude(valueOf(factor));
+      const T down = asNumber<T>(hugeSandwichFactor(huge, select(lessThan(a, b), b, a)));
+      c = down * c;
+      factor = down * factor;
+    }
+  }
   for (int i = 0; i < kBivector; ++i)
   {
     u[i] = factor * u[i];
@@ -185,13 +223,13 @@ BOOSTED_FORCE_INLINE void bladeExponential(const Scale<T>& scale, const T& s, bo
 }
 
 /// The Paper rule (expPaper): K = c + B' with on return b holding B' = sHat B/m; NaN where B is not
-/// finite, c = 1 and B' = 0 where B = 0.
+/// finite, c = 1 and B' = 0 where B = 0; keepInRange: bladeExponential's, for a sandwich.
 template <typename T>
-void paperExponential(T* b, T& c, bool divideByCosh)
+void paperExponential(T* b, T& c, bool divideByCosh, bool keepInRange = false)
 {
   Scale<T> scale;
   unitScaled(b, scale, b);
-  bladeExponential(scale, scalarSquare(b), divideByCosh, b, c);
+  bladeExponential(scale, scalarSquare(b), divideByCosh, b, c, keepInRange);
 }
 
 /// Relative size, against the sum of the magnitudes of its terms, below which an invariant of the
@@ -406,6 +444,34 @@ BOOSTED_FORCE_INLINE void sandwichScalarBivector(const T& c, const T* b, const T
   for (int i = 0; i < kVector; ++i)
   {
     r[i] = a * x[i] - twoC * y[i] + 2.0 * z[i];
+  }
+}
+
+/// Divides the `count` components of a full even K by hugeSandwichFactor on the lanes whose scale
+/// m of B is above kHugeExponentScale: fn(<K X ~K>_1) is unchanged (a power of two scales both its
+/// parts exactly, but for terms that underflow beside ones 2^500 times larger), but its terms of
+/// size |K|^2 stay in range, so that a huge point pair moves a point next to its location (the
+/// limit) instead of overflowing (docs/conventions.md section 2 item 7). Elsewhere K is untouched
+/// (one comparison per block). (K = c + B' is scaled by bladeExponential itself.)
+template <typename T>
+BOOSTED_FORCE_INLINE void keepSandwichInRange(const ValueOf<T>& m, T* k, int count)
+{
+  using V = ValueOf<T>;
+  const Mask<V> huge = lessThan(splat<V>(kHugeExponentScale), m);
+  if (!anyLane(huge))
+  {
+    return;
+  }
+  V largest = V{};
+  for (int i = 0; i < count; ++i)
+  {
+    const V a = magnitude(valueOf(k[i]));
+    largest = select(lessThan(largest, a), a, largest);
+  }
+  const T factor = asNumber<T>(hugeSandwichFactor(huge, largest));
+  for (int i = 0; i < count; ++i)
+  {
+    k[i] = factor * k[i];
   }
 }
 
@@ -1054,7 +1120,7 @@ Mask<T> exactImageAroundPoint(const T* p, const T* b, T* image)
     {
       bp[i] = unit.u[i];
     }
-    bladeExponential(unit.scale, unit.s, true, bp, c);
+    bladeExponential(unit.scale, unit.s, true, bp, c, true);
     sandwichScalarBivector(c, bp, origin, fromBlade);
   }
   // A Dual always takes the full K for its tangents (W may vanish at this B, its tangents need
@@ -1064,6 +1130,7 @@ Mask<T> exactImageAroundPoint(const T* p, const T* b, T* image)
   {
     T k[kEven];
     exactExponential(moved, unit, true, k);
+    keepSandwichInRange(unit.scale.usableOrOne(), k, kEven);
     sandwichOrigin(k, r);
   }
   for (int i = 0; i < kVector; ++i)
@@ -1309,7 +1376,7 @@ void mapPointBy(const kernel::FieldArgs& args, T* b, const T* p, T* image, bool*
   if (!args.exactRule)
   {
     T c;
-    paperExponential(b, c, true);
+    paperExponential(b, c, true, true);
     sandwichScalarBivector(c, b, x, r);
     normalize(p, r, image, mapped);
     return;

@@ -965,6 +965,44 @@ TEST(PointPairDeformationFilter, HugeWeightsGiveFiniteOutput)
   }
 }
 
+// A lone point pair of weight beyond ~1e154 (K = 1 + B, whose sandwich's terms |B|^2 overflow
+// unless scaled): the transversion moves every point to within O(1/|u|) of its location (the
+// closed form, PointPairDeformationFilter.OneGeneratorIsTheTranslatedSpecialConformalTransformation),
+// the location itself staying put, with no point left in place and no warning about images.
+TEST(PointPairDeformationFilter, AHugePointPairGathersEveryPointAtItsLocation)
+{
+  Random random(23);
+  auto mesh = randomMesh(random, 20, 1.0);
+  const Vec3 x{ 0.1, -0.2, 0.05 };
+  for (double weight : { 1e160, -1e250, 1e300 })
+  {
+    for (int rule : { vtkPointPairDeformationFilter::EXACT, vtkPointPairDeformationFilter::PAPER })
+    {
+      vtkNew<vtkPointPairDeformationFilter> filter;
+      filter->SetInputData(mesh);
+      filter->AddGenerator(x.x, x.y, x.z, 0.3, -0.6, 0.7, weight);
+      filter->SetEpsilon(0.01);
+      filter->SetExponentialRule(rule);
+      filter->SetTransformNormals(false);
+      EventCounter events(filter);
+      filter->Update();
+      EXPECT_EQ(events.errors + events.warnings, 0) << events.lastError << events.lastWarning;
+      vtkPointSet* output = filter->GetOutput();
+      ASSERT_EQ(output->GetNumberOfPoints(), mesh->GetNumberOfPoints());
+      vtkDataArray* displacement = output->GetPointData()->GetArray("Displacement");
+      for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+      {
+        const Vec3 image = pointOf(output, i);
+        EXPECT_LE(cga::norm(image - x), 1e-12) << "weight " << weight << " rule " << rule << " point " << i;
+        for (int c = 0; c < 3; ++c)
+        {
+          EXPECT_EQ(displacement->GetComponent(i, c), image[c] - pointOf(mesh, i)[c]);
+        }
+      }
+    }
+  }
+}
+
 // A vtkPolyData of generator points with direction and weight arrays.
 vtkNew<vtkPolyData> generatorPoints(const std::vector<Generator>& generators)
 {
