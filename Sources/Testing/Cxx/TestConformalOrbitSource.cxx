@@ -248,6 +248,35 @@ TEST(ConformalOrbitSource, HugeTimesReachTheFixedPointOrWarnWhereTBOverflows)
   EXPECT_EQ(overflowing->GetOutput()->GetNumberOfPoints(), 1); // the seed at t = 0
 }
 
+TEST(ConformalOrbitSource, AHugeTranslationIsCutOnTheClipSphere)
+{
+  // A translation's exp(t B) = 1 + t B is scaled by a power of two for its point map; the image's
+  // weight is the square of its scalar times that factor, which rounded to 0 from |t| ~ 1e297:
+  // every sample but the seed was dropped as if at infinity, and nothing was cut on the sphere.
+  for (const double T : { 1e160, 1e300 })
+  {
+    vtkNew<vtkConformalOrbitSource> source;
+    EventCounter events(source);
+    source->SetGeneratorTypeToGeneratorList();
+    source->AddGenerator(0, 0, 0, 1, 0, 0, 1.0, vtkConformalOrbitSource::TRANSLATION, 0.0);
+    source->SetClosePeriodicOrbits(false);
+    source->SetSeedPoint(0.5, 0.25, 0);
+    source->SetTRange(0, T);
+    source->SetTResolution(4);
+    source->Update();
+    EXPECT_EQ(events.errors + events.warnings, 0) << T << events.lastWarning;
+    vtkPolyData* output = source->GetOutput();
+    ASSERT_EQ(output->GetNumberOfPoints(), 2) << T; // the seed and the crossing
+    EXPECT_EQ(output->GetNumberOfCells(), 1) << T;
+    double p[3];
+    output->GetPoint(1, p);
+    EXPECT_NEAR(distance({ p[0], p[1], p[2] }, { 0, 0, 0 }), source->GetClipRadius(),
+      1e-12 * source->GetClipRadius())
+      << T;
+    EXPECT_NEAR(p[1], 0.25, 1e-12) << T; // along the translation's direction from the seed
+  }
+}
+
 // The line widget's row: at SelectedGeneratorLocation and aimed at SelectedGeneratorTip, it gives
 // the orbits, cores and Generators port of a list whose row is written out there, with the
 // direction tip - location; the list itself is unchanged.
