@@ -5,6 +5,8 @@
 #include "cga/Exponential.h"
 #include "cga/PointSandwich.h"
 
+#include "SandwichScaling.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -109,14 +111,15 @@ void planeFactors(Real square, Real rate, Real t, Real& c, Real& sHat)
 // does not change (K up(p) ~K scales by the square, which fn divides out), and the 5 x 5 point
 // map's entries, products of two components, stay finite for every finite t. A transversion's
 // 1 + t B at |t| = 1e160 had entries of 1e320, and every sample but t = 0 was lost. The factor is
-// at least 2^-537: a translator's weight is its scalar's square alone (1 times the factor squared),
-// which a smaller factor would round to 0 (at |t| = 2e297 every sample was lost as if at infinity).
+// at least 2^-kLargestSandwichDownscale: a translator's weight is its scalar's square alone times
+// the factor squared, which a smaller factor rounded to 0 (from |t| ~ 1e297 every sample was lost
+// as if at infinity).
 Even withinRange(Even k)
 {
   const double largest = k.maxAbs();
   if (std::isfinite(largest) && largest > 0x1p64)
   {
-    k *= std::ldexp(1.0, -std::min(std::ilogb(largest), 537));
+    k *= std::ldexp(1.0, -std::min(std::ilogb(largest), core::kLargestSandwichDownscale));
   }
   return k;
 }

@@ -28,6 +28,7 @@
 #include "LaneMath.h"
 #include "BoostProducts.h"
 #include "PointPairKernel.h"
+#include "SandwichScaling.h"
 
 #include "cga/Compact.h" // for the component enumerators only: nothing of it is called here
 
@@ -176,15 +177,15 @@ constexpr double kHugeExponentScale = 0x1p256;
 
 /// The power of two 2^-h, per lane of `huge` (1 elsewhere), that brings a K whose largest
 /// component is `largest` near 2^kHugeExponent: h = e - 256 (e the binary exponent of `largest`),
-/// so that the sandwich's terms |K|^2 |X| stay in range for any moderate X, at most 537, so that
-/// 2^-2h times a component of 1 (c where B is nilpotent: the only term left at p = x) is still a
-/// number (2^-1074, the smallest subnormal): from e = 793 the largest is 2^(e - 537) <= 2^487.
+/// so that the sandwich's terms |K|^2 |X| stay in range for any moderate X, at most
+/// kLargestSandwichDownscale (537): from e = 793 the largest is 2^(e - 537) <= 2^487.
 /// (A NaN lane gets 1; an infinite one may be scaled: its image is not finite either way.)
 template <typename V>
 BOOSTED_FORCE_INLINE V hugeSandwichFactor(const Mask<V>& huge, const V& largest)
 {
   V h = binaryExponentOf(largest) - splat<V>(kHugeExponent);
-  h = select(lessThan(splat<V>(537.0), h), splat<V>(537.0), h);
+  const V largestH = splat<V>(static_cast<double>(kLargestSandwichDownscale));
+  h = select(lessThan(largestH, h), largestH, h);
   h = select(maskAnd(huge, lessThan(V{}, h)), h, V{});
   return powerOfTwoOf(-h);
 }

@@ -993,7 +993,8 @@ TEST(PointPairDeformationFilter, AHugePointPairGathersEveryPointAtItsLocation)
       for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
       {
         const Vec3 image = pointOf(output, i);
-        EXPECT_LE(cga::norm(image - x), 1e-12) << "weight " << weight << " rule " << rule << " point " << i;
+        EXPECT_LE(cga::norm(image - x), 1e-12)
+          << "weight " << weight << " rule " << rule << " point " << i;
         for (int c = 0; c < 3; ++c)
         {
           EXPECT_EQ(displacement->GetComponent(i, c), image[c] - pointOf(mesh, i)[c]);
