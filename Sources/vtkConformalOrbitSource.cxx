@@ -316,7 +316,11 @@ int vtkConformalOrbitSource::RequestData(
   std::vector<double> ts(columns);
   for (int c = 0; c < columns; ++c)
   {
-    ts[c] = (closed && c == columns - 1) ? t0 : t0 + span * c / this->TResolution;
+    // span * c overflows for spans near the largest double; the fraction c / TResolution then.
+    const double step = span * c;
+    ts[c] = (closed && c == columns - 1)
+      ? t0
+      : t0 + (std::isfinite(step) ? step / this->TResolution : span * (c / double(this->TResolution)));
   }
   if (problem.empty() && !std::isfinite(span))
   {
@@ -383,6 +387,29 @@ int vtkConformalOrbitSource::RequestData(
     // exp(t B) is the same for every seed: its closed form (extended precision) once per t, as
     // a 5 x 5 point map (cga::PointMap) that each seed then costs a matrix-vector product.
     std::atomic<long long> overflowed{ 0 }; // samples whose exp(t B) is not finite
+    // Samples whose image is at infinity or beyond the largest double, next to a sample inside
+    // the clip sphere: the orbit is not cut on the sphere there (the cut needs a finite sample
+    // outside it). Elsewhere such a sample is dropped without loss (an orbit through infinity).
+    std::atomic<long long> uncut{ 0 };
+    const cga::Vec3 clipCenter = cga::toVec3(this->ClipCenter);
+    auto insideAt = [&](int r, int c) {
+      if (c < 0 || c >= columns)
+      {
+        return false;
+      }
+      cga::Vec3 p;
+      return cga::PointMap(orbit.versor(ts[c])).apply(seeds[r] - center, p) &&
+        cga::norm(p + center - clipCenter) <= this->ClipRadius;
+    };
+    // A seed whose conformal point overflows (about 1e154 from the generators' center) has no
+    // orbit to give: its samples stay NaN and are dropped, with a warning of their own.
+    std::vector<char> farSeed(seeds.size());
+    long long farSeeds = 0;
+    for (size_t r = 0; r < seeds.size(); ++r)
+    {
+      farSeed[r] = !std::isfinite(cga::norm2(seeds[r] - center)); // up(p)'s |p|^2 / 2
+      farSeeds += farSeed[r];
+    }
     driver.SampleColumns([&](int c, int firstRow, int lastRow) {
       const cga::PointMap map(orbit.versor(ts[c]));
       const std::array<double, 25>& entries = map.matrix();
@@ -391,16 +418,26 @@ int vtkConformalOrbitSource::RequestData(
         overflowed += lastRow - firstRow + 1; // t B itself overflows: no image to give
         return;
       }
+      long long lost = 0;
       for (int r = firstRow; r <= lastRow; ++r)
       {
         cga::Vec3 p;
+        if (farSeed[r])
+        {
+          continue;
+        }
         if (map.apply(seeds[r] - center, p)) // false: at infinity; left NaN and dropped
         {
           const cga::Vec3 q = p + center;
           const double xyz[3] = { q.x, q.y, q.z };
           grid.SetPoint(r, c, xyz);
         }
+        else if (insideAt(r, c - 1) || insideAt(r, c + 1)) // rare: the neighbours' maps anew
+        {
+          ++lost;
+        }
       }
+      uncut += lost;
     });
     std::vector<int> ids(seeds.size());
     std::iota(ids.begin(), ids.end(), 0);
@@ -408,6 +445,20 @@ int vtkConformalOrbitSource::RequestData(
     {
       vtkWarningMacro(<< overflowed << " samples dropped: t B overflows there (|t| up to "
                       << std::max(std::fabs(ts.front()), std::fabs(ts.back())) << ")");
+    }
+    if (farSeeds > 0)
+    {
+      vtkWarningMacro(<< farSeeds << " of " << seeds.size()
+                      << " seeds are too far from the generators' center (about 1e154 or more; "
+                         "their conformal points overflow): their orbits are dropped");
+    }
+    if (uncut > 0)
+    {
+      vtkWarningMacro(<< uncut
+                      << " samples next to the clip sphere's inside dropped: their images are at "
+                         "infinity or beyond the largest double (e.g. a growing dilation at large "
+                         "t), so the orbits end there inside the sphere instead of on it; sample t "
+                         "more finely to cross the sphere within the doubles' range");
     }
     grid.AddColumnParameter("t", ts);
     grid.AddRowIntegerParameter("OrbitId", ids);

@@ -23,6 +23,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -274,6 +275,111 @@ TEST(ConformalOrbitSource, AHugeTranslationIsCutOnTheClipSphere)
       1e-12 * source->GetClipRadius())
       << T;
     EXPECT_NEAR(p[1], 0.25, 1e-12) << T; // along the translation's direction from the seed
+  }
+}
+
+// A growing dilation's samples beyond the largest double are dropped (their images' weights
+// underflow); where such a sample follows one inside the clip sphere the orbit cannot be cut on
+// the sphere there, and that is now a warning (it was silent). Sampled finely enough, the same
+// orbit crosses the sphere within the doubles' range and is cut there without one.
+TEST(ConformalOrbitSource, ADilationBeyondTheDoublesWarnsWhereItCannotBeCut)
+{
+  for (const int resolution : { 2, 20000 })
+  {
+    vtkNew<vtkConformalOrbitSource> source;
+    EventCounter events(source);
+    source->SetGeneratorTypeToGeneratorList();
+    source->AddGenerator(0, 0, 0, 1, 0, 0, 1.0, vtkConformalOrbitSource::DILATION, 0.0);
+    source->SetSeedPoint(1, 0, 0);
+    source->SetTRange(-1000, 1000); // one way the seed grows beyond 1e308, the other it shrinks
+    source->SetTResolution(resolution);
+    source->Update();
+    vtkPolyData* output = source->GetOutput();
+    EXPECT_EQ(events.errors, 0) << events.lastError;
+    // The largest distance from the center: on the sphere when cut, the seed's 1 when not.
+    double largest = 0;
+    for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      output->GetPoint(i, p);
+      largest = std::max(largest, distance({ p[0], p[1], p[2] }, { 0, 0, 0 }));
+    }
+    if (resolution == 2)
+    {
+      EXPECT_EQ(events.warnings, 1);
+      EXPECT_NE(events.lastWarning.find("1 samples next to the clip sphere's inside dropped"),
+        std::string::npos)
+        << events.lastWarning;
+      EXPECT_EQ(output->GetNumberOfPoints(), 2); // the seed and its image shrunk to the center
+      EXPECT_EQ(largest, 1.0);
+    }
+    else
+    {
+      EXPECT_EQ(events.warnings, 0) << events.lastWarning;
+      EXPECT_NEAR(largest, source->GetClipRadius(), 1e-12 * source->GetClipRadius());
+    }
+  }
+}
+
+// A seed whose conformal point overflows (|p|^2 beyond the largest double) has no orbit: it was
+// dropped without a word, now with a warning; the other seeds' orbits are as without it.
+TEST(ConformalOrbitSource, SeedsTooFarFromTheGeneratorsWarnAndAreDropped)
+{
+  vtkNew<vtkConformalOrbitSource> alone, withFarSeed;
+  for (vtkConformalOrbitSource* source : { alone.Get(), withFarSeed.Get() })
+  {
+    source->SetGeneratorTypeToGeneratorList();
+    source->AddGenerator(0, 0, 0, 0, 0, 1, 1.0, vtkConformalOrbitSource::ROTATION, 0.0);
+    source->SetSeedModeToSeedList();
+    source->AddSeed(1, 0, 0);
+  }
+  withFarSeed->AddSeed(1e160, 0, 0);
+  EventCounter events(withFarSeed);
+  alone->Update();
+  withFarSeed->Update();
+  EXPECT_EQ(events.errors, 0) << events.lastError;
+  EXPECT_EQ(events.warnings, 1);
+  EXPECT_NE(events.lastWarning.find("1 of 2 seeds are too far"), std::string::npos)
+    << events.lastWarning;
+  vtkPolyData* a = alone->GetOutput();
+  vtkPolyData* b = withFarSeed->GetOutput();
+  ASSERT_GT(a->GetNumberOfPoints(), 0);
+  ASSERT_EQ(b->GetNumberOfPoints(), a->GetNumberOfPoints());
+  EXPECT_EQ(b->GetNumberOfCells(), a->GetNumberOfCells());
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    a->GetPoint(i, p);
+    b->GetPoint(i, q);
+    EXPECT_EQ(distance({ p[0], p[1], p[2] }, { q[0], q[1], q[2] }), 0.0) << i;
+  }
+}
+
+// TRange spanning nearly the whole range of doubles: t = t0 + span c / TResolution overflowed in
+// span c, giving infinite t (dropped with a warning); each t is now finite and evenly spaced.
+TEST(ConformalOrbitSource, ASpanNearTheLargestDoubleIsSampledEvenly)
+{
+  vtkNew<vtkConformalOrbitSource> source;
+  EventCounter events(source);
+  source->SetGeneratorTypeToGeneratorList();
+  source->AddGenerator(0, 0, 0, 0, 0, 1, 1.0, vtkConformalOrbitSource::ROTATION, 0.0);
+  source->SetClosePeriodicOrbits(false);
+  source->SetSeedPoint(1, 0, 0);
+  source->SetTRange(-8e307, 8e307);
+  source->SetTResolution(4);
+  source->Update();
+  EXPECT_EQ(events.errors + events.warnings, 0) << events.lastError << events.lastWarning;
+  vtkPolyData* output = source->GetOutput();
+  ASSERT_EQ(output->GetNumberOfPoints(), 5);
+  vtkDataArray* t = output->GetPointData()->GetArray("t");
+  ASSERT_NE(t, nullptr);
+  const double expected[5] = { -8e307, -4e307, 0.0, 4e307, 8e307 };
+  for (vtkIdType i = 0; i < 5; ++i)
+  {
+    EXPECT_NEAR(t->GetTuple1(i), expected[i], 1e-15 * 8e307) << i;
+    double p[3];
+    output->GetPoint(i, p);
+    EXPECT_NEAR(distance({ p[0], p[1], p[2] }, { 0, 0, 0 }), 1.0, 1e-12) << i; // on the circle
   }
 }
 
