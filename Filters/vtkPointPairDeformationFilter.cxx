@@ -463,7 +463,7 @@ int vtkPointPairDeformationFilter::RequestData(
     return 0;
   }
 
-  if (!this->CheckFieldParameters())
+  if (!this->CheckFieldParameters() || !this->CheckMeshStructure(input, "the input"))
   {
     return 1; // the output stays empty
   }

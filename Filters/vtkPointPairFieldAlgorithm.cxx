@@ -5,6 +5,8 @@
 #include "vtkBoostedRowList.h"
 #include "vtkInformationVector.h"
 #include "vtkPointSet.h"
+#include "vtkStructuredData.h"
+#include "vtkStructuredGrid.h"
 
 #include <cmath>
 #include <string>
@@ -38,6 +40,29 @@ void vtkPointPairFieldAlgorithm::SetGeneratorsConnection(vtkAlgorithmOutput* out
 void vtkPointPairFieldAlgorithm::SetGeneratorsData(vtkDataObject* data)
 {
   this->SetInputData(this->GeneratorsPort, data);
+}
+
+bool vtkPointPairFieldAlgorithm::CheckMeshStructure(vtkDataSet* mesh, const char* name)
+{
+  vtkStructuredGrid* grid = vtkStructuredGrid::SafeDownCast(mesh);
+  if (!grid)
+  {
+    return true;
+  }
+  int extent[6];
+  grid->GetExtent(extent);
+  const vtkIdType expected = vtkStructuredData::GetDataDescriptionFromExtent(extent) == VTK_EMPTY
+    ? 0
+    : vtkStructuredData::GetNumberOfPoints(extent);
+  if (expected != grid->GetNumberOfPoints())
+  {
+    vtkErrorMacro(<< name << " is a vtkStructuredGrid of extent [" << extent[0] << ", "
+                  << extent[1] << ", " << extent[2] << ", " << extent[3] << ", " << extent[4]
+                  << ", " << extent[5] << "], which counts " << expected << " points, but it has "
+                  << grid->GetNumberOfPoints());
+    return false;
+  }
+  return true;
 }
 
 bool vtkPointPairFieldAlgorithm::CheckFieldParameters()

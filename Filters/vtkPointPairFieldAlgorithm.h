@@ -36,6 +36,7 @@
 #include <vector> // for the generators read
 
 class vtkBoostedRowList;
+class vtkDataSet;
 class vtkPolyData;
 namespace cga
 {
@@ -166,6 +167,10 @@ protected:
   /// False, with an error, when Strength is not finite or Falloff or Epsilon is NaN (the clamp
   /// macros let NaN through).
   bool CheckFieldParameters();
+
+  /// False, with an error, when `mesh` is a vtkStructuredGrid whose extent does not count its
+  /// points: VTK does not check it, and the output's cells would index points that do not exist.
+  bool CheckMeshStructure(vtkDataSet* mesh, const char* name);
 
   /// The generators to use, in order: the list's rows (the selected one moved and aimed, see
   /// SelectedGenerator), then those of the Generators input when connected. False, with an error

@@ -208,7 +208,8 @@ int vtkPointPairFitFilter::RequestData(
   }
 
   // Parameters (the clamp macros let NaN through).
-  if (!this->CheckFieldParameters())
+  if (!this->CheckFieldParameters() || !this->CheckMeshStructure(mesh, "the mesh (input 0)") ||
+    !this->CheckMeshStructure(target, "the target (input 1)"))
   {
     return 1;
   }

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <mutex>
 
 namespace
 {
@@ -226,6 +227,51 @@ struct FitData
       sum += r * r;
     }
     return sum;
+  }
+};
+
+// Ceres writes some terminations through glog (LOG(ERROR), whatever Solver::Options::logging_type
+// says; to stderr when the application has not set glog up), e.g. a solve stopped by invalid
+// steps at a huge Strength. The filter reports them as its own error, so glog's threshold is
+// raised to FATAL during the solve: saved by the first of concurrent solves, restored by the last.
+class QuietGlog
+{
+public:
+  QuietGlog()
+  {
+    std::lock_guard<std::mutex> lock(Mutex());
+    if (Depth()++ == 0)
+    {
+      Saved() = FLAGS_minloglevel;
+      FLAGS_minloglevel = google::GLOG_FATAL;
+    }
+  }
+  ~QuietGlog()
+  {
+    std::lock_guard<std::mutex> lock(Mutex());
+    if (--Depth() == 0)
+    {
+      FLAGS_minloglevel = Saved();
+    }
+  }
+  QuietGlog(const QuietGlog&) = delete;
+  QuietGlog& operator=(const QuietGlog&) = delete;
+
+private:
+  static std::mutex& Mutex()
+  {
+    static std::mutex mutex;
+    return mutex;
+  }
+  static int& Depth()
+  {
+    static int depth = 0;
+    return depth;
+  }
+  static int& Saved()
+  {
+    static int saved = 0;
+    return saved;
   }
 };
 
@@ -511,7 +557,10 @@ bool vtkPointPairFitSolver::Solve(const vtkPointPairFitProblem& problem,
     problem.Filter, problem.MaximumNumberOfIterations, progressBegin, progressEnd);
   options.callbacks.push_back(&progress);
   ceres::Solver::Summary summary;
-  ceres::Solve(options, &solverProblem, &summary);
+  {
+    QuietGlog quiet;
+    ceres::Solve(options, &solverProblem, &summary);
+  }
   if (vtkBoostedSurfacesCheckAbort(problem.Filter) ||
     summary.termination_type == ceres::USER_FAILURE)
   {
@@ -523,6 +572,12 @@ bool vtkPointPairFitSolver::Solve(const vtkPointPairFitProblem& problem,
   if (summary.termination_type == ceres::FAILURE)
   {
     error = "the solver failed: " + summary.message;
+    if (summary.message.find("invalid steps") != std::string::npos)
+    {
+      // An invalid step is one whose images are not finite (or whose direction became zero).
+      error += " (every step tried sent a mesh point to infinity or beyond the doubles' range, or "
+               "fitted a direction to zero: a huge Strength or weights do that)";
+    }
     return false;
   }
   // The fitted unknowns (Ceres leaves the best point in the blocks), evaluated again. A fit no

@@ -739,6 +739,53 @@ TEST(PointPairDeformationFilter, ImagesAndRectilinearGridsOfEmptyOrInvertedExten
   }
 }
 
+// A vtkStructuredGrid whose extent does not count its points (VTK does not check it) is an error
+// with an empty output: before, it passed through, and its cells indexed points that do not exist.
+// A consistent grid, and an empty one, still deform.
+TEST(PointPairDeformationFilter, AStructuredGridWhoseExtentDoesNotCountItsPointsIsAnError)
+{
+  struct Case
+  {
+    int dimensions[3];
+    int points;
+    bool valid;
+  };
+  const Case cases[] = { { { 2, 2, 2 }, 5, false }, { { 2, 2, 2 }, 9, false },
+    { { 3, 1, 1 }, 0, false }, { { 2, 2, 2 }, 8, true }, { { 0, 0, 0 }, 0, true } };
+  for (const Case& c : cases)
+  {
+    SCOPED_TRACE(std::to_string(c.dimensions[0]) + "x" + std::to_string(c.dimensions[1]) + "x" +
+      std::to_string(c.dimensions[2]) + " with " + std::to_string(c.points) + " points");
+    vtkNew<vtkStructuredGrid> grid;
+    grid->SetDimensions(c.dimensions[0], c.dimensions[1], c.dimensions[2]);
+    vtkNew<vtkPoints> points;
+    for (int i = 0; i < c.points; ++i)
+    {
+      points->InsertNextPoint(0.1 * i, 0.2, 0.3);
+    }
+    grid->SetPoints(points);
+    vtkNew<vtkPointPairDeformationFilter> filter;
+    filter->AddGenerator(0, 0, 0, 0, 0, 1, 0.5);
+    filter->SetInputData(grid);
+    EventCounter events(filter);
+    filter->Update();
+    vtkStructuredGrid* output = vtkStructuredGrid::SafeDownCast(filter->GetOutputDataObject(0));
+    ASSERT_NE(output, nullptr);
+    if (c.valid)
+    {
+      EXPECT_EQ(events.errors, 0) << events.lastError;
+      EXPECT_EQ(output->GetNumberOfPoints(), c.points);
+    }
+    else
+    {
+      EXPECT_EQ(events.errors, 1);
+      EXPECT_NE(events.lastError.find("counts"), std::string::npos) << events.lastError;
+      EXPECT_EQ(output->GetNumberOfPoints(), 0);
+      EXPECT_EQ(output->GetNumberOfCells(), 0);
+    }
+  }
+}
+
 // A float normal keeps its length, which may exceed the largest float: (3e38, 3e38, 3e38) turned
 // can have a component beyond it. Such a normal passes unchanged and is counted in the warning,
 // as a vector whose image overflows (before, it was written as infinity), through both paths:

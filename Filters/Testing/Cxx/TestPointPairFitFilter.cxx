@@ -18,6 +18,7 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
+#include "vtkStructuredGrid.h"
 #include "vtkTable.h"
 
 #include <gtest/gtest.h>
@@ -477,6 +478,30 @@ TEST(PointPairFitFilter, ProgressPerIterationAndAbort)
   }
 }
 
+// A Strength so huge that every step sends points to infinity: Ceres stops after its invalid
+// steps and logs that through glog to stderr (whatever its logging_type). The filter's error says
+// why, and nothing else reaches stderr.
+TEST(PointPairFitFilter, AFitThatCannotStepIsOneErrorAndNothingOnStderr)
+{
+  vtkSmartPointer<vtkPolyData> mesh = unitSphere();
+  vtkSmartPointer<vtkPolyData> target = deformed(mesh, knownGenerators());
+  vtkNew<vtkPointPairFitFilter> fit;
+  fit->SetInputData(mesh);
+  fit->SetTargetData(target);
+  fit->AddGenerator(0.0, 0.0, 1.3, 0.0, 0.0, 1.0, 0.0);
+  fit->SetStrength(1e300);
+  EventCounter events(fit);
+  testing::internal::CaptureStderr();
+  fit->Update();
+  const std::string stderrText = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(stderrText, "");
+  EXPECT_EQ(events.errors, 1);
+  EXPECT_NE(events.lastError.find("invalid steps"), std::string::npos) << events.lastError;
+  EXPECT_NE(events.lastError.find("huge Strength"), std::string::npos) << events.lastError;
+  EXPECT_EQ(fit->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_TRUE(std::isnan(fit->GetFinalRMS()));
+}
+
 // Every bad input: one error naming the problem, and empty outputs.
 TEST(PointPairFitFilter, BadInputGivesAClearErrorAndEmptyOutputs)
 {
@@ -506,6 +531,10 @@ TEST(PointPairFitFilter, BadInputGivesAClearErrorAndEmptyOutputs)
   };
   vtkSmartPointer<vtkPolyData> huge = scaled(mesh, 1e154), hugeTarget = scaled(mesh, -1e154);
   vtkSmartPointer<vtkPolyData> farTarget = scaled(target, 1e151);
+  // A structured grid whose extent (2 x 2 x 2) does not count its points (the sphere's).
+  vtkNew<vtkStructuredGrid> malformed;
+  malformed->SetDimensions(2, 2, 2);
+  malformed->SetPoints(target->GetPoints());
   struct Case
   {
     const char* what;
@@ -516,6 +545,11 @@ TEST(PointPairFitFilter, BadInputGivesAClearErrorAndEmptyOutputs)
     { "mismatched point counts", [&](vtkPointPairFitFilter* f) { f->SetTargetData(small); },
       "the mesh has" },
     { "empty target", [&](vtkPointPairFitFilter* f) { f->SetTargetData(empty); }, "is empty" },
+    { "malformed structured mesh", [&](vtkPointPairFitFilter* f) { f->SetInputData(malformed); },
+      "the mesh (input 0) is a vtkStructuredGrid" },
+    { "malformed structured target",
+      [&](vtkPointPairFitFilter* f) { f->SetTargetData(malformed); },
+      "the target (input 1) is a vtkStructuredGrid" },
     { "NaN mesh point", [&](vtkPointPairFitFilter* f) { f->SetInputData(withNaN); },
       "NaN or infinite points" },
     { "NaN target point", [&](vtkPointPairFitFilter* f) { f->SetTargetData(withNaN); },
