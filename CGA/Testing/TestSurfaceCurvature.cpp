@@ -352,8 +352,11 @@ TEST(SurfaceCurvature, PlaneNormalOfAClosedPolylineAtAnyScale)
   const Vec3 n = normalized(Vec3{ 1.0, -2.0, 2.0 });
   const Vec3 a = normalized(cross(n, Vec3{ 0.0, 0.0, 1.0 }));
   const Vec3 b = cross(n, a); // a x b = n
-  for (double radius : { 1e-300, 1e-200, 1e-160, 1.0, 1e150, 1e300 })
+  // 1e-310 and 1e308 take the scaling by ldexp (2^-e not a normal double); the others multiply by
+  // 2^-e. Subnormal coordinates keep about 13 digits.
+  for (double radius : { 1e-310, 1e-300, 1e-200, 1e-160, 1.0, 1e150, 1e300, 1e308 })
   {
+    const double tolerance = radius < 1e-307 ? 1e-11 : 1e-14;
     for (Vec3 center : { Vec3{}, Vec3{ 3.0, -1.0, 2.0 } })
     {
       const Vec3 c = radius * 1e-3 * center; // a center close to the points, at their scale
@@ -363,11 +366,11 @@ TEST(SurfaceCurvature, PlaneNormalOfAClosedPolylineAtAnyScale)
         const double t = 2.0 * M_PI * (i % 12) / 12.0;
         points.push_back(c + radius * (std::cos(t) * a + std::sin(t) * b));
       }
-      EXPECT_LE(distance(planeNormal(points.data(), points.size(), c), n), 1e-14) << radius;
+      EXPECT_LE(distance(planeNormal(points.data(), points.size(), c), n), tolerance) << radius;
       std::reverse(points.begin(), points.end());
-      EXPECT_LE(distance(planeNormal(points.data(), points.size(), c), -1.0 * n), 1e-14) << radius;
+      EXPECT_LE(distance(planeNormal(points.data(), points.size(), c), -1.0 * n), tolerance) << radius;
       points[3] = Vec3{ NAN, 0.0, 0.0 }; // a point at infinity: its two segments left out
-      EXPECT_LE(distance(planeNormal(points.data(), points.size(), c), -1.0 * n), 1e-14) << radius;
+      EXPECT_LE(distance(planeNormal(points.data(), points.size(), c), -1.0 * n), tolerance) << radius;
     }
   }
   const Vec3 line[3] = { { 1.0, 1.0, 1.0 }, { 2.0, 2.0, 2.0 }, { 1.0, 1.0, 1.0 } };

@@ -125,12 +125,18 @@ Vec3 planeNormal(const Vec3* points, std::size_t count, Vec3 center)
     return Vec3{};
   }
   const int e = exponentOf(largest); // |p - center| / 2^e < 1: no product below overflows
+  // A product by 2^-e where that is a normal double: the same correctly rounded x 2^-e as
+  // ldexp's, bit for bit, without two calls per coordinate (a quarter of the boosted surface's
+  // and the Hopf fibers' time per sample).
+  const bool multiply = e >= -1021 && e <= 1021;
+  const double factor = multiply ? std::ldexp(1.0, -e) : 1.0;
+  auto scaledPoint = [&](Vec3 p) { return multiply ? (p - center) * factor : scaledBy(p - center, e); };
   Vec3 newell{};
   for (std::size_t i = 1; i < count; ++i)
   {
     if (isFinite(points[i - 1]) && isFinite(points[i]))
     {
-      newell = newell + cross(scaledBy(points[i - 1] - center, e), scaledBy(points[i] - center, e));
+      newell = newell + cross(scaledPoint(points[i - 1]), scaledPoint(points[i]));
     }
   }
   const double size = std::sqrt(dot(newell, newell));
