@@ -234,45 +234,32 @@ struct FitData
 // says; to stderr when the application has not set glog up), e.g. a solve stopped by invalid
 // steps at a huge Strength. The filter reports them as its own error, so glog's threshold is
 // raised to FATAL during the solve: saved by the first of concurrent solves, restored by the last.
+std::mutex quietGlogMutex;
+int quietSolves = 0;        // solves in progress, under quietGlogMutex
+int savedMinimumLogLevel = 0; // glog's threshold before the first of them
+
 class QuietGlog
 {
 public:
   QuietGlog()
   {
-    std::lock_guard<std::mutex> lock(Mutex());
-    if (Depth()++ == 0)
+    std::lock_guard<std::mutex> lock(quietGlogMutex);
+    if (quietSolves++ == 0)
     {
-      Saved() = FLAGS_minloglevel;
+      savedMinimumLogLevel = FLAGS_minloglevel;
       FLAGS_minloglevel = google::GLOG_FATAL;
     }
   }
   ~QuietGlog()
   {
-    std::lock_guard<std::mutex> lock(Mutex());
-    if (--Depth() == 0)
+    std::lock_guard<std::mutex> lock(quietGlogMutex);
+    if (--quietSolves == 0)
     {
-      FLAGS_minloglevel = Saved();
+      FLAGS_minloglevel = savedMinimumLogLevel;
     }
   }
   QuietGlog(const QuietGlog&) = delete;
   QuietGlog& operator=(const QuietGlog&) = delete;
-
-private:
-  static std::mutex& Mutex()
-  {
-    static std::mutex mutex;
-    return mutex;
-  }
-  static int& Depth()
-  {
-    static int depth = 0;
-    return depth;
-  }
-  static int& Saved()
-  {
-    static int saved = 0;
-    return saved;
-  }
 };
 
 // Ceres calls this once per new point of the unknowns, before any residual block's Evaluate.

@@ -32,6 +32,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <memory>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -392,13 +393,19 @@ int vtkConformalOrbitSource::RequestData(
     // outside it). Elsewhere such a sample is dropped without loss (an orbit through infinity).
     std::atomic<long long> uncut{ 0 };
     const cga::Vec3 clipCenter = cga::toVec3(this->ClipCenter);
-    auto insideAt = [&](int r, int c) {
+    // Whether seed r's image under `neighbour` (column c's map, made at the first call of a
+    // column's chunk: only samples that are dropped ask) is inside the clip sphere.
+    auto insideAt = [&](int r, int c, std::unique_ptr<cga::PointMap>& neighbour) {
       if (c < 0 || c >= columns)
       {
         return false;
       }
+      if (!neighbour)
+      {
+        neighbour.reset(new cga::PointMap(orbit.versor(ts[c])));
+      }
       cga::Vec3 p;
-      return cga::PointMap(orbit.versor(ts[c])).apply(seeds[r] - center, p) &&
+      return neighbour->apply(seeds[r] - center, p) &&
         cga::norm(p + center - clipCenter) <= this->ClipRadius;
     };
     // A seed whose conformal point overflows (about 1e154 from the generators' center) has no
@@ -419,6 +426,7 @@ int vtkConformalOrbitSource::RequestData(
         return;
       }
       long long lost = 0;
+      std::unique_ptr<cga::PointMap> previous, next; // columns c - 1 and c + 1, made when needed
       for (int r = firstRow; r <= lastRow; ++r)
       {
         cga::Vec3 p;
@@ -432,7 +440,7 @@ int vtkConformalOrbitSource::RequestData(
           const double xyz[3] = { q.x, q.y, q.z };
           grid.SetPoint(r, c, xyz);
         }
-        else if (insideAt(r, c - 1) || insideAt(r, c + 1)) // rare: the neighbours' maps anew
+        else if (insideAt(r, c - 1, previous) || insideAt(r, c + 1, next))
         {
           ++lost;
         }

@@ -126,8 +126,8 @@ Vec3 planeNormal(const Vec3* points, std::size_t count, Vec3 center)
   }
   const int e = exponentOf(largest); // |p - center| / 2^e < 1: no product below overflows
   // A product by 2^-e where that is a normal double: the same correctly rounded x 2^-e as
-  // ldexp's, bit for bit, without two calls per coordinate (a quarter of the boosted surface's
-  // and the Hopf fibers' time per sample).
+  // ldexp's, bit for bit, without two calls per coordinate (about an eighth of the boosted
+  // surface's and the Hopf fibers' time per sample).
   const bool multiply = e >= -1021 && e <= 1021;
   const double factor = multiply ? std::ldexp(1.0, -e) : 1.0;
   auto scaledPoint = [&](Vec3 p) { return multiply ? (p - center) * factor : scaledBy(p - center, e); };
