@@ -39,13 +39,49 @@ std::vector<vtkIdType> vtkBoostedBlockLoop::ChunkBounds(
   return bounds;
 }
 
+void vtkBoostedBlockLoop::RunBlock(vtkIdType begin, vtkIdType end, vtkIdType samplesPerItem,
+  const std::function<void(vtkIdType, vtkIdType)>& work)
+{
+  const int threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
+  if (threads == 1 || end - begin <= 1)
+  {
+    if (begin < end)
+    {
+      work(begin, end); // a std::bad_alloc leaves on the calling thread, as below
+    }
+    return;
+  }
+  // One job per thread of the project's pool (vtkBoostedThreadPool: threads kept from one block
+  // and one update to the next), which claims the chunks in turn from a shared counter.
+  const std::vector<vtkIdType> bounds = ChunkBounds(begin, end, samplesPerItem, threads);
+  const vtkIdType chunks = static_cast<vtkIdType>(bounds.size()) - 1;
+  std::atomic<vtkIdType> nextChunk{ 0 };
+  std::atomic<bool> outOfMemory{ false };
+  vtkBoostedThreadPool::Run(threads, [&work, &bounds, chunks, &nextChunk, &outOfMemory]() {
+    try
+    {
+      for (vtkIdType chunk = nextChunk++; chunk < chunks && !outOfMemory; chunk = nextChunk++)
+      {
+        work(bounds[chunk], bounds[chunk + 1]);
+      }
+    }
+    catch (const std::bad_alloc&)
+    {
+      outOfMemory = true; // reported once, on the calling thread; the others stop
+    }
+  });
+  if (outOfMemory)
+  {
+    throw std::bad_alloc();
+  }
+}
+
 bool vtkBoostedBlockLoop::For(vtkAlgorithm* algorithm, vtkIdType begin, vtkIdType end,
   vtkIdType samplesPerItem, const std::function<void(vtkIdType, vtkIdType)>& work)
 {
-  // One thread: the work on the calling thread. More: larger blocks (ItemsPerBlock), each split
-  // into chunks (ChunkBounds) that the threads take in turn, largest first, so that at a block's
+  // Blocks (ItemsPerBlock) with the abort check before and the progress after each; a block's
+  // chunks (ChunkBounds) are taken in turn by the threads, largest first, so that at a block's
   // end a thread waits for the others for about one of the last, small chunks.
-  const int threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
   const vtkIdType itemsPerBlock = ItemsPerBlock(samplesPerItem);
   for (vtkIdType first = begin; first < end; first += itemsPerBlock)
   {
@@ -54,36 +90,7 @@ bool vtkBoostedBlockLoop::For(vtkAlgorithm* algorithm, vtkIdType begin, vtkIdTyp
       return false;
     }
     const vtkIdType last = std::min(end, first + itemsPerBlock);
-    if (threads == 1)
-    {
-      work(first, last); // a std::bad_alloc leaves on the calling thread, as below
-    }
-    else
-    {
-      // One job per thread of the project's pool (vtkBoostedThreadPool: threads kept from one
-      // block and one update to the next), which claims the chunks in turn from a shared counter.
-      const std::vector<vtkIdType> bounds = ChunkBounds(first, last, samplesPerItem, threads);
-      const vtkIdType chunks = static_cast<vtkIdType>(bounds.size()) - 1;
-      std::atomic<vtkIdType> nextChunk{ 0 };
-      std::atomic<bool> outOfMemory{ false };
-      vtkBoostedThreadPool::Run(threads, [&work, &bounds, chunks, &nextChunk, &outOfMemory]() {
-        try
-        {
-          for (vtkIdType chunk = nextChunk++; chunk < chunks && !outOfMemory; chunk = nextChunk++)
-          {
-            work(bounds[chunk], bounds[chunk + 1]);
-          }
-        }
-        catch (const std::bad_alloc&)
-        {
-          outOfMemory = true; // reported once, on the calling thread; the others stop
-        }
-      });
-      if (outOfMemory)
-      {
-        throw std::bad_alloc();
-      }
-    }
+    RunBlock(first, last, samplesPerItem, work);
     algorithm->UpdateProgress(static_cast<double>(last - begin) / (end - begin));
   }
   return true;

@@ -54,6 +54,12 @@ public:
   static bool For(vtkAlgorithm* algorithm, vtkIdType begin, vtkIdType end,
     vtkIdType samplesPerItem, const std::function<void(vtkIdType first, vtkIdType last)>& work);
 
+  /// Runs work(first, last) over the items [begin, end) as one block, without progress or abort:
+  /// for passes that must finish once started (the grid builder's, the clip's). On more than one
+  /// thread the pool's threads claim the block's chunks as in For; throws std::bad_alloc as For.
+  static void RunBlock(vtkIdType begin, vtkIdType end, vtkIdType samplesPerItem,
+    const std::function<void(vtkIdType first, vtkIdType last)>& work);
+
   /// The chunks of the block [first, last) on `threads` threads, as bounds: first, ..., last,
   /// largest first (guided: a quarter of what is left per thread, at most a sixteenth of a
   /// thread's share, at least MinimumChunkSamples samples).

@@ -1,5 +1,6 @@
 #include "vtkBoostedGridBuilder.h"
 
+#include "vtkBoostedBlockLoop.h"
 #include "vtkBoostedPolylineRuns.h"
 
 #include "vtkAlgorithm.h"
@@ -13,7 +14,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 
 #include "cga/Vec3.h"
@@ -24,7 +24,7 @@
 
 namespace
 {
-// The builder's passes run on vtkSMPTools' threads, each over its own runs of columns of one row
+// The builder's passes run on the block loop's threads (vtkBoostedBlockLoop::RunBlock), each over its own runs of columns of one row
 // (segments) or its own rows: their points, array values and cells are numbered from per-item
 // counts, so the output is the same, bit for bit, whatever the threads. No pass allocates in a
 // worker thread.
@@ -51,16 +51,30 @@ std::vector<Segment> Segments(int firstRow, int lastRow, int firstColumn, int la
   return segments;
 }
 
-// work(i) for every i in [0, count), on vtkSMPTools' threads.
-template <typename Work>
-void forEach(size_t count, const Work& work)
+// The columns of the segments per segment, rounded up: the samples of one item of their passes.
+vtkIdType ColumnsPerItem(const std::vector<Segment>& segments)
 {
-  vtkSMPTools::For(vtkIdType(0), static_cast<vtkIdType>(count), [&work](vtkIdType first, vtkIdType last) {
-    for (vtkIdType i = first; i < last; ++i)
-    {
-      work(static_cast<size_t>(i));
-    }
-  });
+  vtkIdType columns = 0;
+  for (const Segment& s : segments)
+  {
+    columns += s.LastColumn - s.FirstColumn;
+  }
+  return segments.empty() ? 1 : (columns + segments.size() - 1) / segments.size();
+}
+
+// work(i) for every i in [0, count), each item worth about samplesPerItem samples, on the block
+// loop's threads (guided chunks on the project's kept threads: VTK 9.2's For starts new threads
+// and splits into eight equal chunks, and a pass's last chunk kept one of two threads waiting).
+template <typename Work>
+void forEach(size_t count, vtkIdType samplesPerItem, const Work& work)
+{
+  vtkBoostedBlockLoop::RunBlock(vtkIdType(0), static_cast<vtkIdType>(count), samplesPerItem,
+    [&work](vtkIdType first, vtkIdType last) {
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        work(static_cast<size_t>(i));
+      }
+    });
 }
 
 // offsets[i] = counts[0] + ... + counts[i - 1]; offsets[counts.size()] is the total.
@@ -86,17 +100,18 @@ struct CellWriter
 };
 
 // The cells that fill(i, writer) writes for every item i in [0, cellCounts.size()), in item order
-// (item i: cellCounts[i] cells of sizes[i] ids in all), written on vtkSMPTools' threads.
+// (item i: cellCounts[i] cells of sizes[i] ids in all, from about samplesPerItem samples),
+// written on the block loop's threads.
 template <typename Fill>
-vtkSmartPointer<vtkCellArray> CellsInOrder(
-  const std::vector<vtkIdType>& cellCounts, const std::vector<vtkIdType>& sizes, const Fill& fill)
+vtkSmartPointer<vtkCellArray> CellsInOrder(const std::vector<vtkIdType>& cellCounts,
+  const std::vector<vtkIdType>& sizes, vtkIdType samplesPerItem, const Fill& fill)
 {
   const std::vector<vtkIdType> firstCells = PrefixSums(cellCounts), firstIds = PrefixSums(sizes);
   vtkNew<vtkIdTypeArray> offsets, connectivity;
   offsets->SetNumberOfValues(firstCells.back() + 1);
   offsets->SetValue(firstCells.back(), firstIds.back());
   connectivity->SetNumberOfValues(firstIds.back());
-  forEach(cellCounts.size(), [&](size_t i) {
+  forEach(cellCounts.size(), samplesPerItem, [&](size_t i) {
     CellWriter writer{ offsets->GetPointer(0), connectivity->GetPointer(0), firstCells[i],
       firstIds[i] };
     fill(i, writer);
@@ -355,7 +370,7 @@ std::unique_ptr<long long[]> vtkBoostedGridBuilder::WritePoints(
     }
   };
   std::vector<vtkIdType> counts(segments.size(), 0);
-  forEach(segments.size(), [&](size_t i) {
+  forEach(segments.size(), ColumnsPerItem(segments), [&](size_t i) {
     const Segment& s = segments[i];
     std::fill(ids.get() + this->Index(s.Row, s.FirstColumn),
       ids.get() + this->Index(s.Row, s.LastColumn), -1);
@@ -414,7 +429,7 @@ std::unique_ptr<long long[]> vtkBoostedGridBuilder::WritePoints(
   auto* floatPoints = vtkFloatArray::FastDownCast(points->GetData());
 
   // Each segment writes its own range of every array.
-  forEach(segments.size(), [&](size_t i) {
+  forEach(segments.size(), ColumnsPerItem(segments), [&](size_t i) {
     const Segment& s = segments[i];
     const int r = s.Row;
     const double v = (r % this->BlockRows()) * vScale; // the texture coordinate of the row
@@ -548,7 +563,7 @@ void vtkBoostedGridBuilder::BuildSurface(
                    [this](const Segment& s) { return !this->SameBlock(s.Row, s.Row + 1); }),
     segments.end());
   std::vector<vtkIdType> cellCounts(segments.size(), 0), sizes(segments.size(), 0);
-  forEach(segments.size(), [&](size_t i) {
+  forEach(segments.size(), ColumnsPerItem(segments), [&](size_t i) {
     vtkIdType cell[4];
     for (int c = segments[i].FirstColumn; c < segments[i].LastColumn; ++c)
     {
@@ -557,7 +572,7 @@ void vtkBoostedGridBuilder::BuildSurface(
       sizes[i] += size;
     }
   });
-  output->SetPolys(CellsInOrder(cellCounts, sizes, [&](size_t i, CellWriter& writer) {
+  output->SetPolys(CellsInOrder(cellCounts, sizes, ColumnsPerItem(segments), [&](size_t i, CellWriter& writer) {
     vtkIdType cell[4];
     for (int c = segments[i].FirstColumn; c < segments[i].LastColumn; ++c)
     {
@@ -682,7 +697,7 @@ void vtkBoostedGridBuilder::BuildCurves(
   // A row whose samples are all usable is one polyline (closed with periodic columns), written
   // in place below; the others are split into runs by the one walker first.
   std::vector<char> whole(std::max(rows, 0), 0);
-  forEach(whole.size(), [&](size_t i) {
+  forEach(whole.size(), distinct, [&](size_t i) {
     const int r = firstRow + static_cast<int>(i);
     bool all = distinct >= 3;
     for (int c = 0; c < distinct && all; ++c)
@@ -721,7 +736,7 @@ void vtkBoostedGridBuilder::BuildCurves(
     cellCounts[i] = split[i]->GetNumberOfCells();
     sizes[i] = split[i]->GetNumberOfConnectivityIds();
   }
-  output->SetLines(CellsInOrder(cellCounts, sizes, [&](size_t i, CellWriter& writer) {
+  output->SetLines(CellsInOrder(cellCounts, sizes, distinct, [&](size_t i, CellWriter& writer) {
     const int r = firstRow + static_cast<int>(i);
     if (whole[i])
     {

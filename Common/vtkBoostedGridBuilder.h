@@ -23,7 +23,7 @@
  * whose first row is on another piece keeps its points). Merged points have one texture
  * coordinate for two (u = 0 and 1), so TextureCoordinates are left out.
  *
- * Building runs on vtkSMPTools' threads: runs of one row's columns each write their own range of
+ * Building runs on the block loop's threads (vtkBoostedBlockLoop::RunBlock): runs of one row's columns each write their own range of
  * the points, arrays and cells, numbered from per-run counts, so the output is the same, bit for
  * bit, whatever the backend and the number of threads.
  *

@@ -1,5 +1,6 @@
 #include "vtkBoostedSphereClip.h"
 
+#include "vtkBoostedBlockLoop.h"
 #include "vtkBoostedCurvatureArrays.h"
 #include "vtkBoostedPolylineRuns.h"
 
@@ -12,7 +13,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
 
 #include "cga/SegmentSphere.h"
 
@@ -46,7 +46,7 @@ void vtkBoostedSphereClip::Clip(
   // Written and counted on the threads (no serial pass over the points).
   std::unique_ptr<char[]> inside(new char[count]);
   std::atomic<vtkIdType> insideCount{ 0 };
-  vtkSMPTools::For(0, count, [&](vtkIdType first, vtkIdType last) {
+  vtkBoostedBlockLoop::RunBlock(0, count, 1, [&](vtkIdType first, vtkIdType last) {
     vtkIdType chunkInside = 0;
     for (vtkIdType i = first; i < last; ++i)
     {
