@@ -56,7 +56,8 @@ public:
 
   /// Runs work(first, last) over the items [begin, end) as one block, without progress or abort:
   /// for passes that must finish once started (the grid builder's, the clip's). On more than one
-  /// thread the pool's threads claim the block's chunks as in For; throws std::bad_alloc as For.
+  /// thread the pool's threads claim the block's chunks as in For (a single item runs on the
+  /// calling thread); throws std::bad_alloc as For.
   static void RunBlock(vtkIdType begin, vtkIdType end, vtkIdType samplesPerItem,
     const std::function<void(vtkIdType first, vtkIdType last)>& work);
 

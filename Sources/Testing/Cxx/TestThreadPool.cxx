@@ -3,7 +3,8 @@
 // the asked threads while the calling thread waits, a Run nested in a job or in a vtkSMPTools
 // parallel region and a Run while another thread runs the pool done on the calling thread, an
 // exception thrown again on the calling thread once every thread has returned, and a child
-// process made by fork() served by threads of its own.
+// process made by fork() served by threads of its own; the block loop's one block (RunBlock) covers
+// every item once on those threads.
 #include "vtkBoostedBlockLoop.h"
 #include "vtkBoostedSurfaceSource.h"
 #include "vtkBoostedThreadPool.h"
@@ -15,6 +16,7 @@
 #include <atomic>
 #include <chrono>
 #include <mutex>
+#include <new>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -93,6 +95,70 @@ TEST(ThreadPool, TheBlockLoopKeepsItsThreadsFromOneUpdateToTheNext)
   EXPECT_EQ(threads.size(), 2u) << "60 blocks, two threads";
   EXPECT_EQ(threads.count(std::this_thread::get_id()), 0u);
   EXPECT_GE(vtkBoostedThreadPool::Threads(), 2);
+}
+
+TEST(ThreadPool, OneBlockCoversEveryItemOnceOnTheKeptThreads)
+{
+  // RunBlock: the grid builder's and the clip's passes (no progress, no abort).
+  vtkSMPTools::SetBackend("STDThread");
+  vtkSMPTools::Initialize(2);
+  for (const vtkIdType samplesPerItem : { 1, 700, 100000 })
+  {
+    for (const vtkIdType count : { 0, 1, 2, 3, 17, 4096, 65537, 300001 })
+    {
+      std::vector<std::atomic<int>> visits(static_cast<size_t>(count) + 2);
+      Calls calls;
+      vtkBoostedBlockLoop::RunBlock(1, count + 1, samplesPerItem, [&](vtkIdType first, vtkIdType last) {
+        ASSERT_LE(1, first);
+        ASSERT_LT(first, last);
+        ASSERT_LE(last, count + 1);
+        for (vtkIdType i = first; i < last; ++i)
+        {
+          ++visits[i];
+        }
+        calls.Record();
+      });
+      for (vtkIdType i = 0; i < count + 2; ++i)
+      {
+        ASSERT_EQ(visits[i].load(), i >= 1 && i <= count ? 1 : 0)
+          << "item " << i << " of " << count << ", " << samplesPerItem << " samples each";
+      }
+      if (count >= 2)
+      {
+        // The pool's threads, not the calling thread (which of them takes the chunks depends on
+        // which wakes first).
+        EXPECT_EQ(calls.Distinct().count(std::this_thread::get_id()), 0u) << count;
+      }
+    }
+  }
+  // A std::bad_alloc in a worker: thrown again on the calling thread, and the pool still works.
+  std::atomic<int> failedOffTheCallingThread{ 0 };
+  const std::thread::id caller = std::this_thread::get_id();
+  EXPECT_THROW(vtkBoostedBlockLoop::RunBlock(0, 1 << 20, 1,
+                 [&](vtkIdType first, vtkIdType) {
+                   if (first == 0)
+                   {
+                     failedOffTheCallingThread += std::this_thread::get_id() != caller;
+                     throw std::bad_alloc();
+                   }
+                 }),
+    std::bad_alloc);
+  EXPECT_EQ(failedOffTheCallingThread.load(), 1);
+  std::atomic<vtkIdType> after{ 0 };
+  vtkBoostedBlockLoop::RunBlock(0, 1 << 20, 1, [&](vtkIdType first, vtkIdType last) { after += last - first; });
+  EXPECT_EQ(after.load(), 1 << 20);
+  // The Sequential backend: the calling thread alone, the whole range at once.
+  vtkSMPTools::SetBackend("Sequential");
+  Calls sequential;
+  vtkIdType covered = 0;
+  vtkBoostedBlockLoop::RunBlock(0, 300001, 1, [&](vtkIdType first, vtkIdType last) {
+    covered += last - first;
+    sequential.Record();
+  });
+  EXPECT_EQ(covered, 300001);
+  ASSERT_EQ(sequential.Threads.size(), 1u);
+  EXPECT_EQ(*sequential.Threads.begin(), std::this_thread::get_id());
+  vtkSMPTools::SetBackend("STDThread");
 }
 
 TEST(ThreadPool, ARunInAJobOrInAnSMPRegionRunsOnTheCallingThread)
