@@ -108,9 +108,9 @@ vtkSmartPointer<vtkCellArray> CellsInOrder(const std::vector<vtkIdType>& cellCou
 {
   const std::vector<vtkIdType> firstCells = PrefixSums(cellCounts), firstIds = PrefixSums(sizes);
   vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfValues(firstCells.back() + 1);
+  vtkBoostedLargeArrays::SetNumberOfTuples(offsets, firstCells.back() + 1);
   offsets->SetValue(firstCells.back(), firstIds.back());
-  connectivity->SetNumberOfValues(firstIds.back());
+  vtkBoostedLargeArrays::SetNumberOfTuples(connectivity, firstIds.back());
   forEach(cellCounts.size(), samplesPerItem, [&](size_t i) {
     CellWriter writer{ offsets->GetPointer(0), connectivity->GetPointer(0), firstCells[i],
       firstIds[i] };
@@ -170,7 +170,7 @@ vtkBoostedGridBuilder::vtkBoostedGridBuilder(int rows, int columns, bool periodi
   : Rows(rows)
   , Columns(columns)
   , PeriodicColumns(periodicColumns)
-  , Points(new double[3 * static_cast<size_t>(rows) * columns]) // cleared by ClearSamples
+  , Points(vtkBoostedLargeArrays::New<double>(3 * static_cast<size_t>(rows) * columns)) // cleared by ClearSamples
   , FallbackNormals(3 * static_cast<size_t>(rows), 0.0)
 {
 }
@@ -211,15 +211,14 @@ void vtkBoostedGridBuilder::SetRowFallbackNormal(int row, const double normal[3]
 void vtkBoostedGridBuilder::EnableSampleNormals()
 {
   // Cleared by ClearSamples.
-  this->SampleNormals.reset(new double[3 * static_cast<size_t>(this->Rows) * this->Columns]);
+  this->SampleNormals = vtkBoostedLargeArrays::New<double>(3 * static_cast<size_t>(this->Rows) * this->Columns);
 }
 
 int vtkBoostedGridBuilder::AddSampleArray(const std::string& name, int components)
 {
   // Cleared by ClearSamples.
   this->SampleArrays.push_back({ name, components,
-    std::unique_ptr<double[]>(
-      new double[static_cast<size_t>(components) * this->Rows * this->Columns]) });
+    vtkBoostedLargeArrays::New<double>(static_cast<size_t>(components) * this->Rows * this->Columns) });
   return static_cast<int>(this->SampleArrays.size()) - 1;
 }
 
@@ -312,11 +311,12 @@ void vtkBoostedGridBuilder::ComputeNormal(int row, int column, double normal[3])
   }
 }
 
-std::unique_ptr<long long[]> vtkBoostedGridBuilder::WritePoints(
+vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(
   vtkPolyData* output, int firstRow, int lastRow, int precision, bool withSurfaceAttributes) const
 {
   // -1 (no point) for the samples of every segment, set by the counting pass below.
-  std::unique_ptr<long long[]> ids(new long long[static_cast<size_t>(this->Rows) * this->Columns]);
+  vtkBoostedLargeArrays::Buffer<long long> ids =
+    vtkBoostedLargeArrays::New<long long>(static_cast<size_t>(this->Rows) * this->Columns);
   // Curves never repeat the seam (see below), so only surfaces merge.
   const bool merge = this->MergeSeam && withSurfaceAttributes;
   const bool withTCoords = withSurfaceAttributes && !merge;
@@ -383,29 +383,29 @@ std::unique_ptr<long long[]> vtkBoostedGridBuilder::WritePoints(
 
   vtkNew<vtkPoints> points;
   points->SetDataType(precision == vtkAlgorithm::SINGLE_PRECISION ? VTK_FLOAT : VTK_DOUBLE);
-  points->SetNumberOfPoints(total);
+  vtkBoostedLargeArrays::SetNumberOfTuples(points->GetData(), total);
   vtkNew<vtkFloatArray> normals;
   normals->SetName("Normals");
   normals->SetNumberOfComponents(3);
-  normals->SetNumberOfTuples(withSurfaceAttributes ? total : 0);
+  vtkBoostedLargeArrays::SetNumberOfTuples(normals, withSurfaceAttributes ? total : 0);
   vtkNew<vtkFloatArray> tcoords;
   tcoords->SetName("TextureCoordinates");
   tcoords->SetNumberOfComponents(2);
-  tcoords->SetNumberOfTuples(withTCoords ? total : 0);
+  vtkBoostedLargeArrays::SetNumberOfTuples(tcoords, withTCoords ? total : 0);
   std::vector<vtkSmartPointer<vtkDoubleArray>> parameters;
   std::vector<vtkSmartPointer<vtkIntArray>> integerParameters;
   for (const auto& parameter : this->IntegerParameters)
   {
     auto array = vtkSmartPointer<vtkIntArray>::New();
     array->SetName(parameter.first.c_str());
-    array->SetNumberOfTuples(total);
+    vtkBoostedLargeArrays::SetNumberOfTuples(array, total);
     integerParameters.push_back(array);
   }
   for (const Parameter& parameter : this->Parameters)
   {
     auto array = vtkSmartPointer<vtkDoubleArray>::New();
     array->SetName(parameter.Name.c_str());
-    array->SetNumberOfTuples(total);
+    vtkBoostedLargeArrays::SetNumberOfTuples(array, total);
     parameters.push_back(array);
   }
   std::vector<vtkSmartPointer<vtkDoubleArray>> sampleArrays;
@@ -414,7 +414,7 @@ std::unique_ptr<long long[]> vtkBoostedGridBuilder::WritePoints(
     auto array = vtkSmartPointer<vtkDoubleArray>::New();
     array->SetName(values.Name.c_str());
     array->SetNumberOfComponents(values.Components);
-    array->SetNumberOfTuples(total);
+    vtkBoostedLargeArrays::SetNumberOfTuples(array, total);
     sampleArrays.push_back(array);
   }
   // Their values, fetched once: GetPointer per point and array cost a call each (and copy_n of a
@@ -531,7 +531,7 @@ std::unique_ptr<long long[]> vtkBoostedGridBuilder::WritePoints(
 void vtkBoostedGridBuilder::BuildSurface(
   vtkPolyData* output, int firstRow, int lastRow, int outputPointsPrecision) const
 {
-  const std::unique_ptr<long long[]> ids =
+  const vtkBoostedLargeArrays::Buffer<long long> ids =
     this->WritePoints(output, firstRow, lastRow, outputPointsPrecision, true);
   // The cell of the quad between rows r, r + 1 and columns c, c + 1: its size (0: no cell).
   auto quadCell = [&](int r, int c, vtkIdType cell[4]) -> vtkIdType {
@@ -688,7 +688,7 @@ void vtkBoostedGridBuilder::FindMergedRows(
 void vtkBoostedGridBuilder::BuildCurves(
   vtkPolyData* output, int firstRow, int lastRow, int outputPointsPrecision) const
 {
-  const std::unique_ptr<long long[]> ids =
+  const vtkBoostedLargeArrays::Buffer<long long> ids =
     this->WritePoints(output, firstRow, lastRow, outputPointsPrecision, false);
   // With periodic columns the last column repeats the first: each row is a closed polyline of
   // grid indices.

@@ -37,6 +37,7 @@
 #define vtkBoostedGridBuilder_h
 
 #include "BoostedSurfacesCommonModule.h" // for export macro
+#include "vtkBoostedLargeArrays.h"       // for the sample buffers
 
 #include <cmath>
 #include <memory>
@@ -133,7 +134,7 @@ private:
   {
     std::string Name;
     int Components;
-    std::unique_ptr<double[]> Values; // Components x rows x columns
+    vtkBoostedLargeArrays::Buffer<double> Values; // Components x rows x columns
   };
 
   int Index(int row, int column) const { return row * this->Columns + column; }
@@ -146,7 +147,7 @@ private:
   void ComputeNormal(int row, int column, double normal[3]) const;
   /// Writes the usable points of rows [firstRow, lastRow] and returns the map grid index -> point
   /// id (-1: no point), defined for those rows' samples.
-  std::unique_ptr<long long[]> WritePoints(
+  vtkBoostedLargeArrays::Buffer<long long> WritePoints(
     vtkPolyData* output, int firstRow, int lastRow, int precision, bool withSurfaceAttributes) const;
 
   /// With MergeSeam: for each row of [firstRow, lastRow], the row whose points it reuses (itself
@@ -159,9 +160,9 @@ private:
   bool PeriodicColumns;
   bool MergeSeam = false;
   double Origin[3] = { 0.0, 0.0, 0.0 };
-  std::unique_ptr<double[]> Points; // 3 x rows x columns, relative to Origin; NaN: not set
+  vtkBoostedLargeArrays::Buffer<double> Points; // 3 x rows x columns, relative to Origin; NaN: not set
   std::vector<double> FallbackNormals;
-  std::unique_ptr<double[]> SampleNormals; // 3 x rows x columns when enabled; NaN: not given
+  vtkBoostedLargeArrays::Buffer<double> SampleNormals; // 3 x rows x columns when enabled; NaN: not given
   std::vector<SampleArray> SampleArrays;
   std::vector<Parameter> Parameters;
   int RowsPerBlock = 0; // 0: one block of all rows

@@ -5,6 +5,7 @@
 #include "vtkBoostedBlockLoop.h"
 #include "vtkBoostedExponentialRule.h"
 #include "vtkBoostedGeneratorGlyphs.h"
+#include "vtkBoostedLargeArrays.h"
 #include "vtkBoostedGeneratorRows.h"
 #include "vtkBoostedMemoryBudget.h"
 #include "vtkBoostedTimeSweep.h"
@@ -562,12 +563,12 @@ bool vtkPointPairDeformationFilter::Deform(
   }
   vtkNew<vtkPoints> outPoints;
   outPoints->SetDataType(outputType);
-  outPoints->SetNumberOfPoints(count);
+  vtkBoostedLargeArrays::SetNumberOfTuples(outPoints->GetData(), count);
   vtkSmartPointer<vtkDataArray> displacement =
     vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(outputType));
   displacement->SetName("Displacement");
   displacement->SetNumberOfComponents(3);
-  displacement->SetNumberOfTuples(count);
+  vtkBoostedLargeArrays::SetNumberOfTuples(displacement, count);
 
   vtkPointPairJacobianArrays derivatives;
   std::string problem, missing;

@@ -2,6 +2,7 @@
 
 #include "vtkBoostedExponentialRule.h"
 #include "vtkBoostedGeneratorGlyphs.h"
+#include "vtkBoostedLargeArrays.h"
 #include "vtkBoostedGeneratorRows.h"
 #include "vtkBoostedMemoryBudget.h"
 #include "vtkBoostedRowList.h"
@@ -564,7 +565,7 @@ int vtkPointPairFitFilter::RequestData(
   // The per-point residual of the output's points.
   vtkNew<vtkDoubleArray> residual;
   residual->SetName("FitResidual");
-  residual->SetNumberOfTuples(count);
+  vtkBoostedLargeArrays::SetNumberOfTuples(residual, count);
   vtkNew<vtkGenericCell> cell;
   for (vtkIdType i = 0; i < count; ++i)
   {

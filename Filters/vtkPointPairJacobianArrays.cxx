@@ -1,6 +1,7 @@
 #include "vtkPointPairJacobianArrays.h"
 
 #include "vtkAOSDataArrayTemplate.h"
+#include "vtkBoostedLargeArrays.h"
 #include "vtkDataArray.h"
 #include "vtkDataArraySelection.h"
 #include "vtkPointData.h"
@@ -257,7 +258,7 @@ vtkSmartPointer<vtkDataArray> outputFor(vtkDataArray* input, vtkIdType count)
     vtkDataArray::CreateDataArray(input->GetDataType() == VTK_FLOAT ? VTK_FLOAT : VTK_DOUBLE));
   output->SetName(input->GetName());
   output->SetNumberOfComponents(3);
-  output->SetNumberOfTuples(count);
+  vtkBoostedLargeArrays::SetNumberOfTuples(output, count);
   return output;
 }
 
@@ -265,7 +266,7 @@ vtkSmartPointer<vtkDataArray> scalarArray(const char* name, int type, vtkIdType 
 {
   auto output = vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(type));
   output->SetName(name);
-  output->SetNumberOfTuples(count);
+  vtkBoostedLargeArrays::SetNumberOfTuples(output, count);
   return output;
 }
 
