@@ -24,10 +24,10 @@
 
 namespace
 {
-// The builder's passes run on the block loop's threads (vtkBoostedBlockLoop::RunBlock), each over its own runs of columns of one row
-// (segments) or its own rows: their points, array values and cells are numbered from per-item
-// counts, so the output is the same, bit for bit, whatever the threads. No pass allocates in a
-// worker thread.
+// The builder's passes run on the block loop's threads (vtkBoostedBlockLoop::RunBlock), each over
+// its own runs of columns of one row (segments) or its own rows: their points, array values and
+// cells are numbered from per-item counts, so the output is the same, bit for bit, whatever the
+// threads. No pass allocates in a worker thread.
 struct Segment
 {
   int Row, FirstColumn, LastColumn; // columns [FirstColumn, LastColumn)
@@ -166,11 +166,12 @@ void dropUnusedPoints(vtkPolyData* mesh)
 }
 } // namespace
 
+// Points are cleared by ClearSamples.
 vtkBoostedGridBuilder::vtkBoostedGridBuilder(int rows, int columns, bool periodicColumns)
   : Rows(rows)
   , Columns(columns)
   , PeriodicColumns(periodicColumns)
-  , Points(vtkBoostedLargeArrays::New<double>(3 * static_cast<size_t>(rows) * columns)) // cleared by ClearSamples
+  , Points(vtkBoostedLargeArrays::New<double>(3 * static_cast<size_t>(rows) * columns))
   , FallbackNormals(3 * static_cast<size_t>(rows), 0.0)
 {
 }
@@ -211,14 +212,16 @@ void vtkBoostedGridBuilder::SetRowFallbackNormal(int row, const double normal[3]
 void vtkBoostedGridBuilder::EnableSampleNormals()
 {
   // Cleared by ClearSamples.
-  this->SampleNormals = vtkBoostedLargeArrays::New<double>(3 * static_cast<size_t>(this->Rows) * this->Columns);
+  this->SampleNormals =
+    vtkBoostedLargeArrays::New<double>(3 * static_cast<size_t>(this->Rows) * this->Columns);
 }
 
 int vtkBoostedGridBuilder::AddSampleArray(const std::string& name, int components)
 {
   // Cleared by ClearSamples.
   this->SampleArrays.push_back({ name, components,
-    vtkBoostedLargeArrays::New<double>(static_cast<size_t>(components) * this->Rows * this->Columns) });
+    vtkBoostedLargeArrays::New<double>(
+      static_cast<size_t>(components) * this->Rows * this->Columns) });
   return static_cast<int>(this->SampleArrays.size()) - 1;
 }
 
@@ -369,8 +372,9 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(
       }
     }
   };
+  const vtkIdType columnsPerSegment = ColumnsPerItem(segments);
   std::vector<vtkIdType> counts(segments.size(), 0);
-  forEach(segments.size(), ColumnsPerItem(segments), [&](size_t i) {
+  forEach(segments.size(), columnsPerSegment, [&](size_t i) {
     const Segment& s = segments[i];
     std::fill(ids.get() + this->Index(s.Row, s.FirstColumn),
       ids.get() + this->Index(s.Row, s.LastColumn), -1);
@@ -429,7 +433,7 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(
   auto* floatPoints = vtkFloatArray::FastDownCast(points->GetData());
 
   // Each segment writes its own range of every array.
-  forEach(segments.size(), ColumnsPerItem(segments), [&](size_t i) {
+  forEach(segments.size(), columnsPerSegment, [&](size_t i) {
     const Segment& s = segments[i];
     const int r = s.Row;
     const double v = (r % this->BlockRows()) * vScale; // the texture coordinate of the row
@@ -562,8 +566,9 @@ void vtkBoostedGridBuilder::BuildSurface(
   segments.erase(std::remove_if(segments.begin(), segments.end(),
                    [this](const Segment& s) { return !this->SameBlock(s.Row, s.Row + 1); }),
     segments.end());
+  const vtkIdType columnsPerSegment = ColumnsPerItem(segments);
   std::vector<vtkIdType> cellCounts(segments.size(), 0), sizes(segments.size(), 0);
-  forEach(segments.size(), ColumnsPerItem(segments), [&](size_t i) {
+  forEach(segments.size(), columnsPerSegment, [&](size_t i) {
     vtkIdType cell[4];
     for (int c = segments[i].FirstColumn; c < segments[i].LastColumn; ++c)
     {
@@ -572,7 +577,7 @@ void vtkBoostedGridBuilder::BuildSurface(
       sizes[i] += size;
     }
   });
-  output->SetPolys(CellsInOrder(cellCounts, sizes, ColumnsPerItem(segments), [&](size_t i, CellWriter& writer) {
+  output->SetPolys(CellsInOrder(cellCounts, sizes, columnsPerSegment, [&](size_t i, CellWriter& writer) {
     vtkIdType cell[4];
     for (int c = segments[i].FirstColumn; c < segments[i].LastColumn; ++c)
     {

@@ -23,9 +23,9 @@
  * whose first row is on another piece keeps its points). Merged points have one texture
  * coordinate for two (u = 0 and 1), so TextureCoordinates are left out.
  *
- * Building runs on the block loop's threads (vtkBoostedBlockLoop::RunBlock): runs of one row's columns each write their own range of
- * the points, arrays and cells, numbered from per-run counts, so the output is the same, bit for
- * bit, whatever the backend and the number of threads.
+ * Building runs on the block loop's threads (vtkBoostedBlockLoop::RunBlock): runs of one row's
+ * columns each write their own range of the points, arrays and cells, numbered from per-run
+ * counts, so the output is the same, bit for bit, whatever the backend and the number of threads.
  *
  * A sample's point, normal and values are undefined until ClearSamples makes it unset (NaN point
  * and normal, zero values): vtkBoostedGridDriver clears each sample on the thread that computes
@@ -160,9 +160,11 @@ private:
   bool PeriodicColumns;
   bool MergeSeam = false;
   double Origin[3] = { 0.0, 0.0, 0.0 };
-  vtkBoostedLargeArrays::Buffer<double> Points; // 3 x rows x columns, relative to Origin; NaN: not set
+  // 3 x rows x columns, relative to Origin; NaN: not set.
+  vtkBoostedLargeArrays::Buffer<double> Points;
   std::vector<double> FallbackNormals;
-  vtkBoostedLargeArrays::Buffer<double> SampleNormals; // 3 x rows x columns when enabled; NaN: not given
+  // 3 x rows x columns when enabled; NaN: not given.
+  vtkBoostedLargeArrays::Buffer<double> SampleNormals;
   std::vector<SampleArray> SampleArrays;
   std::vector<Parameter> Parameters;
   int RowsPerBlock = 0; // 0: one block of all rows

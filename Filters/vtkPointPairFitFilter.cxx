@@ -2,8 +2,8 @@
 
 #include "vtkBoostedExponentialRule.h"
 #include "vtkBoostedGeneratorGlyphs.h"
-#include "vtkBoostedLargeArrays.h"
 #include "vtkBoostedGeneratorRows.h"
+#include "vtkBoostedLargeArrays.h"
 #include "vtkBoostedMemoryBudget.h"
 #include "vtkBoostedRowList.h"
 #include "vtkBoostedSurfacesAbort.h"

@@ -75,7 +75,8 @@ TEST(LargeArrays, ALargeArrayIsSizedAlignedAndAdvisedToUseHugePages)
   if (kernelHasHugePages())
   {
     // The whole 2 MiB pages of the array (the rest, under 2 MiB, could not be a huge page).
-    const std::string flags = mappingFlags(values, 3 * tuples * sizeof(double) / HugePage * HugePage);
+    const std::string flags =
+      mappingFlags(values, 3 * tuples * sizeof(double) / HugePage * HugePage);
     ASSERT_FALSE(flags.empty()) << "no mapping holds the array";
     EXPECT_NE(flags.find(" hg "), std::string::npos) << flags;
   }

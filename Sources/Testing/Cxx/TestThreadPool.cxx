@@ -108,16 +108,17 @@ TEST(ThreadPool, OneBlockCoversEveryItemOnceOnTheKeptThreads)
     {
       std::vector<std::atomic<int>> visits(static_cast<size_t>(count) + 2);
       Calls calls;
-      vtkBoostedBlockLoop::RunBlock(1, count + 1, samplesPerItem, [&](vtkIdType first, vtkIdType last) {
-        ASSERT_LE(1, first);
-        ASSERT_LT(first, last);
-        ASSERT_LE(last, count + 1);
-        for (vtkIdType i = first; i < last; ++i)
-        {
-          ++visits[i];
-        }
-        calls.Record();
-      });
+      vtkBoostedBlockLoop::RunBlock(1, count + 1, samplesPerItem,
+        [&](vtkIdType first, vtkIdType last) {
+          ASSERT_LE(1, first);
+          ASSERT_LT(first, last);
+          ASSERT_LE(last, count + 1);
+          for (vtkIdType i = first; i < last; ++i)
+          {
+            ++visits[i];
+          }
+          calls.Record();
+        });
       for (vtkIdType i = 0; i < count + 2; ++i)
       {
         ASSERT_EQ(visits[i].load(), i >= 1 && i <= count ? 1 : 0)
@@ -145,7 +146,8 @@ TEST(ThreadPool, OneBlockCoversEveryItemOnceOnTheKeptThreads)
     std::bad_alloc);
   EXPECT_EQ(failedOffTheCallingThread.load(), 1);
   std::atomic<vtkIdType> after{ 0 };
-  vtkBoostedBlockLoop::RunBlock(0, 1 << 20, 1, [&](vtkIdType first, vtkIdType last) { after += last - first; });
+  vtkBoostedBlockLoop::RunBlock(
+    0, 1 << 20, 1, [&](vtkIdType first, vtkIdType last) { after += last - first; });
   EXPECT_EQ(after.load(), 1 << 20);
   // The Sequential backend: the calling thread alone, the whole range at once.
   vtkSMPTools::SetBackend("Sequential");
