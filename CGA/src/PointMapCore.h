@@ -80,20 +80,33 @@ BOOSTED_FORCE_INLINE void toFlags(const Mask<V>& mask, bool* flags)
 }
 
 /// Largest absolute component, NaN when one is NaN (Coefficients::maxAbs), in vector compares and
-/// blends: the running maximum and a NaN flag apart (a NaN component never wins a comparison).
+/// blends: the maximum and a NaN flag apart (a NaN component never wins a comparison). The
+/// maximum pairwise, four compares deep instead of a chain of ten (every block waits for it: the
+/// chain was about a tenth of an Exact update at M = 1); the maximum of magnitudes is the same
+/// number in any order.
 template <typename T>
 BOOSTED_FORCE_INLINE ValueOf<T> maxAbs(const T* b)
 {
   using V = ValueOf<T>;
-  V m = V{};
-  Mask<V> nan = lessThan(m, m); // no lane
+  V a[kBivector];
+  Mask<V> nan = lessThan(V{}, V{}); // no lane
   for (int c = 0; c < kBivector; ++c)
   {
-    const V a = magnitude(valueOf(b[c]));
-    m = select(lessThan(m, a), a, m);
-    nan = maskOr(nan, maskNot(equalTo(a, a)));
+    a[c] = magnitude(valueOf(b[c]));
+    nan = maskOr(nan, maskNot(equalTo(a[c], a[c])));
   }
-  return select(nan, splat<V>(__builtin_nan("")), m);
+  for (int n = kBivector; n > 1; n = (n + 1) / 2)
+  {
+    for (int c = 0; c + 1 < n; c += 2)
+    {
+      a[c / 2] = select(lessThan(a[c], a[c + 1]), a[c + 1], a[c]);
+    }
+    if (n % 2 != 0)
+    {
+      a[n / 2] = a[n - 1];
+    }
+  }
+  return select(nan, splat<V>(__builtin_nan("")), a[0]);
 }
 
 /// b = scale B(p), B(p) = sum_i w_i G_i / (k |p - x_i|^2 + eps) (PointPairField::generatorAt
@@ -1368,9 +1381,10 @@ BOOSTED_FORCE_INLINE Mask<T> nearlyNilpotentLanes(const T* b, const T& m)
 
 /// The map p -> fn(<K up(p) ~K>_1), K = exp(b) by the rule of args, on every lane, for a given
 /// bivector b (overwritten): mapPoint after its B(p), for callers with their own exponent per point
-/// (kernel::MapBlockBy; the curvature patch, the generator tree's B(p)).
+/// (kernel::MapBlockBy; the curvature patch, the generator tree's B(p)). Returns the lanes mapped
+/// (mapPointBy below: as bools).
 template <typename T>
-void mapPointBy(const kernel::FieldArgs& args, T* b, const T* p, T* image, bool* mapped)
+Mask<T> mapPointByLanes(const kernel::FieldArgs& args, T* b, const T* p, T* image)
 {
   T x[kVector], r[kVector];
   upPoint(p, x);
@@ -1379,8 +1393,7 @@ void mapPointBy(const kernel::FieldArgs& args, T* b, const T* p, T* image, bool*
     T c;
     paperExponential(b, c, true, true);
     sandwichScalarBivector(c, b, x, r);
-    normalize(p, r, image, mapped);
-    return;
+    return normalizeLanes(p, r, image);
   }
   // Exact: in the field's frame, or around p where B is nearly nilpotent (each lane its own; a
   // block computes both only where its lanes differ). A NaN lane takes the field's frame.
@@ -1413,8 +1426,7 @@ void mapPointBy(const kernel::FieldArgs& args, T* b, const T* p, T* image, bool*
     {
       image[i] = around[i];
     }
-    toFlags<ValueOf<T>>(aroundMapped, mapped);
-    return;
+    return aroundMapped;
   }
   // The field's frame: the closed form of exp(B) and its sandwich, or where B's hyperbolic plane
   // is strong (m^2 l1 above kStrongHyperbolic^2) sandwichWithStrongLanes.
@@ -1455,7 +1467,14 @@ void mapPointBy(const kernel::FieldArgs& args, T* b, const T* p, T* image, bool*
     }
     fieldMapped = maskOr(maskAnd(aroundPoint, aroundMapped), maskAnd(maskNot(aroundPoint), fieldMapped));
   }
-  toFlags<ValueOf<T>>(fieldMapped, mapped);
+  return fieldMapped;
+}
+
+/// mapPointByLanes with the lanes mapped as bools.
+template <typename T>
+void mapPointBy(const kernel::FieldArgs& args, T* b, const T* p, T* image, bool* mapped)
+{
+  toFlags<ValueOf<T>>(mapPointByLanes(args, b, p, image), mapped);
 }
 
 /// Whether mapPointBy's Exact rule maps the one exponent b (double) by its strong lanes
@@ -1484,12 +1503,20 @@ inline bool strongExponentLane(const double* b, bool& similarity)
 }
 
 /// The map p -> fn(<K up(p) ~K>_1), K = exp(-strength B(p)) by the rule of args, on every lane.
+/// Returns the lanes mapped (mapPoint below: as bools).
 template <typename T>
-void mapPoint(const kernel::FieldArgs& args, const T* p, T* image, bool* mapped)
+Mask<T> mapPointLanes(const kernel::FieldArgs& args, const T* p, T* image)
 {
   T b[kBivector];
   fieldBivector(args, p, -args.strength, b);
-  mapPointBy(args, b, p, image, mapped);
+  return mapPointByLanes(args, b, p, image);
+}
+
+/// mapPointLanes with the lanes mapped as bools.
+template <typename T>
+void mapPoint(const kernel::FieldArgs& args, const T* p, T* image, bool* mapped)
+{
+  toFlags<ValueOf<T>>(mapPointLanes(args, p, image), mapped);
 }
 } // namespace
 } // namespace core

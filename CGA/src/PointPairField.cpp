@@ -454,10 +454,11 @@ bool finite3(double x, double y, double z)
   return std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
 }
 
-// mapPointsWithDisplacements' whole blocks of double points, each in one call of the kernel
-// (kernel::MapDisplacedBlock: the images and displacements in its registers instead of a pass
-// of scalar code per point). Returns the points done: count less its last partial block.
-std::size_t mapWholeBlocksWithDisplacements(const kernel::FieldArgs& args, Vec3 c,
+// mapPointsWithDisplacements' and mapPoints' whole blocks of double points, each in one call of
+// the kernel (kernel::MapDisplacedBlock: the images and displacements in its registers instead of
+// a pass of scalar code per point; displacements null: the images only). Returns the points done:
+// count less its last partial block.
+std::size_t mapWholeBlocks(const kernel::FieldArgs& args, Vec3 c,
   const double* in, double* out, double* displacements, std::size_t count,
   BlockDisplacementCounts& counts)
 {
@@ -470,7 +471,8 @@ std::size_t mapWholeBlocksWithDisplacements(const kernel::FieldArgs& args, Vec3 
   {
     double* o = out + 3 * first;
     counts.beyondRange += static_cast<std::size_t>(
-      mapBlock(args, center, in + 3 * first, o, displacements + 3 * first, mapped));
+      mapBlock(args, center, in + 3 * first, o, displacements ? displacements + 3 * first : nullptr,
+        mapped));
     for (std::size_t l = 0; l < L; ++l)
     {
       // A point left in place: not finite, or its image is not (then a finite point).
@@ -495,9 +497,23 @@ std::size_t PointPairField::mapPointsOf(
     return copyPoints(in, out, count, [](std::size_t, bool) {});
   }
   const Vec3 c = this->Center;
-  return mapPointsByKernel(this->args(strength, rule), this->Tree.get(), c, in, count,
-    [&](const auto& mapLanes) {
-      return mapPointsInBlocks(c, in, out, count, mapLanes, [](std::size_t, int, bool) {});
+  const kernel::FieldArgs args = this->args(strength, rule);
+  std::size_t done = 0, unmapped = 0;
+  if constexpr (std::is_same<In, double>::value && std::is_same<Out, double>::value)
+  {
+    if (!this->Tree)
+    {
+      BlockDisplacementCounts found;
+      done = mapWholeBlocks(args, c, in, out, nullptr, count, found);
+      unmapped = found.unchanged;
+    }
+  }
+  // The rest (the last partial block; float points; the tree) block by block in lanes.
+  const In* restIn = in + 3 * done;
+  return unmapped +
+    mapPointsByKernel(args, this->Tree.get(), c, restIn, count - done, [&](const auto& mapLanes) {
+      return mapPointsInBlocks(c, restIn, out + 3 * done, count - done, mapLanes,
+        [](std::size_t, int, bool) {});
     });
 }
 
@@ -516,7 +532,7 @@ PointPairField::DisplacementCounts PointPairField::mapPointsWithDisplacementsOf(
     {
       if (!this->Tree)
       {
-        done = mapWholeBlocksWithDisplacements(args, c, in, out, displacements, count, found);
+        done = mapWholeBlocks(args, c, in, out, displacements, count, found);
       }
     }
     // The rest (the last partial block; float points; the tree) block by block in lanes.

@@ -86,9 +86,10 @@ using MapBlockDirectional = void (*)(const FieldArgs& args,
 /// mapBlock on kLanes whole points read from `points` (x, y, z interleaved, in space) relative to
 /// center[3], written back in space: out receives p + (image - (p - c)) and displacements
 /// out - p, x, y, z interleaved; a lane whose mapped[l] is 0 (as mapBlock's) keeps p,
-/// displacement 0 (`points` may be `out`). Returns the count of mapped lanes whose image or
-/// displacement is not finite.
-/// The filter's pass (PointPairField::mapPointsWithDisplacements) in the kernel's registers.
+/// displacement 0 (`points` may be `out`; `displacements` may be null: the images only). Returns
+/// the count of mapped lanes whose image or displacement is not finite.
+/// The filter's pass (PointPairField::mapPointsWithDisplacements) and mapPoints' whole blocks of
+/// double points in the kernel's registers.
 using MapDisplacedBlock = int (*)(const FieldArgs& args,
                                   const double* center,
                                   const double* points,
