@@ -4,6 +4,10 @@
 
 #include <benchmark/benchmark.h>
 
+#ifdef BOOSTEDBENCH_LARGE_ARRAYS
+#include "vtkBoostedLargeArrays.h"
+#endif
+
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -18,11 +22,18 @@ namespace
 // ones. Whether glibc hands back the same, already mapped pages or fresh ones that fault in page
 // by page depends on its adaptive mmap threshold, i.e. on what ran before: the same filter then
 // costs up to twice the CPU time. "reuse" (default) keeps freed memory in the heap, "fresh" maps
-// every large array anew; both are deterministic. Returns the policy in use.
+// every large array anew (the project's large arrays without their cache of freed mappings,
+// vtkBoostedLargeArrays); both are deterministic. Returns the policy in use.
 std::string setMemoryPolicy()
 {
   const char* requested = std::getenv("BOOSTEDBENCH_MEMORY");
   const bool fresh = requested && std::strcmp(requested, "fresh") == 0;
+#ifdef BOOSTEDBENCH_LARGE_ARRAYS
+  if (fresh)
+  {
+    vtkBoostedLargeArrays::SetCacheLimit(0);
+  }
+#endif
 #ifdef __GLIBC__
   if (fresh)
   {

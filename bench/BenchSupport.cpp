@@ -1,5 +1,9 @@
 #include "BenchSupport.h"
 
+#ifdef BOOSTEDBENCH_LARGE_ARRAYS
+#include "vtkBoostedLargeArrays.h"
+#endif
+
 #include <vtkAlgorithm.h>
 #include <vtkDataSet.h>
 #include <vtkDoubleArray.h>
@@ -113,6 +117,9 @@ double peakMemoryGrowth(const std::function<void()>& work)
   // Under BOOSTEDBENCH_MEMORY=reuse freed arrays stay mapped in the heap; work() would reuse their
   // pages without growing the resident set.
   malloc_trim(0);
+#endif
+#ifdef BOOSTEDBENCH_LARGE_ARRAYS
+  vtkBoostedLargeArrays::ReleaseCached(); // the same for the large arrays' kept mappings
 #endif
   {
     std::ofstream clear("/proc/self/clear_refs");

@@ -1,7 +1,8 @@
 // The memory of the large arrays (Common's vtkBoostedLargeArrays): sized as SetNumberOfTuples
 // sizes them, 2 MiB aligned and advised to use transparent huge pages from 4 MiB on (the mapping's
 // "hg" flag in /proc/self/smaps, where the kernel has transparent huge pages), freed and resized
-// by VTK as its own arrays, and refusals as std::bad_alloc before anything is allocated.
+// by VTK as its own arrays, kept when freed for the next update within a bound and given back
+// beyond it, and refusals as std::bad_alloc before anything is allocated.
 #include "vtkBoostedLargeArrays.h"
 
 #include "vtkDoubleArray.h"
@@ -17,8 +18,10 @@
 #include <fstream>
 #include <limits>
 #include <new>
+#include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -74,14 +77,13 @@ TEST(LargeArrays, ALargeArrayIsSizedAlignedAndAdvisedToUseHugePages)
 #if defined(__linux__)
   if (kernelHasHugePages())
   {
-    // The whole 2 MiB pages of the array (the rest, under 2 MiB, could not be a huge page).
-    const std::string flags =
-      mappingFlags(values, 3 * tuples * sizeof(double) / HugePage * HugePage);
+    // The whole array, its last part too (its mapping is whole 2 MiB pages).
+    const std::string flags = mappingFlags(values, 3 * tuples * sizeof(double));
     ASSERT_FALSE(flags.empty()) << "no mapping holds the array";
     EXPECT_NE(flags.find(" hg "), std::string::npos) << flags;
   }
 #endif
-  // VTK grows it as its own (a copy, then free() of this memory), keeping the values.
+  // VTK grows it as its own (a copy, then Release of this memory), keeping the values.
   const double tuple[3] = { -1.0, -2.0, -3.0 };
   array->InsertNextTuple(tuple);
   ASSERT_EQ(array->GetNumberOfTuples(), tuples + 1);
@@ -143,6 +145,123 @@ TEST(LargeArrays, SmallAndEmptyArraysAndOtherLayoutsAreSizedAsVTKSizesThem)
   soa->SetTypedComponent(999999, 2, 4.0);
   EXPECT_EQ(soa->GetTypedComponent(999999, 2), 4.0);
 }
+
+#if defined(__linux__)
+namespace
+{
+// The process's resident memory in bytes (/proc/self/statm), 0 when unknown.
+std::size_t residentBytes()
+{
+  std::ifstream statm("/proc/self/statm");
+  std::size_t pages = 0, resident = 0;
+  return statm >> pages >> resident ? resident * 4096 : 0;
+}
+} // namespace
+
+TEST(LargeArrays, FreedArraysAreKeptForTheNextUpdateWithinABoundAndGivenBack)
+{
+  vtkBoostedLargeArrays::ReleaseCached();
+  ASSERT_EQ(vtkBoostedLargeArrays::CachedMemory(), 0u);
+  // As a source's updates: arrays of a few sizes written whole, then freed, forty times over.
+  std::size_t before = 0;
+  const void* lastPoints = nullptr;
+  std::set<const void*> last;
+  for (int update = 0; update < 40; ++update)
+  {
+    vtkNew<vtkDoubleArray> points, normals;
+    vtkNew<vtkFloatArray> tcoords;
+    points->SetNumberOfComponents(3);
+    normals->SetNumberOfComponents(3);
+    tcoords->SetNumberOfComponents(2);
+    const vtkIdType tuples = 1000000 + 1000 * update;
+    vtkBoostedLargeArrays::SetNumberOfTuples(points, tuples);
+    vtkBoostedLargeArrays::SetNumberOfTuples(normals, tuples);
+    vtkBoostedLargeArrays::SetNumberOfTuples(tcoords, tuples);
+    for (vtkIdType i = 0; i < 3 * tuples; ++i)
+    {
+      points->SetValue(i, 1.0);
+      normals->SetValue(i, 2.0);
+    }
+    for (vtkIdType i = 0; i < 2 * tuples; ++i)
+    {
+      tcoords->SetValue(i, 3.0f);
+    }
+    const std::set<const void*> these = { points->GetVoidPointer(0), normals->GetVoidPointer(0),
+      tcoords->GetVoidPointer(0) };
+    if (update == 0)
+    {
+      before = residentBytes();
+    }
+    else
+    {
+      // The last update's mappings again (their sizes within a quarter of these).
+      EXPECT_EQ(these, last) << "update " << update;
+    }
+    last = these;
+    lastPoints = points->GetVoidPointer(0);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(lastPoints) % HugePage, 0u);
+  }
+  // 56 MB written per update: forty of them kept would be 2.2 GB.
+  EXPECT_LT(residentBytes(), before + (std::size_t(16) << 20));
+  // The three freed mappings kept (25 MB twice and 8.3 MB, in whole 2 MiB pages).
+  EXPECT_EQ(vtkBoostedLargeArrays::CachedMemory(), std::size_t(2 * 12 + 4) * HugePage);
+  if (kernelHasHugePages())
+  {
+    EXPECT_FALSE(mappingFlags(lastPoints, 1).empty()) << "kept, still mapped";
+  }
+  vtkBoostedLargeArrays::ReleaseCached();
+  EXPECT_EQ(vtkBoostedLargeArrays::CachedMemory(), 0u);
+  if (kernelHasHugePages())
+  {
+    EXPECT_TRUE(mappingFlags(lastPoints, 1).empty()) << "given back, still mapped";
+  }
+
+  // Freed beyond the bound: the oldest are given back, never more than CachedBytes kept.
+  {
+    std::vector<vtkBoostedLargeArrays::Buffer<char>> buffers;
+    const std::size_t size = vtkBoostedLargeArrays::DefaultCacheLimit / 3;
+    for (int i = 0; i < 5; ++i)
+    {
+      buffers.push_back(vtkBoostedLargeArrays::New<char>(size));
+    }
+    const void* oldest = buffers.front().get();
+    buffers.clear(); // freed in order, oldest first
+    EXPECT_LE(vtkBoostedLargeArrays::CachedMemory(), vtkBoostedLargeArrays::DefaultCacheLimit);
+    EXPECT_GE(vtkBoostedLargeArrays::CachedMemory(), 2 * size);
+    if (kernelHasHugePages())
+    {
+      EXPECT_TRUE(mappingFlags(oldest, 1).empty()) << "the oldest is still mapped";
+    }
+    // A much smaller request does not take a kept mapping of more than a quarter above it.
+    const std::size_t kept = vtkBoostedLargeArrays::CachedMemory();
+    vtkBoostedLargeArrays::Buffer<char> small = vtkBoostedLargeArrays::New<char>(size / 2);
+    EXPECT_EQ(vtkBoostedLargeArrays::CachedMemory(), kept);
+  }
+  vtkBoostedLargeArrays::ReleaseCached();
+
+  // No cache: every freed mapping given back at once.
+  vtkBoostedLargeArrays::SetCacheLimit(0);
+  EXPECT_EQ(vtkBoostedLargeArrays::GetCacheLimit(), 0u);
+  {
+    const void* memory = vtkBoostedLargeArrays::New<char>(vtkBoostedLargeArrays::LargeBytes).get();
+    EXPECT_EQ(vtkBoostedLargeArrays::CachedMemory(), 0u);
+    if (kernelHasHugePages())
+    {
+      EXPECT_TRUE(mappingFlags(memory, 1).empty()) << "kept without a cache";
+    }
+  }
+  vtkBoostedLargeArrays::SetCacheLimit(vtkBoostedLargeArrays::DefaultCacheLimit);
+
+  // A buffer from malloc (under LargeBytes) and one of its own mapping, both released.
+  vtkBoostedLargeArrays::Buffer<double> small = vtkBoostedLargeArrays::New<double>(100);
+  vtkBoostedLargeArrays::Buffer<double> large =
+    vtkBoostedLargeArrays::New<double>(vtkBoostedLargeArrays::LargeBytes / 8);
+  small[99] = 1.0;
+  large[vtkBoostedLargeArrays::LargeBytes / 8 - 1] = 2.0;
+  EXPECT_EQ(small[99] + large[vtkBoostedLargeArrays::LargeBytes / 8 - 1], 3.0);
+  vtkBoostedLargeArrays::Release(nullptr); // nothing
+}
+#endif
 
 TEST(LargeArrays, ImpossibleSizesAreRefusedBeforeAllocating)
 {
