@@ -1,11 +1,14 @@
 #include "vtkBoostedLargeArrays.h"
 
+#include "vtkBoostedMemoryBudget.h"
 #include "vtkDataArray.h"
+#include "vtkSetGet.h" // vtkGenericWarningMacro
 
 #include <cstdint>       // std::uintptr_t
 #include <deque>         // the kept mappings
 #include <cstdlib>       // malloc, free
 #include <mutex>         // the mappings' lock
+#include <string>        // the environment's value
 #include <unordered_map> // the mappings' lengths
 #include <utility>       // std::pair
 
@@ -18,6 +21,29 @@ namespace
 constexpr std::size_t HugePage = std::size_t(2) << 20;
 
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
+// The cache's limit: BOOSTEDSURFACES_ARRAY_CACHE when set and not empty, otherwise the default.
+std::size_t limitFromEnvironment()
+{
+  const char* text = std::getenv(vtkBoostedLargeArrays::CacheEnvironmentVariable);
+  if (!text || !*text)
+  {
+    return vtkBoostedLargeArrays::DefaultCacheLimit;
+  }
+  const std::string value(text);
+  if (value.find_first_not_of("0. \t") == std::string::npos && value.find('0') != std::string::npos)
+  {
+    return 0; // "0", "0.0": no cache
+  }
+  const double bytes = vtkBoostedMemoryBudget::Parse(value);
+  if (!(bytes >= 0.0) || bytes > 0x1p62)
+  {
+    vtkGenericWarningMacro(<< vtkBoostedLargeArrays::CacheEnvironmentVariable << "=\"" << value
+                           << "\" is not a size: freed large arrays are not kept.");
+    return 0;
+  }
+  return static_cast<std::size_t>(bytes);
+}
+
 // The length of each mapping Allocate handed out, by its start, and the mappings freed and kept
 // for the next allocations (oldest first, at most CachedBytes in all).
 struct Mappings
@@ -26,7 +52,7 @@ struct Mappings
   std::unordered_map<void*, std::size_t> Lengths;
   std::deque<std::pair<void*, std::size_t>> Cached;
   std::size_t CachedBytes = 0;
-  std::size_t Limit = vtkBoostedLargeArrays::DefaultCacheLimit;
+  std::size_t Limit = limitFromEnvironment();
 
   // Gives back the oldest kept mappings beyond the limit (under the lock).
   void trim()

@@ -48,6 +48,12 @@ public:
   /// Freed mappings kept for the next allocations, in all at most this many bytes by default.
   static constexpr std::size_t DefaultCacheLimit = std::size_t(256) << 20;
 
+  /// The environment variable that sets the cache's limit, read once (at the first large
+  /// allocation or the first call here): a size as BOOSTEDSURFACES_MEMORY_BUDGET reads it
+  /// ("512M", "1GiB", "3e8") or 0 for no cache; a value that cannot be read is warned about and
+  /// turns the cache off.
+  static constexpr const char* CacheEnvironmentVariable = "BOOSTEDSURFACES_ARRAY_CACHE";
+
   /// The most bytes of freed mappings kept (0: none, every freed mapping given back at once);
   /// lowering it gives back the oldest kept ones beyond it.
   static void SetCacheLimit(std::size_t bytes);

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <new>
@@ -22,6 +23,10 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#if defined(__linux__)
+#include <sys/mman.h> // MADV_HUGEPAGE: the systems with the cache
+#endif
 
 namespace
 {
@@ -260,6 +265,34 @@ TEST(LargeArrays, FreedArraysAreKeptForTheNextUpdateWithinABoundAndGivenBack)
   large[vtkBoostedLargeArrays::LargeBytes / 8 - 1] = 2.0;
   EXPECT_EQ(small[99] + large[vtkBoostedLargeArrays::LargeBytes / 8 - 1], 3.0);
   vtkBoostedLargeArrays::Release(nullptr); // nothing
+}
+#endif
+
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+namespace
+{
+// Exits with 0 when the cache's limit, read from `value` at the first use, is `expected`.
+[[noreturn]] void exitWithCacheLimitFor(const char* value, std::size_t expected)
+{
+  setenv(vtkBoostedLargeArrays::CacheEnvironmentVariable, value, 1);
+  std::exit(vtkBoostedLargeArrays::GetCacheLimit() == expected ? 0 : 1);
+}
+} // namespace
+
+TEST(LargeArrays, TheCacheLimitIsReadFromTheEnvironment)
+{
+  // Each in a process of its own where nothing has allocated yet (the "threadsafe" style runs the
+  // test binary again), since the variable is read once.
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  using testing::ExitedWithCode;
+  EXPECT_EXIT(exitWithCacheLimitFor("512M", std::size_t(512) << 20), ExitedWithCode(0), "");
+  EXPECT_EXIT(exitWithCacheLimitFor("1.5GiB", std::size_t(1536) << 20), ExitedWithCode(0), "");
+  EXPECT_EXIT(exitWithCacheLimitFor("3e8", 300000000), ExitedWithCode(0), "");
+  EXPECT_EXIT(exitWithCacheLimitFor("0", 0), ExitedWithCode(0), "");
+  EXPECT_EXIT(
+    exitWithCacheLimitFor("", vtkBoostedLargeArrays::DefaultCacheLimit), ExitedWithCode(0), "");
+  EXPECT_EXIT(exitWithCacheLimitFor("plenty", 0), ExitedWithCode(0), "is not a size");
+  EXPECT_EXIT(exitWithCacheLimitFor("-5M", 0), ExitedWithCode(0), "is not a size");
 }
 #endif
 
