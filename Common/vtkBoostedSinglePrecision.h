@@ -4,13 +4,15 @@
 #ifndef vtkBoostedSinglePrecision_h
 #define vtkBoostedSinglePrecision_h
 
-#include "vtkDoubleArray.h" // for the points as built
-#include "vtkFloatArray.h"  // for the points as written
+#include "vtkBoostedLargeArrays.h" // for the floats' memory
+#include "vtkDoubleArray.h"        // for the points as built
+#include "vtkFloatArray.h"         // for the points as written
 #include "vtkNew.h"
 #include "vtkPoints.h"
 
 #include <cfloat>  // for FLT_MAX
 #include <cmath>   // for std::fabs
+#include <new>     // for std::bad_alloc
 #include <sstream> // for the message
 #include <string>  // for the problem
 
@@ -51,7 +53,8 @@ inline std::string vtkBoostedSinglePrecisionProblem(double largest, const std::s
 
 /// The last step of single-precision output built in double: converts `points` to floats, or
 /// returns the error (`name` names them; the points are left as they are) when a coordinate is
-/// beyond the largest float. Points that are not doubles are left as they are.
+/// beyond the largest float or the floats cannot be allocated. Points that are not doubles are
+/// left as they are.
 inline std::string vtkBoostedPointsToSinglePrecision(
   vtkPoints* points, const std::string& name = "the points")
 {
@@ -64,8 +67,25 @@ inline std::string vtkBoostedPointsToSinglePrecision(
     vtkBoostedLargestFinite(values->GetPointer(0), 3 * values->GetNumberOfTuples()), name);
   if (problem.empty())
   {
+    // In the project's large arrays (vtkBoostedLargeArrays: huge pages, kept for the next update),
+    // not DeepCopy's new memory.
     vtkNew<vtkFloatArray> floats;
-    floats->DeepCopy(values);
+    floats->SetName(values->GetName());
+    floats->SetNumberOfComponents(3);
+    try
+    {
+      vtkBoostedLargeArrays::SetNumberOfTuples(floats, values->GetNumberOfTuples());
+    }
+    catch (const std::bad_alloc&)
+    {
+      return "not enough memory for " + name + " in single precision; the output is empty";
+    }
+    const double* from = values->GetPointer(0);
+    float* to = floats->GetPointer(0);
+    for (vtkIdType i = 0; i < 3 * values->GetNumberOfTuples(); ++i)
+    {
+      to[i] = static_cast<float>(from[i]);
+    }
     points->SetData(floats);
   }
   return problem;

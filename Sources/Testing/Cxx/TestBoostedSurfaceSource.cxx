@@ -7,6 +7,8 @@
 #include "TranslationChecks.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -298,6 +300,28 @@ TEST(BoostedSurfaceSource, SinglePrecisionOutput)
   source->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
   source->Update();
   EXPECT_EQ(source->GetOutput()->GetPoints()->GetDataType(), VTK_DOUBLE);
+
+  // Large enough for the floats to be one of the project's large arrays (over 4 MiB): each the
+  // double point rounded to float.
+  source->SetLambdaResolution(599);
+  source->SetThetaResolution(599);
+  source->Update();
+  vtkNew<vtkDoubleArray> doubles;
+  doubles->DeepCopy(source->GetOutput()->GetPoints()->GetData());
+  source->SetOutputPointsPrecision(vtkAlgorithm::SINGLE_PRECISION);
+  source->Update();
+  vtkFloatArray* floats =
+    vtkFloatArray::SafeDownCast(source->GetOutput()->GetPoints()->GetData());
+  ASSERT_NE(floats, nullptr);
+  ASSERT_EQ(floats->GetNumberOfTuples(), doubles->GetNumberOfTuples());
+  ASSERT_GT(floats->GetNumberOfValues() * sizeof(float), std::size_t(4) << 20); // LargeBytes
+  const double* expected = doubles->GetPointer(0);
+  vtkIdType differing = 0;
+  for (vtkIdType i = 0; i < floats->GetNumberOfValues(); ++i)
+  {
+    differing += floats->GetValue(i) == static_cast<float>(expected[i]) ? 0 : 1;
+  }
+  EXPECT_EQ(differing, 0);
 }
 
 TEST(BoostedSurfaceSource, BadParametersGiveAnErrorAndAnEmptyOutput)
