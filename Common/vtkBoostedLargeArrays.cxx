@@ -13,6 +13,7 @@
 #include <utility>       // std::pair
 
 #if defined(__linux__)
+#include <pthread.h>  // pthread_atfork
 #include <sys/mman.h> // mmap, munmap, madvise
 #endif
 
@@ -66,10 +67,28 @@ struct Mappings
   }
 };
 
+Mappings& mappings();
+
+// fork() with the lock held by another thread would leave the child's lock held for ever: the
+// lock is taken around every fork and released on both sides.
+void lockForFork()
+{
+  mappings().Lock.lock();
+}
+
+void unlockAfterFork()
+{
+  mappings().Lock.unlock();
+}
+
 Mappings& mappings()
 {
   // Never destroyed: arrays may be freed by other static objects' destructors at exit.
-  static Mappings* const all = new Mappings;
+  static Mappings* const all = [] {
+    Mappings* made = new Mappings;
+    pthread_atfork(lockForFork, unlockAfterFork, unlockAfterFork);
+    return made;
+  }();
   return *all;
 }
 

@@ -14,6 +14,9 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
+#include <csignal>
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
@@ -22,10 +25,13 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #if defined(__linux__)
-#include <sys/mman.h> // MADV_HUGEPAGE: the systems with the cache
+#include <sys/mman.h>  // MADV_HUGEPAGE: the systems with the cache
+#include <sys/wait.h>  // waitpid
+#include <unistd.h>    // fork
 #endif
 
 namespace
@@ -293,6 +299,62 @@ TEST(LargeArrays, TheCacheLimitIsReadFromTheEnvironment)
     exitWithCacheLimitFor("", vtkBoostedLargeArrays::DefaultCacheLimit), ExitedWithCode(0), "");
   EXPECT_EXIT(exitWithCacheLimitFor("plenty", 0), ExitedWithCode(0), "is not a size");
   EXPECT_EXIT(exitWithCacheLimitFor("-5M", 0), ExitedWithCode(0), "is not a size");
+}
+#endif
+
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+TEST(LargeArrays, AForkWhileAnotherThreadAllocatesLeavesTheChildAbleToAllocate)
+{
+  // One thread allocates and frees without pause while this one forks; each child allocates,
+  // writes and frees a large array and exits (a lock left held would hang it: the parent waits
+  // with a timeout and kills it).
+  std::atomic<bool> stop{ false };
+  std::thread churn([&] {
+    while (!stop)
+    {
+      vtkBoostedLargeArrays::Buffer<char> buffer =
+        vtkBoostedLargeArrays::New<char>(vtkBoostedLargeArrays::LargeBytes);
+      buffer[0] = 1;
+    }
+  });
+  int hung = 0, failed = 0;
+  for (int i = 0; i < 20; ++i)
+  {
+    const pid_t child = fork();
+    if (child == 0)
+    {
+      vtkBoostedLargeArrays::Buffer<char> buffer =
+        vtkBoostedLargeArrays::New<char>(2 * vtkBoostedLargeArrays::LargeBytes);
+      buffer[2 * vtkBoostedLargeArrays::LargeBytes - 1] = 1;
+      buffer.reset();
+      _exit(0);
+    }
+    ASSERT_GT(child, 0);
+    int status = 0;
+    pid_t done = 0;
+    for (int wait = 0; wait < 500 && done == 0; ++wait) // 5 s
+    {
+      done = waitpid(child, &status, WNOHANG);
+      if (done == 0)
+      {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      }
+    }
+    if (done == 0)
+    {
+      ++hung;
+      kill(child, SIGKILL);
+      waitpid(child, &status, 0);
+    }
+    else if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    {
+      ++failed;
+    }
+  }
+  stop = true;
+  churn.join();
+  EXPECT_EQ(hung, 0);
+  EXPECT_EQ(failed, 0);
 }
 #endif
 
