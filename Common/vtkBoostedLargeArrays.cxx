@@ -5,8 +5,8 @@
 #include "vtkSetGet.h" // vtkGenericWarningMacro
 
 #include <cstdint>       // std::uintptr_t
-#include <deque>         // the kept mappings
 #include <cstdlib>       // malloc, free
+#include <deque>         // the kept mappings
 #include <mutex>         // the mappings' lock
 #include <string>        // the environment's value
 #include <unordered_map> // the mappings' lengths
@@ -46,7 +46,7 @@ std::size_t limitFromEnvironment()
 }
 
 // The length of each mapping Allocate handed out, by its start, and the mappings freed and kept
-// for the next allocations (oldest first, at most CachedBytes in all).
+// for the next allocations (oldest first, CachedBytes of them, at most Limit).
 struct Mappings
 {
   std::mutex Lock;
