@@ -127,7 +127,7 @@ bool vtkBoostedGridDriver::SampleGrid(const std::function<void(int, int)>& sampl
   });
 }
 
-bool vtkBoostedGridDriver::SampleColumns(const std::function<void(int, int, int)>& sample)
+bool vtkBoostedGridDriver::SampleColumns(const std::function<void(int, int, int, int)>& sample)
 {
   vtkBoostedGridBuilder* grid = this->Builder.get();
   const int firstRow = this->SampleFirst, lastRow = this->SampleLast;
@@ -137,9 +137,10 @@ bool vtkBoostedGridDriver::SampleColumns(const std::function<void(int, int, int)
       {
         grid->ClearSamples(r, static_cast<int>(first), static_cast<int>(last));
       }
-      for (vtkIdType c = first; c < last; ++c)
+      for (vtkIdType c = first; c < last; c += ColumnsPerRun)
       {
-        sample(static_cast<int>(c), firstRow, lastRow);
+        sample(static_cast<int>(c), static_cast<int>(std::min<vtkIdType>(last, c + ColumnsPerRun)),
+          firstRow, lastRow);
       }
     });
 }

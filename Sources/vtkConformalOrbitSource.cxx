@@ -393,21 +393,6 @@ int vtkConformalOrbitSource::RequestData(
     // outside it). Elsewhere such a sample is dropped without loss (an orbit through infinity).
     std::atomic<long long> uncut{ 0 };
     const cga::Vec3 clipCenter = cga::toVec3(this->ClipCenter);
-    // Whether seed r's image under `neighbour` (column c's map, made at the first call of a
-    // column's chunk: only samples that are dropped ask) is inside the clip sphere.
-    auto insideAt = [&](int r, int c, std::unique_ptr<cga::PointMap>& neighbour) {
-      if (c < 0 || c >= columns)
-      {
-        return false;
-      }
-      if (!neighbour)
-      {
-        neighbour.reset(new cga::PointMap(orbit.versor(ts[c])));
-      }
-      cga::Vec3 p;
-      return neighbour->apply(seeds[r] - center, p) &&
-        cga::norm(p + center - clipCenter) <= this->ClipRadius;
-    };
     // A seed whose conformal point overflows (about 1e154 from the generators' center) has no
     // orbit to give: its samples stay NaN and are dropped, with a warning of their own.
     std::vector<char> farSeed(seeds.size());
@@ -417,35 +402,87 @@ int vtkConformalOrbitSource::RequestData(
       farSeed[r] = !std::isfinite(cga::norm2(seeds[r] - center)); // up(p)'s |p|^2 / 2
       farSeeds += farSeed[r];
     }
-    driver.SampleColumns([&](int c, int firstRow, int lastRow) {
-      const cga::PointMap map(orbit.versor(ts[c]));
-      const std::array<double, 25>& entries = map.matrix();
-      if (!std::all_of(entries.begin(), entries.end(), [](double v) { return std::isfinite(v); }))
+    driver.SampleColumns([&](int firstColumn, int lastColumn, int firstRow, int lastRow) {
+      // One map per column, then each row's run of columns in order (the grid is row-major: a
+      // column at a time would store one point per row, each in another cache line).
+      std::vector<cga::PointMap> maps;
+      std::vector<char> finiteMap;
+      maps.reserve(static_cast<size_t>(lastColumn - firstColumn));
+      long long overflowedHere = 0;
+      for (int c = firstColumn; c < lastColumn; ++c)
       {
-        overflowed += lastRow - firstRow + 1; // t B itself overflows: no image to give
-        return;
+        maps.emplace_back(orbit.versor(ts[c]));
+        const std::array<double, 25>& entries = maps.back().matrix();
+        finiteMap.push_back(
+          std::all_of(entries.begin(), entries.end(), [](double v) { return std::isfinite(v); }));
+        if (!finiteMap.back())
+        {
+          overflowedHere += lastRow - firstRow + 1; // t B itself overflows: no image to give
+        }
       }
+      // Column c's map; the columns next to the run are made when a dropped sample asks.
+      std::unique_ptr<cga::PointMap> before, after;
+      auto mapAt = [&](int c) -> const cga::PointMap* {
+        if (c < 0 || c >= columns)
+        {
+          return nullptr;
+        }
+        if (c >= firstColumn && c < lastColumn)
+        {
+          return &maps[static_cast<size_t>(c - firstColumn)];
+        }
+        std::unique_ptr<cga::PointMap>& made = c < firstColumn ? before : after;
+        if (!made)
+        {
+          made.reset(new cga::PointMap(orbit.versor(ts[c])));
+        }
+        return made.get();
+      };
+      // Whether seed r's image at column c is inside the clip sphere.
+      auto insideAt = [&](int r, int c) {
+        const cga::PointMap* neighbour = mapAt(c);
+        cga::Vec3 p;
+        return neighbour && neighbour->apply(seeds[r] - center, p) &&
+          cga::norm(p + center - clipCenter) <= this->ClipRadius;
+      };
       long long lost = 0;
-      std::unique_ptr<cga::PointMap> previous, next; // columns c - 1 and c + 1, made when needed
       for (int r = firstRow; r <= lastRow; ++r)
       {
-        cga::Vec3 p;
         if (farSeed[r])
         {
           continue;
         }
-        if (map.apply(seeds[r] - center, p)) // false: at infinity; left NaN and dropped
+        const cga::Vec3 seed = seeds[r] - center;
+        for (int c = firstColumn; c < lastColumn; ++c)
         {
-          const cga::Vec3 q = p + center;
-          const double xyz[3] = { q.x, q.y, q.z };
-          grid.SetPoint(r, c, xyz);
-        }
-        else if (insideAt(r, c - 1, previous) || insideAt(r, c + 1, next))
-        {
-          ++lost;
+          const size_t k = static_cast<size_t>(c - firstColumn);
+          cga::Vec3 p;
+          if (!finiteMap[k])
+          {
+            continue;
+          }
+          if (maps[k].apply(seed, p)) // false: at infinity; left NaN and dropped
+          {
+            const cga::Vec3 q = p + center;
+            const double xyz[3] = { q.x, q.y, q.z };
+            grid.SetPoint(r, c, xyz);
+          }
+          else if (insideAt(r, c - 1) || insideAt(r, c + 1))
+          {
+            ++lost;
+          }
         }
       }
-      uncut += lost;
+      // Shared atomics, touched only when needed (every run touching them kept the two threads
+      // passing their cache line back and forth).
+      if (lost > 0)
+      {
+        uncut += lost;
+      }
+      if (overflowedHere > 0)
+      {
+        overflowed += overflowedHere;
+      }
     });
     std::vector<int> ids(seeds.size());
     std::iota(ids.begin(), ids.end(), 0);
