@@ -394,9 +394,10 @@ TEST(PointPairField, DisplacementsAreTheImagesLessThePointsInEveryPrecision)
 }
 
 // Double points go through the kernel's own block with displacements (kernel::MapDisplacedBlock)
-// in whole blocks, the rest (the last partial block, the tree) through the lanes' generic pass:
-// both give mapPoints' images and out - in on every instruction set, also in place (out = in),
-// with points that are not finite inside whole blocks and in the last one.
+// in whole blocks (for Paper on AVX-512 two at a time, kernel::MapDisplacedWideBlock, then one),
+// the rest (the last partial block, the tree) through the lanes' generic pass: all give
+// mapPoints' images and out - in on every instruction set, also in place (out = in), with points
+// that are not finite inside whole blocks and in the last one.
 TEST(PointPairField, DisplacementsOfWholeBlocksOnEveryInstructionSetAndInPlace)
 {
   Random random(77);
@@ -404,13 +405,13 @@ TEST(PointPairField, DisplacementsOfWholeBlocksOnEveryInstructionSetAndInPlace)
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<double> points;
-  for (int i = 0; i < 3 * 37; ++i) // 37 points: four whole blocks and 5
+  for (int i = 0; i < 3 * 45; ++i) // 45 points: five whole blocks (two wide ones and one) and 5
   {
     points.push_back(random.uniform(-2.0, 2.0));
   }
   points[3 * 8] = nan;       // point 8, the first of the second block
   points[3 * 23 + 1] = inf;  // point 23, the last of the third block
-  points[3 * 35 + 2] = -inf; // point 35, in the last partial block
+  points[3 * 43 + 2] = -inf; // point 43, in the last partial block
   const std::string active = mapPointsInstructionSet();
   for (const std::string& isa : mapPointsInstructionSets())
   {
@@ -426,10 +427,10 @@ TEST(PointPairField, DisplacementsOfWholeBlocksOnEveryInstructionSetAndInPlace)
         checkDisplacements<double, double>(field, points, 0.7, rule, 3, 3, 0);
         std::vector<double> out(points.size()), displacements(points.size());
         field.mapPointsWithDisplacements(
-          points.data(), out.data(), displacements.data(), 37, 0.7, rule);
+          points.data(), out.data(), displacements.data(), 45, 0.7, rule);
         std::vector<double> inPlace = points, inPlaceDisplacements(points.size());
         const PointPairField::DisplacementCounts counts = field.mapPointsWithDisplacements(
-          inPlace.data(), inPlace.data(), inPlaceDisplacements.data(), 37, 0.7, rule);
+          inPlace.data(), inPlace.data(), inPlaceDisplacements.data(), 45, 0.7, rule);
         EXPECT_EQ(counts.unchanged, 3u);
         EXPECT_EQ(counts.notFinite, 3u);
         EXPECT_EQ(std::memcmp(inPlace.data(), out.data(), out.size() * sizeof(double)), 0);

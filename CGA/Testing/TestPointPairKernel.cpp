@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
@@ -450,5 +451,87 @@ TEST(PointPairKernel, PairDifferenceIsTheGivenDoublesWhereverTheCenterIs)
       RecordProperty("worst_" + set + (far ? "_far" : "_near_origin"), std::to_string(worst));
     }
   }
+}
+} // namespace
+
+namespace
+{
+// The wide block (kernel::MapDisplacedWideBlock, AVX-512 only) is the same source on kWideLanes
+// lanes: each point's image, displacement, mapped flag and the count of images beyond range are
+// those of two calls of the instruction set's MapDisplacedBlock, for both rules (only Paper uses
+// it), random fields with raw bivectors, points on a generator, NaN and infinite points, huge
+// weights, also in place.
+TEST(PointPairKernel, TheWideBlockGivesTheBitsOfTwoBlocks)
+{
+  InstructionSetScope scope;
+  constexpr int L = kernel::kLanes, W = kernel::kWideLanes, kStride = kernel::kGeneratorStride;
+  int wideSets = 0;
+  for (const std::string& set : kernel::availableInstructionSets())
+  {
+    ASSERT_TRUE(kernel::useInstructionSet(set));
+    const kernel::MapDisplacedWideBlock wide = kernel::activeMapDisplacedWideBlock();
+    EXPECT_EQ(wide != nullptr, set == "avx512") << set;
+    if (!wide)
+    {
+      continue;
+    }
+    ++wideSets;
+    const kernel::MapDisplacedBlock single = kernel::activeMapDisplacedBlock();
+    Random random(84);
+    for (int trial = 0; trial < 200; ++trial)
+    {
+      const int generatorCount = 1 + trial % 7;
+      const double weightScale = trial % 10 == 9 ? 1e150 : 1.0;
+      std::vector<double> generators;
+      for (int i = 0; i < generatorCount; ++i)
+      {
+        const Vec3 x = random.vec3(1.5);
+        generators.insert(generators.end(), { x.x, x.y, x.z });
+        for (int c = 0; c < kStride - 3; ++c)
+        {
+          generators.push_back(weightScale * random.uniform(-2.0, 2.0));
+        }
+      }
+      kernel::FieldArgs args;
+      args.generators = generators.data();
+      args.generatorCount = static_cast<std::size_t>(generatorCount);
+      args.falloff = random.uniform(0.0, 3.0);
+      args.epsilon = random.uniform(1e-3, 0.5);
+      args.strength = random.uniform(-2.0, 2.0);
+      args.exactRule = trial % 2 == 0;
+      const double center[3] = { 0.1, -0.2, 0.05 };
+      std::vector<double> points(3 * W);
+      for (double& v : points)
+      {
+        v = random.uniform(-2.0, 2.0);
+      }
+      // On a generator (relative to the center), and not finite, in either half.
+      for (int k = 0; k < 3; ++k)
+      {
+        points[3 * (trial % W) + k] = generators[k] + center[k];
+      }
+      points[3 * ((trial + 5) % W)] = kNaN;
+      points[3 * ((trial + 11) % W) + 2] = trial % 3 ? kInf : -kInf;
+      std::vector<double> wideOut(3 * W), wideShift(3 * W), out(3 * W), shift(3 * W);
+      std::uint8_t wideMapped[W], mapped[W];
+      const int wideBeyond =
+        wide(args, center, points.data(), wideOut.data(), wideShift.data(), wideMapped);
+      const int beyond =
+        single(args, center, points.data(), out.data(), shift.data(), mapped) +
+        single(args, center, points.data() + 3 * L, out.data() + 3 * L, shift.data() + 3 * L,
+          mapped + L);
+      const std::string label = "trial " + std::to_string(trial);
+      EXPECT_EQ(wideBeyond, beyond) << label;
+      EXPECT_EQ(std::memcmp(wideOut.data(), out.data(), out.size() * sizeof(double)), 0) << label;
+      EXPECT_EQ(std::memcmp(wideShift.data(), shift.data(), shift.size() * sizeof(double)), 0)
+        << label;
+      EXPECT_EQ(std::memcmp(wideMapped, mapped, W), 0) << label;
+      // In place, images only.
+      std::vector<double> inPlace = points;
+      wide(args, center, inPlace.data(), inPlace.data(), nullptr, wideMapped);
+      EXPECT_EQ(std::memcmp(inPlace.data(), out.data(), out.size() * sizeof(double)), 0) << label;
+    }
+  }
+  RecordProperty("instruction_sets_with_a_wide_block", wideSets);
 }
 } // namespace

@@ -456,24 +456,26 @@ bool finite3(double x, double y, double z)
 
 // mapPointsWithDisplacements' and mapPoints' whole blocks of double points, each in one call of
 // the kernel (kernel::MapDisplacedBlock: the images and displacements in its registers instead of
-// a pass of scalar code per point; displacements null: the images only). Returns the points done:
-// count less its last partial block.
+// a pass of scalar code per point; displacements null: the images only), two blocks a call where
+// the instruction set has a wide block for the rule (kernel::MapDisplacedWideBlock). Returns the
+// points done: count less its last partial block.
 std::size_t mapWholeBlocks(const kernel::FieldArgs& args, Vec3 c,
   const double* in, double* out, double* displacements, std::size_t count,
   BlockDisplacementCounts& counts)
 {
-  constexpr std::size_t L = kernel::kLanes;
+  constexpr std::size_t L = kernel::kLanes, W = kernel::kWideLanes;
   const kernel::MapDisplacedBlock mapBlock = kernel::activeMapDisplacedBlock();
+  const kernel::MapDisplacedWideBlock mapWideBlock =
+    args.exactRule ? nullptr : kernel::activeMapDisplacedWideBlock();
   const double center[3] = { c.x, c.y, c.z };
-  std::uint8_t mapped[L];
+  std::uint8_t mapped[W];
   const std::size_t whole = count - count % L;
-  for (std::size_t first = 0; first < whole; first += L)
-  {
+  auto mapFrom = [&](std::size_t first, kernel::MapDisplacedBlock map, std::size_t lanes) {
     double* o = out + 3 * first;
     counts.beyondRange += static_cast<std::size_t>(
-      mapBlock(args, center, in + 3 * first, o, displacements ? displacements + 3 * first : nullptr,
+      map(args, center, in + 3 * first, o, displacements ? displacements + 3 * first : nullptr,
         mapped));
-    for (std::size_t l = 0; l < L; ++l)
+    for (std::size_t l = 0; l < lanes; ++l)
     {
       // A point left in place: not finite, or its image is not (then a finite point).
       if (!mapped[l])
@@ -482,6 +484,18 @@ std::size_t mapWholeBlocks(const kernel::FieldArgs& args, Vec3 c,
         counts.notFinite += finite3(o[3 * l], o[3 * l + 1], o[3 * l + 2]) ? 0 : 1;
       }
     }
+  };
+  std::size_t first = 0;
+  if (mapWideBlock)
+  {
+    for (; first + W <= whole; first += W)
+    {
+      mapFrom(first, mapWideBlock, W);
+    }
+  }
+  for (; first < whole; first += L)
+  {
+    mapFrom(first, mapBlock, L);
   }
   return whole;
 }

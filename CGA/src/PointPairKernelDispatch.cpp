@@ -21,6 +21,7 @@ struct Candidate
   MapBlockDirectional blockDirectional;
   AddFieldBlock addField;
   MapDisplacedBlock displacedBlock;
+  MapDisplacedWideBlock displacedWideBlock; // null: none
   bool (*supported)();
 };
 
@@ -46,12 +47,14 @@ bool hasAvx512()
 const Candidate kCandidates[] = {
   { "baseline", &baseline::mapBlock, &baseline::mapBlockBy, &baseline::mapBlockJacobian,
     &baseline::mapBlockDirectional, &baseline::addFieldBlock, &baseline::mapDisplacedBlock,
-    &always },
+    nullptr, &always },
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
   { "avx2", &avx2::mapBlock, &avx2::mapBlockBy, &avx2::mapBlockJacobian,
-    &avx2::mapBlockDirectional, &avx2::addFieldBlock, &avx2::mapDisplacedBlock, &hasAvx2 },
+    &avx2::mapBlockDirectional, &avx2::addFieldBlock, &avx2::mapDisplacedBlock, nullptr,
+    &hasAvx2 },
   { "avx512", &avx512::mapBlock, &avx512::mapBlockBy, &avx512::mapBlockJacobian,
-    &avx512::mapBlockDirectional, &avx512::addFieldBlock, &avx512::mapDisplacedBlock, &hasAvx512 },
+    &avx512::mapBlockDirectional, &avx512::addFieldBlock, &avx512::mapDisplacedBlock,
+    &avx512wide::mapDisplacedBlock, &hasAvx512 },
 #endif
 };
 constexpr int kCandidateCount = sizeof(kCandidates) / sizeof(kCandidates[0]);
@@ -121,6 +124,10 @@ MapDisplacedBlock activeMapDisplacedBlock()
   return kCandidates[choice().load(std::memory_order_relaxed)].displacedBlock;
 }
 
+MapDisplacedWideBlock activeMapDisplacedWideBlock()
+{
+  return kCandidates[choice().load(std::memory_order_relaxed)].displacedWideBlock;
+}
 AddFieldBlock activeAddFieldBlock()
 {
   return kCandidates[choice().load(std::memory_order_relaxed)].addField;

@@ -21,6 +21,8 @@ AddFieldBlock activeAddFieldBlock();
 /// code compiled for the baseline makes.
 void activeFieldBivector(const FieldArgs& args, const double* p, double scale, double* b);
 MapDisplacedBlock activeMapDisplacedBlock();
+/// The active instruction set's MapDisplacedWideBlock, or null where it has none (all but AVX-512).
+MapDisplacedWideBlock activeMapDisplacedWideBlock();
 std::vector<std::string> availableInstructionSets();
 std::string activeInstructionSet();
 bool useInstructionSet(const std::string& name);

@@ -22,7 +22,13 @@ namespace BOOSTED_KERNEL_ISA
 {
 namespace
 {
+// Lanes per block: kLanes, or kWideLanes where the including file asks for the wide block
+// (BOOSTED_KERNEL_WIDE: only mapDisplacedBlock, on two registers per value).
+#ifdef BOOSTED_KERNEL_WIDE
+constexpr int L = kWideLanes;
+#else
 constexpr int L = kLanes;
+#endif
 
 // kLanes doubles as one value, made of registers of the target's width (the including file sets
 // BOOSTED_KERNEL_VECTOR_BYTES: 64 for AVX-512, 32 for AVX2, 16 otherwise). GCC/Clang vector
@@ -367,6 +373,7 @@ namespace kernel
 {
 namespace BOOSTED_KERNEL_ISA
 {
+#ifndef BOOSTED_KERNEL_WIDE
 void mapBlock(const FieldArgs& args, const double* xyz, double* image, std::uint8_t* mapped)
 {
   LaneVector p[3], out[3];
@@ -385,6 +392,8 @@ void mapBlock(const FieldArgs& args, const double* xyz, double* image, std::uint
     mapped[l] = ok[l] ? 1 : 0;
   }
 }
+#endif
+
 int mapDisplacedBlock(const FieldArgs& args, const double* center, const double* points,
   double* out, double* displacements, std::uint8_t* mapped)
 {
@@ -449,6 +458,7 @@ int mapDisplacedBlock(const FieldArgs& args, const double* center, const double*
   return beyondRange;
 }
 
+#ifndef BOOSTED_KERNEL_WIDE
 void addFieldBlock(const FieldArgs& args, const double* xyz, double* bivectors)
 {
   LaneVector p[3], b[core::kBivector];
@@ -544,6 +554,7 @@ void mapBlockDirectional(const FieldArgs& args, const double* xyz, const double*
 {
   mapBlockTangents<kDirections>(args, xyz, directions, image, derivatives, mapped);
 }
+#endif // BOOSTED_KERNEL_WIDE
 } // namespace BOOSTED_KERNEL_ISA
 } // namespace kernel
 } // namespace cga
