@@ -394,7 +394,7 @@ TEST(PointPairField, DisplacementsAreTheImagesLessThePointsInEveryPrecision)
 }
 
 // Double points go through the kernel's own block with displacements (kernel::MapDisplacedBlock)
-// in whole blocks (for Paper on AVX-512 two at a time, kernel::MapDisplacedWideBlock, then one),
+// in whole blocks (on AVX-512 two at a time, kernel::MapDisplacedWideBlock, then one),
 // the rest (the last partial block, the tree) through the lanes' generic pass: all give
 // mapPoints' images and out - in on every instruction set, also in place (out = in), with points
 // that are not finite inside whole blocks and in the last one.

@@ -458,9 +458,8 @@ namespace
 {
 // The wide block (kernel::MapDisplacedWideBlock, AVX-512 only) is the same source on kWideLanes
 // lanes: each point's image, displacement, mapped flag and the count of images beyond range are
-// those of two calls of the instruction set's MapDisplacedBlock, for both rules (only Paper uses
-// it), random fields with raw bivectors, points on a generator, NaN and infinite points, huge
-// weights, also in place.
+// those of two calls of the instruction set's MapDisplacedBlock, for both rules, random fields
+// with raw bivectors, points on a generator, NaN and infinite points, huge weights, also in place.
 TEST(PointPairKernel, TheWideBlockGivesTheBitsOfTwoBlocks)
 {
   InstructionSetScope scope;

@@ -457,16 +457,15 @@ bool finite3(double x, double y, double z)
 // mapPointsWithDisplacements' and mapPoints' whole blocks of double points, each in one call of
 // the kernel (kernel::MapDisplacedBlock: the images and displacements in its registers instead of
 // a pass of scalar code per point; displacements null: the images only), two blocks a call where
-// the instruction set has a wide block for the rule (kernel::MapDisplacedWideBlock). Returns the
-// points done: count less its last partial block.
+// the instruction set has a wide block (kernel::MapDisplacedWideBlock). Returns the points done:
+// count less its last partial block.
 std::size_t mapWholeBlocks(const kernel::FieldArgs& args, Vec3 c,
   const double* in, double* out, double* displacements, std::size_t count,
   BlockDisplacementCounts& counts)
 {
   constexpr std::size_t L = kernel::kLanes, W = kernel::kWideLanes;
   const kernel::MapDisplacedBlock mapBlock = kernel::activeMapDisplacedBlock();
-  const kernel::MapDisplacedWideBlock mapWideBlock =
-    args.exactRule ? nullptr : kernel::activeMapDisplacedWideBlock();
+  const kernel::MapDisplacedWideBlock mapWideBlock = kernel::activeMapDisplacedWideBlock();
   const double center[3] = { c.x, c.y, c.z };
   std::uint8_t mapped[W];
   const std::size_t whole = count - count % L;

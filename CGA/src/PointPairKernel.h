@@ -100,13 +100,12 @@ using MapDisplacedBlock = int (*)(const FieldArgs& args,
                                   double* displacements,
                                   std::uint8_t* mapped);
 
-/// MapDisplacedBlock on kWideLanes points (the same source, the same bits per point), for the
-/// Paper rule on AVX-512: one block's steps depend on each other (B, its scale, the division, the
+/// MapDisplacedBlock on kWideLanes points (the same source, the same bits per point), on AVX-512:
+/// one block's steps depend on each other (B, its scale, the division, the exponential, the
 /// sandwich, the normalization), and two blocks side by side keep the core busier. Measured on
-/// the reference machine (AMD EPYC Zen 5), 10^6 points, against two calls of MapDisplacedBlock:
-/// Paper 1.10 to 1.27 times the rate at M = 1 to 64; Exact 1.14 times at M = 1 but 0.92 to 0.98
-/// at M = 4 to 64 (its exponential takes the series and the closed form where a block's lanes
-/// differ, more often in sixteen lanes than in eight), hence Paper only.
+/// the reference machine (AMD EPYC Zen 5), 10^6 points, against two calls of MapDisplacedBlock
+/// (a throwaway probe, best of 15): Paper 1.10 to 1.27 times the rate at M = 1 to 64, Exact 1.02
+/// to 1.14 (docs/performance.md, *Two blocks side by side*).
 using MapDisplacedWideBlock = MapDisplacedBlock;
 
 namespace baseline
