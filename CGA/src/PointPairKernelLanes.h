@@ -2,7 +2,7 @@
 // PointPairKernel<Isa>.cpp with BOOSTED_KERNEL_ISA set to that file's namespace.
 //
 // It is core::mapPoint (PointMapCore.h), the source of PointPairField::map(), instantiated for a
-// vector of kLanes doubles: one point per lane.
+// vector of kLanes doubles (kWideLanes for the wide block): one point per lane.
 //
 // Everything here has internal linkage or lives in the ISA's own namespace and calls only
 // builtins and libm: see PointPairKernel.h and PointMapCore.h.
