@@ -13,9 +13,9 @@
 #include <vtkSMPTools.h>
 
 #include <algorithm>
-#include <chrono>
 #include <array>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <fstream>

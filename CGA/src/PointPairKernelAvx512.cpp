@@ -1,9 +1,4 @@
 // The block kernel compiled for avx512 (compile options in CGA/CMakeLists.txt).
-#include <immintrin.h>
-
 #define BOOSTED_KERNEL_ISA avx512
-#define BOOSTED_KERNEL_VECTOR_BYTES 64
-#define BOOSTED_KERNEL_SLEEF(name) Sleef_cinz_##name##d8_u10avx512fnofma
-#define BOOSTED_KERNEL_SQRT _mm512_sqrt_pd
-#define BOOSTED_KERNEL_FMA _mm512_fmadd_pd
+#include "PointPairKernelAvx512Macros.h"
 #include "PointPairKernelLanes.h"
