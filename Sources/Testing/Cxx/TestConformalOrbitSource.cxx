@@ -2,6 +2,7 @@
 // tested against the matrix exponential) and against plain geometry (closure, linking numbers of
 // the output polylines with the output cores, the transversion's closed form), seeds, pieces,
 // degenerate and bad input.
+#include "vtkBoostedGridDriver.h"
 #include "vtkConformalOrbitSource.h"
 
 #include "BadParameterCases.h"
@@ -319,6 +320,28 @@ TEST(ConformalOrbitSource, ADilationBeyondTheDoublesWarnsWhereItCannotBeCut)
       EXPECT_NEAR(largest, source->GetClipRadius(), 1e-12 * source->GetClipRadius());
     }
   }
+}
+
+// The same warning where the sample inside the sphere and the one beyond the doubles fall in two
+// runs of vtkBoostedGridDriver::SampleColumns (columns 63 and 64, t = 0 and 710: e^710 is beyond
+// the largest double), so that the dropped sample's neighbour is a column outside its own run.
+TEST(ConformalOrbitSource, ADroppedSampleLooksAtItsNeighbourInTheRunBefore)
+{
+  constexpr int kRun = vtkBoostedGridDriver::ColumnsPerRun;
+  vtkNew<vtkConformalOrbitSource> source;
+  EventCounter events(source);
+  source->SetGeneratorTypeToGeneratorList();
+  source->AddGenerator(0, 0, 0, 1, 0, 0, 1.0, vtkConformalOrbitSource::DILATION, 0.0);
+  source->SetSeedPoint(1, 0, 0);
+  source->SetClipRadius(10.0);
+  const double step = 710.0;
+  source->SetTRange(-(kRun - 1) * step, (100 - kRun + 1) * step); // column c at t = (c - 63) 710
+  source->SetTResolution(100);
+  source->Update();
+  EXPECT_EQ(events.errors, 0) << events.lastError;
+  EXPECT_NE(events.lastWarning.find("1 samples next to the clip sphere's inside dropped"),
+    std::string::npos)
+    << events.lastWarning;
 }
 
 // A seed whose conformal point overflows (|p|^2 beyond the largest double) has no orbit: it was
