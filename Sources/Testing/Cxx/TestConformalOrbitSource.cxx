@@ -344,6 +344,28 @@ TEST(ConformalOrbitSource, ADroppedSampleLooksAtItsNeighbourInTheRunBefore)
     << events.lastWarning;
 }
 
+// The mirror case: the sample beyond the doubles at column 63, the last of its run, and the one
+// inside the sphere at column 64, the first of the next run (weight -1: the seed shrinks as t
+// grows, column c at t = (c - 64) 710), so that the neighbour is a column of the run after.
+TEST(ConformalOrbitSource, ADroppedSampleLooksAtItsNeighbourInTheRunAfter)
+{
+  constexpr int kRun = vtkBoostedGridDriver::ColumnsPerRun;
+  vtkNew<vtkConformalOrbitSource> source;
+  EventCounter events(source);
+  source->SetGeneratorTypeToGeneratorList();
+  source->AddGenerator(0, 0, 0, 1, 0, 0, -1.0, vtkConformalOrbitSource::DILATION, 0.0);
+  source->SetSeedPoint(1, 0, 0);
+  source->SetClipRadius(10.0);
+  const double step = 710.0;
+  source->SetTRange(-kRun * step, (100 - kRun) * step);
+  source->SetTResolution(100);
+  source->Update();
+  EXPECT_EQ(events.errors, 0) << events.lastError;
+  EXPECT_NE(events.lastWarning.find("1 samples next to the clip sphere's inside dropped"),
+    std::string::npos)
+    << events.lastWarning;
+}
+
 // A seed whose conformal point overflows (|p|^2 beyond the largest double) has no orbit: it was
 // dropped without a word, now with a warning; the other seeds' orbits are as without it.
 TEST(ConformalOrbitSource, SeedsTooFarFromTheGeneratorsWarnAndAreDropped)
