@@ -46,25 +46,45 @@ std::size_t limitFromEnvironment()
 }
 
 // The length of each mapping Allocate handed out, by its start, and the mappings freed and kept
-// for the next allocations (oldest first, CachedBytes of them, at most Limit).
+// for the next allocations (oldest first, CachedBytes of them, at most limit()).
 struct Mappings
 {
   std::mutex Lock;
   std::unordered_map<void*, std::size_t> Lengths;
   std::deque<std::pair<void*, std::size_t>> Cached;
   std::size_t CachedBytes = 0;
-  std::size_t Limit = limitFromEnvironment();
+
+  // The cache's limit (under the lock): the environment's, read at the first use after the
+  // library is loaded (a program may set the variable before it allocates), or SetCacheLimit's.
+  std::size_t limit()
+  {
+    if (!this->LimitKnown)
+    {
+      this->Limit = limitFromEnvironment();
+      this->LimitKnown = true;
+    }
+    return this->Limit;
+  }
+  void setLimit(std::size_t bytes)
+  {
+    this->Limit = bytes;
+    this->LimitKnown = true;
+  }
 
   // Gives back the oldest kept mappings beyond the limit (under the lock).
   void trim()
   {
-    while (this->CachedBytes > this->Limit)
+    while (this->CachedBytes > this->limit())
     {
       munmap(this->Cached.front().first, this->Cached.front().second);
       this->CachedBytes -= this->Cached.front().second;
       this->Cached.pop_front();
     }
   }
+
+private:
+  std::size_t Limit = 0;
+  bool LimitKnown = false;
 };
 
 Mappings& mappings();
@@ -91,6 +111,11 @@ Mappings& mappings()
   }();
   return *all;
 }
+
+// Made when the library is loaded, before a program's threads can race to the first use: a fork()
+// while another thread was inside that first use (the static's initialization) left the child
+// waiting for ever on the initialization's guard.
+[[maybe_unused]] const bool MappingsMadeAtLoad = (mappings(), true);
 
 // A kept mapping of at least `length` bytes and at most a quarter more, the smallest such (taken
 // out of the cache and counted as handed out), or null.
@@ -208,7 +233,7 @@ void vtkBoostedLargeArrays::Release(void* memory)
     const std::pair<void*, std::size_t> freed = *found;
     all.Lengths.erase(found);
     bool kept = false;
-    if (freed.second <= all.Limit)
+    if (freed.second <= all.limit())
     {
       try
       {
@@ -251,7 +276,7 @@ void vtkBoostedLargeArrays::SetCacheLimit(std::size_t bytes)
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   Mappings& all = mappings();
   const std::lock_guard<std::mutex> hold(all.Lock);
-  all.Limit = bytes;
+  all.setLimit(bytes);
   all.trim();
 #else
   (void)bytes;
@@ -263,7 +288,7 @@ std::size_t vtkBoostedLargeArrays::GetCacheLimit()
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   Mappings& all = mappings();
   const std::lock_guard<std::mutex> hold(all.Lock);
-  return all.Limit;
+  return all.limit();
 #else
   return 0;
 #endif
