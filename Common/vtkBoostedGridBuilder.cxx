@@ -16,6 +16,7 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include "cga/GridNormals.h"
 #include "cga/Vec3.h"
 
 #include <algorithm>
@@ -36,6 +37,10 @@ struct Segment
 // Long rows are cut into segments of at most this many columns, so that a grid of a few long rows
 // (one orbit of a million samples) still spreads over the threads.
 constexpr int ColumnsPerSegment = 16384;
+
+// A normal whose two unit differences cross with a sine at most this is not taken from them (the
+// row's fallback normal instead).
+constexpr double MinimumNormalSine = 1e-12;
 
 std::vector<Segment> Segments(int firstRow, int lastRow, int firstColumn, int lastColumn, int perSegment)
 {
@@ -303,7 +308,7 @@ void vtkBoostedGridBuilder::ComputeNormal(int row, int column, double normal[3])
   }
   vtkMath::Cross(alongColumns, alongRows, normal);
   const double length = vtkMath::Norm(normal); // the sine of the angle between the unit differences
-  if (length > 1e-12)
+  if (length > MinimumNormalSine)
   {
     vtkMath::MultiplyScalar(normal, 1.0 / length);
     return;
@@ -311,6 +316,39 @@ void vtkBoostedGridBuilder::ComputeNormal(int row, int column, double normal[3])
   for (int i = 0; i < 3; ++i)
   {
     normal[i] = this->FallbackNormals[3 * row + i];
+  }
+}
+
+void vtkBoostedGridBuilder::ComputeNormals(
+  int row, int firstColumn, int lastColumn, double* normals) const
+{
+  // The samples whose four neighbours exist in the row's block without a seam's wrap (columns 1
+  // to Columns - 2 of an inner row) eight at a time, where ComputeNormal would take the plain
+  // central differences (cga::crossedDifferenceNormals: the same bits); the others, and samples
+  // with given normals, one at a time.
+  int first = lastColumn, last = lastColumn;
+  if (!this->SampleNormals && row > 0 && row + 1 < this->Rows && this->SameBlock(row - 1, row) &&
+    this->SameBlock(row + 1, row))
+  {
+    first = std::min(std::max(firstColumn, 1), lastColumn);
+    last = std::max(first, std::min(lastColumn, this->Columns - 1));
+  }
+  bool plain[NormalsPerRun];
+  if (last > first)
+  {
+    const double* p = this->Points.get();
+    cga::crossedDifferenceNormals(p + 3 * static_cast<size_t>(this->Index(row, first - 1)),
+      p + 3 * static_cast<size_t>(this->Index(row, first + 1)),
+      p + 3 * static_cast<size_t>(this->Index(row - 1, first)),
+      p + 3 * static_cast<size_t>(this->Index(row + 1, first)), static_cast<size_t>(last - first),
+      MinimumNormalSine, normals + 3 * (first - firstColumn), plain);
+  }
+  for (int c = firstColumn; c < lastColumn; ++c)
+  {
+    if (c < first || c >= last || !plain[c - first])
+    {
+      this->ComputeNormal(row, c, normals + 3 * (c - firstColumn));
+    }
   }
 }
 
@@ -438,6 +476,9 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(
     const int r = s.Row;
     const double v = (r % this->BlockRows()) * vScale; // the texture coordinate of the row
     vtkIdType next = offsets[i];
+    // The normals of the columns [runFirst, runFirst + NormalsPerRun), made as the walk reaches them.
+    double runNormals[3 * NormalsPerRun];
+    int runFirst = -NormalsPerRun;
     walk(
       s,
       [&](int c) {
@@ -459,8 +500,12 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(
         }
         if (withSurfaceAttributes)
         {
-          double n[3];
-          this->ComputeNormal(r, c, n);
+          if (c >= runFirst + NormalsPerRun)
+          {
+            runFirst = c;
+            this->ComputeNormals(r, c, std::min(s.LastColumn, c + NormalsPerRun), runNormals);
+          }
+          const double* n = runNormals + 3 * (c - runFirst);
           for (int k = 0; k < 3; ++k)
           {
             normals->SetValue(3 * id + k, static_cast<float>(n[k]));

@@ -145,6 +145,10 @@ private:
     return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
   }
   void ComputeNormal(int row, int column, double normal[3]) const;
+  /// ComputeNormal's normals of row `row`'s columns [firstColumn, lastColumn), at most
+  /// NormalsPerRun of them, into normals (3 per column), the inner samples many at a time.
+  static constexpr int NormalsPerRun = 64;
+  void ComputeNormals(int row, int firstColumn, int lastColumn, double* normals) const;
   /// Writes the usable points of rows [firstRow, lastRow] and returns the map grid index -> point
   /// id (-1: no point), defined for those rows' samples.
   vtkBoostedLargeArrays::Buffer<long long> WritePoints(

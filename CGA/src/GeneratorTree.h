@@ -42,9 +42,7 @@ namespace cga
 {
 namespace detail
 {
-// GCC's vector extension, in the tree's loops where its own vectorization did worse: eight
-// doubles (the kLanes points of a block, or eight of a bivector's ten components) and two.
-typedef double Eight __attribute__((vector_size(8 * sizeof(double))));
+// Two doubles of GCC's vector extension, beside LaneClones.h's Eight.
 typedef double Two __attribute__((vector_size(2 * sizeof(double))));
 
 /// sums[c kLanes, (c + 1) kLanes) += out[c] for a bivector's ten components (a block's lanes per
