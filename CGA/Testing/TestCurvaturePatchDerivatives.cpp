@@ -5,6 +5,7 @@
 // (kappaU, kappaV) at the origin.
 #include "TestSupport.h"
 
+#include "cga/ExponentialMap.h"
 #include "cga/SurfaceCurvature.h"
 #include "cga/surfaces/CurvaturePatch.h"
 
@@ -124,6 +125,74 @@ TEST(CurvaturePatchDerivatives, ExponentJetValueIsTheGeneratorBitForBit)
               << static_cast<int>(method) << " trial " << trial << " component " << c << ": "
               << jet[c].value << " " << value[c];
           }
+        }
+      }
+    }
+  }
+}
+
+TEST(CurvaturePatchDerivatives, MapRowIsTheOneSampleGeneratorBitForBit)
+{
+  // mapRow computes a row's generators its own way (the control points' sums eight samples at a
+  // time): its images are the exponential map of the one-sample generator (exponentJet's value
+  // about the origin, the same template on double) to the bit, in rows of 21 samples (two whole
+  // blocks and a partial one), with the trials above; at a frame through the space origin its
+  // weights are generatorAt's.
+  Random random(1309);
+  for (const CurvatureMethod method : kMethods)
+  {
+    for (int trial = 0; trial < 7; ++trial)
+    {
+      CurvaturePatch patch = patchOf(method, random);
+      patch.kappaU = trial == 1 ? 0.0 : patch.kappaU;
+      patch.kappaV = trial == 2 ? -patch.kappaU : patch.kappaV;
+      patch.falloff = trial == 3 ? 0.0 : patch.falloff;
+      patch.sizeV = trial == 4 ? 0.0 : patch.sizeV;
+      const Vec3 shift = trial == 5 ? Vec3{ 1e6, -2e6, 3e5 } : trial == 6 ? -patch.frame.origin : Vec3{};
+      patch.frame.origin = patch.frame.origin + shift;
+      for (CurvatureControlPoint& c : patch.controlPoints)
+      {
+        c.kappaU = trial == 1 ? 0.0 : c.kappaU;
+        c.kappaV = trial == 2 ? -c.kappaU : c.kappaV;
+        c.location = c.location + shift;
+      }
+      ASSERT_TRUE(patch.validate().empty());
+      constexpr std::size_t kCount = 21;
+      const double b = random.uniform(-1.0, 1.0);
+      double a[kCount], weights[kCount];
+      Vec3 out[kCount];
+      bool mapped[kCount];
+      for (double& value : a)
+      {
+        value = random.uniform(-1.0, 1.0);
+      }
+      patch.mapRow(b, a, kCount, out, weights, mapped);
+      for (std::size_t i = 0; i < kCount; ++i)
+      {
+        SurfaceJet jet[Bivector::Count];
+        patch.exponentJet(a[i], b, patch.frame.origin, jet);
+        Bivector exponent;
+        for (int c = 0; c < Bivector::Count; ++c)
+        {
+          exponent[c] = jet[c].value;
+        }
+        const Vec3 point = Vec3{} + a[i] * patch.frame.u + b * patch.frame.v;
+        Vec3 image;
+        bool finite = false;
+        mapPointsByExponentials(&exponent, &point, 1, patch.rule, &image, &finite);
+        ASSERT_EQ(mapped[i], finite) << static_cast<int>(method) << " trial " << trial;
+        if (!finite)
+        {
+          continue;
+        }
+        const Vec3 expected = patch.frame.origin + image;
+        EXPECT_EQ(0, std::memcmp(&out[i], &expected, sizeof expected))
+          << static_cast<int>(method) << " trial " << trial << " sample " << i;
+        if (trial == 6)
+        {
+          const double weight = patch.generatorAt(a[i], b).weight;
+          EXPECT_EQ(0, std::memcmp(&weights[i], &weight, sizeof weight))
+            << static_cast<int>(method) << " sample " << i << ": " << weights[i] << " " << weight;
         }
       }
     }

@@ -10,6 +10,7 @@
 #include "cga/surfaces/CurvaturePatch.h"
 
 #include "../ForceInline.h"
+#include "../LaneClones.h"
 #include "../NullPointPairTerms.h"
 
 #include <array>
@@ -175,6 +176,19 @@ BOOSTED_FORCE_INLINE ExponentOf<T> exponentOfWeight(const Bivector& pair, const 
     {
       setValuePart(term[c], 0.0);
     }
+  }
+  return term;
+}
+
+/// exponentOfWeight for eight samples at once (LaneClones.h's Eight; CurvaturePatch.cpp's
+/// controlPointGenerators): each lane as for double, exactly zero where its w is zero.
+BOOSTED_FORCE_INLINE ExponentOf<Eight> exponentOfWeight(const Bivector& pair, const Eight& w)
+{
+  ExponentOf<Eight> term;
+  const auto zero = w == 0.0;
+  for (int c = 0; c < Bivector::Count; ++c)
+  {
+    term[c] = zero ? Eight{} : pair[c] * -w;
   }
   return term;
 }
