@@ -108,10 +108,12 @@ int vtkBoostedSurfaceSource::RequestData(
     const cga::BoostedCircleRow row(centered, lambdas[r]);
     // The row's points about the circle's center (NaN where mapped to infinity), for its plane.
     std::vector<cga::Vec3> rowPoints(columns, cga::Vec3{ NAN, NAN, NAN });
+    // Declared once per row, not zeroed per sample: each call sets the members it returns (the
+    // point; with the first or second derivatives), all that Set reads.
+    cga::SurfaceDerivatives x;
     for (int c = 0; c < columns; ++c)
     {
       // False: the point went to infinity; left NaN and dropped.
-      cga::SurfaceDerivatives x;
       const bool mapped = !exact ? row.point(circleSamples[c].point, x.point)
         : curvatures             ? row.derivatives(circleSamples[c], x)
                                  : row.firstDerivatives(circleSamples[c], x);
