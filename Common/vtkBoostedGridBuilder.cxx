@@ -476,7 +476,7 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(
     const int r = s.Row;
     const double v = (r % this->BlockRows()) * vScale; // the texture coordinate of the row
     vtkIdType next = offsets[i];
-    // The normals of the columns [runFirst, runFirst + NormalsPerRun), made as the walk reaches them.
+    // The normals of columns [runFirst, runFirst + NormalsPerRun), made as the walk reaches them.
     double runNormals[3 * NormalsPerRun];
     int runFirst = -NormalsPerRun;
     walk(

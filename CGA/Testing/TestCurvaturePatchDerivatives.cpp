@@ -42,9 +42,46 @@ CurvaturePatch patchOf(CurvatureMethod method, Random& random)
   return patch;
 }
 
+// The special cases of the bit-for-bit tests, by trial: 1 flat directions (kappa 0), 2 weights
+// that cancel (kappaV = -kappaU), 3 no falloff, 4 a line patch (sizeV 0), 5 a far patch (moved by
+// (1e6, -2e6, 3e5)), 6 a frame through the space origin; 0 and above 6 the patch as it is.
+void applyTrial(CurvaturePatch& patch, int trial)
+{
+  patch.kappaU = trial == 1 ? 0.0 : patch.kappaU;
+  patch.kappaV = trial == 2 ? -patch.kappaU : patch.kappaV;
+  patch.falloff = trial == 3 ? 0.0 : patch.falloff;
+  patch.sizeV = trial == 4 ? 0.0 : patch.sizeV;
+  const bool moved = trial == 5 || trial == 6;
+  const Vec3 shift = trial == 5 ? Vec3{ 1e6, -2e6, 3e5 } : -patch.frame.origin;
+  patch.frame.origin = moved ? patch.frame.origin + shift : patch.frame.origin;
+  for (CurvatureControlPoint& c : patch.controlPoints)
+  {
+    c.kappaU = trial == 1 ? 0.0 : c.kappaU;
+    c.kappaV = trial == 2 ? -c.kappaU : c.kappaV;
+    c.location = moved ? c.location + shift : c.location;
+  }
+}
+
 constexpr CurvatureMethod kMethods[] = { CurvatureMethod::BentLine,
   CurvatureMethod::TranslatedTangents, CurvatureMethod::OsculatingCircles,
   CurvatureMethod::ControlPoints, CurvatureMethod::Linear, CurvatureMethod::Bilinear };
+
+// test(patch, method, trial) for a random patch (patchOf) of every method in each trial < trials
+// (applyTrial).
+template <typename Test>
+void forEveryTrialPatch(Random& random, int trials, const Test& test)
+{
+  for (const CurvatureMethod method : kMethods)
+  {
+    for (int trial = 0; trial < trials; ++trial)
+    {
+      CurvaturePatch patch = patchOf(method, random);
+      applyTrial(patch, trial);
+      ASSERT_TRUE(patch.validate().empty());
+      test(patch, method, trial);
+    }
+  }
+}
 
 TEST(CurvaturePatchDerivatives, ExponentJetIsTheGeneratorWithItsDifferences)
 {
@@ -94,41 +131,24 @@ TEST(CurvaturePatchDerivatives, ExponentJetValueIsTheGeneratorBitForBit)
   // the grid samples mapRow uses (corners, edges, the center), with flat directions (kappa 0),
   // weights that cancel (kappaV = -kappaU), no falloff, a line patch (sizeV 0) and a far patch.
   Random random(1307);
-  for (const CurvatureMethod method : kMethods)
-  {
-    for (int trial = 0; trial < 6; ++trial)
+  forEveryTrialPatch(random, 6, [](const CurvaturePatch& patch, CurvatureMethod method, int trial) {
+    for (int row = 0; row < 5; ++row)
     {
-      CurvaturePatch patch = patchOf(method, random);
-      patch.kappaU = trial == 1 ? 0.0 : patch.kappaU;
-      patch.kappaV = trial == 2 ? -patch.kappaU : patch.kappaV;
-      patch.falloff = trial == 3 ? 0.0 : patch.falloff;
-      patch.sizeV = trial == 4 ? 0.0 : patch.sizeV;
-      patch.frame.origin = trial == 5 ? patch.frame.origin + Vec3{ 1e6, -2e6, 3e5 } : patch.frame.origin;
-      for (CurvatureControlPoint& c : patch.controlPoints)
+      for (int column = 0; column < 5; ++column)
       {
-        c.kappaU = trial == 1 ? 0.0 : c.kappaU;
-        c.kappaV = trial == 2 ? -c.kappaU : c.kappaV;
-        c.location = trial == 5 ? c.location + Vec3{ 1e6, -2e6, 3e5 } : c.location;
-      }
-      ASSERT_TRUE(patch.validate().empty());
-      for (int row = 0; row < 5; ++row)
-      {
-        for (int column = 0; column < 5; ++column)
+        const double a = patch.a(column, 5), b = patch.b(row, 5);
+        SurfaceJet jet[Bivector::Count];
+        patch.exponentJet(a, b, Vec3{}, jet);
+        const Bivector value = patch.generatorAt(a, b).exponent;
+        for (int c = 0; c < Bivector::Count; ++c)
         {
-          const double a = patch.a(column, 5), b = patch.b(row, 5);
-          SurfaceJet jet[Bivector::Count];
-          patch.exponentJet(a, b, Vec3{}, jet);
-          const Bivector value = patch.generatorAt(a, b).exponent;
-          for (int c = 0; c < Bivector::Count; ++c)
-          {
-            EXPECT_EQ(0, std::memcmp(&jet[c].value, &value.c[c], sizeof(double)))
-              << static_cast<int>(method) << " trial " << trial << " component " << c << ": "
-              << jet[c].value << " " << value[c];
-          }
+          EXPECT_EQ(0, std::memcmp(&jet[c].value, &value.c[c], sizeof(double)))
+            << static_cast<int>(method) << " trial " << trial << " component " << c << ": "
+            << jet[c].value << " " << value[c];
         }
       }
     }
-  }
+  });
 }
 
 TEST(CurvaturePatchDerivatives, MapRowIsTheOneSampleGeneratorBitForBit)
@@ -139,64 +159,47 @@ TEST(CurvaturePatchDerivatives, MapRowIsTheOneSampleGeneratorBitForBit)
   // blocks and a partial one), with the trials above; at a frame through the space origin its
   // weights are generatorAt's.
   Random random(1309);
-  for (const CurvatureMethod method : kMethods)
-  {
-    for (int trial = 0; trial < 7; ++trial)
+  const auto test = [&random](const CurvaturePatch& patch, CurvatureMethod method, int trial) {
+    constexpr std::size_t kCount = 21;
+    const double b = random.uniform(-1.0, 1.0);
+    double a[kCount], weights[kCount];
+    Vec3 out[kCount];
+    bool mapped[kCount];
+    for (double& value : a)
     {
-      CurvaturePatch patch = patchOf(method, random);
-      patch.kappaU = trial == 1 ? 0.0 : patch.kappaU;
-      patch.kappaV = trial == 2 ? -patch.kappaU : patch.kappaV;
-      patch.falloff = trial == 3 ? 0.0 : patch.falloff;
-      patch.sizeV = trial == 4 ? 0.0 : patch.sizeV;
-      const Vec3 shift = trial == 5 ? Vec3{ 1e6, -2e6, 3e5 } : trial == 6 ? -patch.frame.origin : Vec3{};
-      patch.frame.origin = patch.frame.origin + shift;
-      for (CurvatureControlPoint& c : patch.controlPoints)
+      value = random.uniform(-1.0, 1.0);
+    }
+    patch.mapRow(b, a, kCount, out, weights, mapped);
+    for (std::size_t i = 0; i < kCount; ++i)
+    {
+      SurfaceJet jet[Bivector::Count];
+      patch.exponentJet(a[i], b, patch.frame.origin, jet);
+      Bivector exponent;
+      for (int c = 0; c < Bivector::Count; ++c)
       {
-        c.kappaU = trial == 1 ? 0.0 : c.kappaU;
-        c.kappaV = trial == 2 ? -c.kappaU : c.kappaV;
-        c.location = c.location + shift;
+        exponent[c] = jet[c].value;
       }
-      ASSERT_TRUE(patch.validate().empty());
-      constexpr std::size_t kCount = 21;
-      const double b = random.uniform(-1.0, 1.0);
-      double a[kCount], weights[kCount];
-      Vec3 out[kCount];
-      bool mapped[kCount];
-      for (double& value : a)
+      const Vec3 point = Vec3{} + a[i] * patch.frame.u + b * patch.frame.v;
+      Vec3 image;
+      bool finite = false;
+      mapPointsByExponentials(&exponent, &point, 1, patch.rule, &image, &finite);
+      ASSERT_EQ(mapped[i], finite) << static_cast<int>(method) << " trial " << trial;
+      if (!finite)
       {
-        value = random.uniform(-1.0, 1.0);
+        continue;
       }
-      patch.mapRow(b, a, kCount, out, weights, mapped);
-      for (std::size_t i = 0; i < kCount; ++i)
+      const Vec3 expected = patch.frame.origin + image;
+      EXPECT_EQ(0, std::memcmp(&out[i], &expected, sizeof expected))
+        << static_cast<int>(method) << " trial " << trial << " sample " << i;
+      if (trial == 6)
       {
-        SurfaceJet jet[Bivector::Count];
-        patch.exponentJet(a[i], b, patch.frame.origin, jet);
-        Bivector exponent;
-        for (int c = 0; c < Bivector::Count; ++c)
-        {
-          exponent[c] = jet[c].value;
-        }
-        const Vec3 point = Vec3{} + a[i] * patch.frame.u + b * patch.frame.v;
-        Vec3 image;
-        bool finite = false;
-        mapPointsByExponentials(&exponent, &point, 1, patch.rule, &image, &finite);
-        ASSERT_EQ(mapped[i], finite) << static_cast<int>(method) << " trial " << trial;
-        if (!finite)
-        {
-          continue;
-        }
-        const Vec3 expected = patch.frame.origin + image;
-        EXPECT_EQ(0, std::memcmp(&out[i], &expected, sizeof expected))
-          << static_cast<int>(method) << " trial " << trial << " sample " << i;
-        if (trial == 6)
-        {
-          const double weight = patch.generatorAt(a[i], b).weight;
-          EXPECT_EQ(0, std::memcmp(&weights[i], &weight, sizeof weight))
-            << static_cast<int>(method) << " sample " << i << ": " << weights[i] << " " << weight;
-        }
+        const double weight = patch.generatorAt(a[i], b).weight;
+        EXPECT_EQ(0, std::memcmp(&weights[i], &weight, sizeof weight))
+          << static_cast<int>(method) << " sample " << i << ": " << weights[i] << " " << weight;
       }
     }
-  }
+  };
+  forEveryTrialPatch(random, 7, test);
 }
 
 TEST(CurvaturePatchDerivatives, ImageDerivativesAreMapsDifferences)

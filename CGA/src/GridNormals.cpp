@@ -75,7 +75,8 @@ void crossedDifferenceNormals(const double* left, const double* right, const dou
     }
     const Eight normal[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
       a[0] * b[1] - a[1] * b[0] };
-    const Eight length = squareRoot(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+    const Eight length =
+      squareRoot(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
     const auto usable = safeSquare(aSquare) & safeSquare(bSquare) & (length > minimumSine);
     const Eight inverse = 1.0 / length;
     for (int l = 0; l < n; ++l)

@@ -322,20 +322,20 @@ TEST(ConformalOrbitSource, ADilationBeyondTheDoublesWarnsWhereItCannotBeCut)
   }
 }
 
-// The same warning where the sample inside the sphere and the one beyond the doubles fall in two
-// runs of vtkBoostedGridDriver::SampleColumns (columns 63 and 64, t = 0 and 710: e^710 is beyond
-// the largest double), so that the dropped sample's neighbour is a column outside its own run.
-TEST(ConformalOrbitSource, ADroppedSampleLooksAtItsNeighbourInTheRunBefore)
+namespace
 {
-  constexpr int kRun = vtkBoostedGridDriver::ColumnsPerRun;
+// A dilation about the origin (weight +1 or -1) of the seed (1, 0, 0), clip radius 10, 101
+// columns from t = tMin in steps of 710 (e^710 is beyond the largest double): expects exactly one
+// dropped sample next to the clip sphere's inside, warned, and no error.
+void expectOneDroppedSampleWarned(double weight, double tMin)
+{
   vtkNew<vtkConformalOrbitSource> source;
   EventCounter events(source);
   source->SetGeneratorTypeToGeneratorList();
-  source->AddGenerator(0, 0, 0, 1, 0, 0, 1.0, vtkConformalOrbitSource::DILATION, 0.0);
+  source->AddGenerator(0, 0, 0, 1, 0, 0, weight, vtkConformalOrbitSource::DILATION, 0.0);
   source->SetSeedPoint(1, 0, 0);
   source->SetClipRadius(10.0);
-  const double step = 710.0;
-  source->SetTRange(-(kRun - 1) * step, (100 - kRun + 1) * step); // column c at t = (c - 63) 710
+  source->SetTRange(tMin, tMin + 100 * 710.0);
   source->SetTResolution(100);
   source->Update();
   EXPECT_EQ(events.errors, 0) << events.lastError;
@@ -343,27 +343,24 @@ TEST(ConformalOrbitSource, ADroppedSampleLooksAtItsNeighbourInTheRunBefore)
     std::string::npos)
     << events.lastWarning;
 }
+} // namespace
+
+// The same warning where the sample inside the sphere and the one beyond the doubles fall in two
+// runs of vtkBoostedGridDriver::SampleColumns (columns 63 and 64, t = 0 and 710), so that the
+// dropped sample's neighbour is a column outside its own run.
+TEST(ConformalOrbitSource, ADroppedSampleLooksAtItsNeighbourInTheRunBefore)
+{
+  constexpr int kRun = vtkBoostedGridDriver::ColumnsPerRun;
+  expectOneDroppedSampleWarned(1.0, -(kRun - 1) * 710.0); // column c at t = (c - 63) 710
+}
 
 // The mirror case: the sample beyond the doubles at column 63, the last of its run, and the one
 // inside the sphere at column 64, the first of the next run (weight -1: the seed shrinks as t
-// grows, column c at t = (c - 64) 710), so that the neighbour is a column of the run after.
+// grows; column c at t = (c - 64) 710), so that the neighbour is a column of the run after.
 TEST(ConformalOrbitSource, ADroppedSampleLooksAtItsNeighbourInTheRunAfter)
 {
   constexpr int kRun = vtkBoostedGridDriver::ColumnsPerRun;
-  vtkNew<vtkConformalOrbitSource> source;
-  EventCounter events(source);
-  source->SetGeneratorTypeToGeneratorList();
-  source->AddGenerator(0, 0, 0, 1, 0, 0, -1.0, vtkConformalOrbitSource::DILATION, 0.0);
-  source->SetSeedPoint(1, 0, 0);
-  source->SetClipRadius(10.0);
-  const double step = 710.0;
-  source->SetTRange(-kRun * step, (100 - kRun) * step);
-  source->SetTResolution(100);
-  source->Update();
-  EXPECT_EQ(events.errors, 0) << events.lastError;
-  EXPECT_NE(events.lastWarning.find("1 samples next to the clip sphere's inside dropped"),
-    std::string::npos)
-    << events.lastWarning;
+  expectOneDroppedSampleWarned(-1.0, -kRun * 710.0);
 }
 
 // A seed whose conformal point overflows (|p|^2 beyond the largest double) has no orbit: it was
