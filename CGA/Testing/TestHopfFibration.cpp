@@ -7,9 +7,11 @@
 #include "cga/Conformal.h"
 #include "cga/Exponential.h"
 #include "cga/Logarithm.h"
+#include "cga/PointSandwich.h"
 #include "cga/surfaces/HopfFibration.h"
 
 #include <complex>
+#include <cstring>
 
 namespace
 {
@@ -241,6 +243,56 @@ TEST(HopfFibration, SouthPoleIsTheCircleAndNorthPoleTheAxis)
       EXPECT_GE(onAxis, 15); // at most one point goes to infinity
     }
   }
+}
+
+TEST(HopfFibration, FiberPointsAreTheOnePointFormulaBitForBit)
+{
+  // fiberPoints maps a fiber's circle eight points at a time: each point is the one-point formula
+  // to the bit (up, the versor's point map, the weight test against the largest component,
+  // normalizePoint, the world frame center + radius (x a + y b + z n)), NaN where that formula
+  // drops the point; both modes, a moved and scaled frame, 19 points (a partial block), and
+  // fibers through the point at infinity.
+  Random random(409);
+  int dropped = 0;
+  for (HopfFibration hopf : bothModes())
+  {
+    hopf.center = { 0.3, -1.7, 2.0 };
+    hopf.radius = 2.5;
+    hopf.normal = { 0.2, -0.4, 0.9 };
+    const Vec3 n = normalized(hopf.normal), a = orthogonalUnit(n), b = cross(n, a);
+    for (int trial = 0; trial < 12; ++trial)
+    {
+      // Trials 0 to 3: theta a multiple of pi/2 on phi = pi/2, where one of 40 points lands on
+      // the point at infinity; the others random, 19 points.
+      const bool throughInfinity = trial < 4;
+      const double theta = throughInfinity ? 0.5 * kPi * trial : random.uniform(0.0, 2.0 * kPi);
+      const double phi = throughInfinity ? 0.5 * kPi : random.uniform(0.0, kPi);
+      const std::vector<Vec3> circle = HopfFibration::circleSamples(throughInfinity ? 40 : 19);
+      std::vector<Vec3> points(circle.size());
+      Even kh;
+      ASSERT_TRUE(hopf.versor(theta, phi, kh));
+      ASSERT_TRUE(hopf.fiberPoints(theta, phi, circle, points.data()));
+      const PointMap map(kh);
+      for (std::size_t j = 0; j < circle.size(); ++j)
+      {
+        const ConformalVector image = map.apply(ConformalVector::point(circle[j]));
+        Vec3 p;
+        if (std::fabs(image.weight()) > 1e-13 * image.maxAbs() && normalizePoint(image, p))
+        {
+          const Vec3 expected = hopf.center + hopf.radius * (p.x * a + p.y * b + p.z * n);
+          EXPECT_EQ(0, std::memcmp(&points[j], &expected, sizeof expected))
+            << "trial " << trial << " point " << j;
+        }
+        else
+        {
+          EXPECT_TRUE(std::isnan(points[j].x) && std::isnan(points[j].y) && std::isnan(points[j].z))
+            << "trial " << trial << " point " << j;
+          ++dropped;
+        }
+      }
+    }
+  }
+  EXPECT_GT(dropped, 0); // the fibers through infinity drop a point
 }
 
 TEST(HopfFibration, FibersAreDisjointAndLinkedOnceWithOneSign)

@@ -8,8 +8,11 @@
 #include "cga/PointPairs.h"
 #include "cga/PointSandwich.h"
 
+#include "../LaneClones.h"
+
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace cga
@@ -20,6 +23,77 @@ constexpr double kPi = 3.14159265358979323846;
 // Relative weight below which an image point counts as the point at infinity (about 1e7 units
 // from the origin for the unit circle: far beyond any useful clip radius).
 constexpr double kInfinityWeight = 1e-13;
+
+// fiberPoints' loop over the circle's points, eight at a time in LaneClones.h's Eight, with the
+// operations of the one-point code in its order (up(x), applyMatrix's sums from 0, maxAbs,
+// normalizePoint's divisions, the frame's sums): the same bits. Points sent to infinity (or not
+// finite) are NaN.
+BOOSTED_LANE_CLONES
+void circleImages(const std::array<double, 25>& matrix, const Vec3* circle, std::size_t count,
+  Vec3 center, double radius, Vec3 a, Vec3 b, Vec3 n, Vec3* out)
+{
+  using detail::Eight;
+  constexpr int L = 8, C = ConformalVector::Count;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t first = 0; first < count; first += L)
+  {
+    const int lanes = static_cast<int>(std::min<std::size_t>(L, count - first));
+    alignas(64) double xyz[3][L];
+    for (int l = 0; l < L; ++l)
+    {
+      const Vec3& p = circle[first + static_cast<std::size_t>(std::min(l, lanes - 1))];
+      xyz[0][l] = p.x;
+      xyz[1][l] = p.y;
+      xyz[2][l] = p.z;
+    }
+    Eight x[C];
+    std::memcpy(&x[ConformalVector::E1], xyz, sizeof xyz);
+    x[ConformalVector::NO] = Eight{} + 1.0;
+    const Eight& px = x[ConformalVector::E1];
+    const Eight& py = x[ConformalVector::E2];
+    const Eight& pz = x[ConformalVector::E3];
+    x[ConformalVector::NI] = 0.5 * (px * px + py * py + pz * pz);
+    Eight r[C];
+    for (int i = 0; i < C; ++i)
+    {
+      Eight s = Eight{};
+      for (int j = 0; j < C; ++j)
+      {
+        s += matrix[static_cast<std::size_t>(i * C + j)] * x[j];
+      }
+      r[i] = s;
+    }
+    Eight largest = Eight{};
+    for (int i = 0; i < C; ++i)
+    {
+      const Eight magnitude = r[i] < 0.0 ? -r[i] : r[i];
+      largest = (magnitude > largest) | (magnitude != magnitude) ? magnitude : largest;
+    }
+    const Eight alpha = r[ConformalVector::NO];
+    const Eight weight = alpha < 0.0 ? -alpha : alpha;
+    Eight p[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      p[k] = r[ConformalVector::E1 + k] / alpha;
+    }
+    const double largestDouble = std::numeric_limits<double>::max();
+    auto finite = [&](const Eight& v) { return (v < 0.0 ? -v : v) <= largestDouble; };
+    const auto kept = (weight > kInfinityWeight * largest) & (alpha != 0.0) & finite(alpha) &
+      finite(p[0]) & finite(p[1]) & finite(p[2]);
+    const double frame[3][3] = { { a.x, b.x, n.x }, { a.y, b.y, n.y }, { a.z, b.z, n.z } };
+    const double origin[3] = { center.x, center.y, center.z };
+    Eight world[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      world[k] = origin[k] + radius * (p[0] * frame[k][0] + p[1] * frame[k][1] + p[2] * frame[k][2]);
+    }
+    for (int l = 0; l < lanes; ++l)
+    {
+      Vec3& o = out[first + static_cast<std::size_t>(l)];
+      o = kept[l] ? Vec3{ world[0][l], world[1][l], world[2][l] } : Vec3{ nan, nan, nan };
+    }
+  }
+}
 
 Vec3 boostDirection(double theta)
 {
@@ -222,22 +296,9 @@ bool HopfFibration::fiberPoints(
   const PointMap map(kh);
   Vec3 a, b, n; // toWorld's frame, once per fiber
   this->worldFrame(a, b, n);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (std::size_t j = 0; j < circle.size(); ++j)
-  {
-    // A point sent to infinity has weight -ni.P = 0; round-off leaves about 1e-16 |P|, which
-    // would normalize to a meaningless finite point, so such weights count as zero.
-    const ConformalVector image = map.apply(ConformalVector::point(circle[j]));
-    Vec3 p;
-    if (std::fabs(image.weight()) > kInfinityWeight * image.maxAbs() && normalizePoint(image, p))
-    {
-      out[j] = center + radius * (p.x * a + p.y * b + p.z * n);
-    }
-    else
-    {
-      out[j] = { nan, nan, nan };
-    }
-  }
+  // A point sent to infinity has weight -ni.P = 0; round-off leaves about 1e-16 |P|, which would
+  // normalize to a meaningless finite point, so such weights count as zero (circleImages).
+  circleImages(map.matrix(), circle.data(), circle.size(), center, radius, a, b, n, out);
   return true;
 }
 } // namespace cga
