@@ -446,6 +446,10 @@ int vtkConformalOrbitSource::RequestData(
           cga::norm(p + center - clipCenter) <= this->ClipRadius;
       };
       long long lost = 0;
+      // The run's maps side by side (eight columns at a time), each row's images at once.
+      const cga::PointMaps runMaps(maps.data(), maps.size());
+      cga::Vec3 images[vtkBoostedGridDriver::ColumnsPerRun];
+      bool imaged[vtkBoostedGridDriver::ColumnsPerRun];
       for (int r = firstRow; r <= lastRow; ++r)
       {
         if (farSeed[r])
@@ -453,17 +457,17 @@ int vtkConformalOrbitSource::RequestData(
           continue;
         }
         const cga::Vec3 seed = seeds[r] - center;
+        runMaps.apply(seed, images, imaged);
         for (int c = firstColumn; c < lastColumn; ++c)
         {
           const size_t k = static_cast<size_t>(c - firstColumn);
-          cga::Vec3 p;
           if (!finiteMap[k])
           {
             continue;
           }
-          if (maps[k].apply(seed, p)) // false: at infinity; left NaN and dropped
+          if (imaged[k]) // false: at infinity; left NaN and dropped
           {
-            const cga::Vec3 q = p + center;
+            const cga::Vec3 q = images[k] + center;
             const double xyz[3] = { q.x, q.y, q.z };
             grid.SetPoint(r, c, xyz);
           }

@@ -6,7 +6,9 @@
 #include "cga/PointPairs.h"
 #include "cga/PointSandwich.h"
 
+#include <cstring>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace
@@ -157,6 +159,47 @@ TEST(FastPaths, SandwichFailsCleanlyAtInfinityAndOnNaN)
   EXPECT_FALSE(PointMap(bad).apply({ 1, 2, 3 }, out));
   EXPECT_FALSE(sandwichPoint(k, { std::nan(""), 0, 0 }, out));
   EXPECT_EQ(out.x, 42.0);
+}
+
+TEST(FastPaths, PointMapsGiveEachMapsImageBitForBit)
+{
+  // PointMaps applies many maps at once (eight side by side): each image and flag is that map's
+  // apply(p, out), to the bit, with out untouched where the flag is false; among the maps one
+  // that sends the point to infinity (K = 1 + no e1 at p = -e1) and one with a NaN; 0 to 21 maps.
+  Random random(37);
+  Even toInfinity = Even::identity();
+  toInfinity.bivector = toBivector(no() * e1());
+  Even notANumber = toInfinity;
+  notANumber.bivector[Bivector::E12] = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t count : { 0, 1, 7, 8, 9, 16, 21 })
+  {
+    std::vector<PointMap> maps;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      maps.emplace_back(i == 3 ? toInfinity : i == 5 ? notANumber : random.even(1.0));
+    }
+    const PointMaps all(maps.data(), maps.size());
+    EXPECT_EQ(all.size(), count);
+    for (int trial = 0; trial < 20; ++trial)
+    {
+      const Vec3 p = trial == 0 ? Vec3{ -1, 0, 0 } : random.vec3(2.0);
+      std::vector<Vec3> out(count + 1, Vec3{ 42, 42, 42 });
+      std::unique_ptr<bool[]> mapped(new bool[count + 1]);
+      all.apply(p, out.data(), mapped.get());
+      for (std::size_t i = 0; i < count; ++i)
+      {
+        Vec3 expected{ 42, 42, 42 };
+        ASSERT_EQ(mapped[i], maps[i].apply(p, expected)) << "map " << i << " of " << count;
+        EXPECT_EQ(0, std::memcmp(&out[i], &expected, sizeof expected)) << "map " << i;
+      }
+      EXPECT_EQ(out[count].x, 42.0); // nothing written past the maps
+      if (count > 5)
+      {
+        EXPECT_FALSE(mapped[5]);
+        EXPECT_EQ(trial != 0, mapped[3]);
+      }
+    }
+  }
 }
 
 TEST(FastPaths, NullBasisKeepsPrecisionFarFromTheOrigin)

@@ -3,7 +3,12 @@
 #include "cga/CompactAlgebra.h"
 
 #include "CompactLayout.h"
+#include "LaneClones.h"
 #include "PointMapCore.h"
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
 
 namespace cga
 {
@@ -65,6 +70,67 @@ ConformalVector applyMatrix(const std::array<double, 25>& matrix, const Conforma
 ConformalVector PointMap::apply(const ConformalVector& x) const
 {
   return applyMatrix(this->Matrix, x);
+}
+
+PointMaps::PointMaps(const PointMap* maps, std::size_t count)
+  : Count(count)
+  , Entries(25 * 8 * ((count + 7) / 8))
+{
+  // A partial group repeats its last map.
+  for (std::size_t i = 0; i < 8 * ((count + 7) / 8); ++i)
+  {
+    const std::array<double, 25>& m = maps[std::min(i, count - 1)].matrix();
+    for (std::size_t e = 0; e < 25; ++e)
+    {
+      this->Entries[25 * 8 * (i / 8) + 8 * e + i % 8] = m[e];
+    }
+  }
+}
+
+// PointMap::apply(p, out)'s operations in its order, on eight maps at a time (LaneClones.h's
+// Eight): up(p), applyMatrix's sums from 0, normalizePoint's divisions and checks.
+BOOSTED_LANE_CLONES
+void PointMaps::apply(Vec3 p, Vec3* out, bool* mapped) const
+{
+  using detail::Eight;
+  constexpr int C = ConformalVector::Count;
+  const ConformalVector x = ConformalVector::point(p);
+  const double largest = std::numeric_limits<double>::max();
+  for (std::size_t first = 0; first < this->Count; first += 8)
+  {
+    const double* entries = this->Entries.data() + 25 * first;
+    Eight r[C];
+    for (int i = 0; i < C; ++i)
+    {
+      Eight s = Eight{};
+      for (int j = 0; j < C; ++j)
+      {
+        Eight m;
+        std::memcpy(&m, entries + 8 * (i * C + j), sizeof m);
+        s += m * x[j];
+      }
+      r[i] = s;
+    }
+    const Eight alpha = r[ConformalVector::NO];
+    Eight image[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      image[k] = r[ConformalVector::E1 + k] / alpha;
+    }
+    auto finite = [largest](const Eight& v) { return (v < 0.0 ? -v : v) <= largest; };
+    const auto ok =
+      (alpha != 0.0) & finite(alpha) & finite(image[0]) & finite(image[1]) & finite(image[2]);
+    const int lanes = static_cast<int>(std::min<std::size_t>(8, this->Count - first));
+    for (int l = 0; l < lanes; ++l)
+    {
+      const std::size_t i = first + static_cast<std::size_t>(l);
+      mapped[i] = ok[l] != 0;
+      if (mapped[i])
+      {
+        out[i] = { image[0][l], image[1][l], image[2][l] };
+      }
+    }
+  }
 }
 
 std::array<double, 25> commutatorMatrix(const Bivector& b)

@@ -9,6 +9,8 @@
 #include "cga/Vec3.h"
 
 #include <array>
+#include <cstddef>
+#include <vector>
 
 namespace cga
 {
@@ -40,6 +42,22 @@ public:
 
 private:
   std::array<double, 25> Matrix{};
+};
+
+/// Many PointMaps applied to the same points (an orbit's maps at its sample times to each seed):
+/// apply(p, out, mapped) gives mapped[i] and out[i] as maps[i].apply(p, out[i]) does, bit for bit
+/// (out[i] unchanged where mapped[i] is false), eight maps side by side, their matrices stored
+/// lane by lane once.
+class PointMaps
+{
+public:
+  PointMaps(const PointMap* maps, std::size_t count);
+  std::size_t size() const { return Count; }
+  void apply(Vec3 p, Vec3* out, bool* mapped) const;
+
+private:
+  std::size_t Count;
+  std::vector<double> Entries; // per group of eight maps: entry e of lane l at [25 * 8 g + 8 e + l]
 };
 
 /// The linear map X -> B X - X B of a bivector B on conformal vectors (a vector again: -2 X.B),
