@@ -573,6 +573,17 @@ int vtkPointPairFitFilter::RequestData(
     deformed->GetPoint(i, q);
     if (data.Surface)
     {
+      if (std::max({ std::fabs(q[0]), std::fabs(q[1]), std::fabs(q[2]) }) >
+        vtkPointPairFitSolver::LargestSurfaceCoordinate)
+      {
+        // The fit kept its images within the range; a rounding of the final mapping must not
+        // take one to the locator beyond it.
+        vtkErrorMacro(<< "the image of point " << i << " lies beyond "
+                      << vtkPointPairFitSolver::LargestSurfaceCoordinate
+                      << ", where the target's cell locator overflows");
+        output->Initialize();
+        return 1;
+      }
       vtkIdType cellId;
       int subId;
       double distance2 = 0.0;

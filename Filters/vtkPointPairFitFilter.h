@@ -72,7 +72,7 @@
  * points than the mesh, a missing, wrongly shaped, negative, non-finite or all-zero point weight
  * array, bad Generators arrays or kinds, a non-finite Strength, NaN Falloff, Epsilon, tolerances
  * or bounds, an empty WeightRange, initial generators that send a point to infinity (or,
- * POINT_TO_SURFACE, beyond 1e150, as a target reaching beyond: the cell locator overflows there),
+ * POINT_TO_SURFACE, beyond 1e75, as a target reaching beyond: the cell locator overflows there),
  * residuals whose squares overflow, a
  * problem larger than the memory budget (vtkBoostedMemoryBudget: the Jacobian holds residuals x
  * unknowns doubles), or a FitKinds search above MaximumKindSearchWork.

@@ -17,6 +17,7 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <sstream>
 
 namespace
 {
@@ -452,9 +453,13 @@ bool vtkPointPairFitSolver::Solve(const vtkPointPairFitProblem& problem,
     {
       error = "the initial generators send a point of the mesh to infinity (or its residual is "
               "not finite";
-      error += problem.Surface ? ", or its image is beyond 1e150, where the target's cell "
-                                 "locator overflows"
-                               : "";
+      if (problem.Surface)
+      {
+        std::ostringstream beyond;
+        beyond << ", or its image is beyond " << vtkPointPairFitSolver::LargestSurfaceCoordinate
+               << ", where the target's cell locator overflows";
+        error += beyond.str();
+      }
       error += "): the fit cannot start there";
     }
     return false;

@@ -55,9 +55,11 @@ struct vtkPointPairFitResult
 namespace vtkPointPairFitSolver
 {
 /// The largest coordinate magnitude of the target and of the images in POINT_TO_SURFACE mode:
-/// VTK's closest-point queries multiply coordinates (squared distances, cross products), which
-/// overflow beyond about 1e154 (and then reach branches VTK asserts are dead).
-constexpr double LargestSurfaceCoordinate = 1e150;
+/// VTK's closest-point queries evaluate each cell with products of up to four coordinate
+/// differences (a triangle's normal normalized, a tetrahedron's or hexahedron's determinants),
+/// which overflow beyond about 1e76 and then reach branches VTK asserts are dead (the fuzz: a
+/// tetrahedron with a vertex at 1e150 aborted in vtkTriangle::EvaluatePosition).
+constexpr double LargestSurfaceCoordinate = 1e75;
 
 /// The squared weighted RMS residual of `generators`; false when one is not usable or a point's
 /// image or residual is not finite, or after an abort.

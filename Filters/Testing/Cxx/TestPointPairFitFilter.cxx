@@ -8,6 +8,7 @@
 #include "FitTestSupport.h"
 #include "GeneratorGlyphCacheChecks.h"
 #include "ProgressLog.h"
+#include "vtkCell.h"
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -20,6 +21,7 @@
 #include "vtkStringArray.h"
 #include "vtkStructuredGrid.h"
 #include "vtkTable.h"
+#include "vtkUnstructuredGrid.h"
 
 #include <gtest/gtest.h>
 
@@ -507,7 +509,7 @@ TEST(PointPairFitFilter, BadInputGivesAClearErrorAndEmptyOutputs)
     return vtkSmartPointer<vtkPolyData>(copy);
   };
   vtkSmartPointer<vtkPolyData> huge = scaled(mesh, 1e154), hugeTarget = scaled(mesh, -1e154);
-  vtkSmartPointer<vtkPolyData> farTarget = scaled(target, 1e151);
+  vtkSmartPointer<vtkPolyData> farTarget = scaled(target, 1e76);
   // A structured grid whose extent (2 x 2 x 2) does not count its points (the sphere's).
   vtkNew<vtkStructuredGrid> malformed;
   malformed->SetDimensions(2, 2, 2);
@@ -582,13 +584,13 @@ TEST(PointPairFitFilter, BadInputGivesAClearErrorAndEmptyOutputs)
         f->SetTargetData(farTarget);
         f->SetTargetModeToPointToSurface();
       },
-      "at most 1e+150" },
+      "at most 1e+75" },
     { "surface mode, images beyond the locator's range",
       [&](vtkPointPairFitFilter* f) {
         f->SetInputData(farTarget);
         f->SetTargetModeToPointToSurface();
       },
-      "beyond 1e150" },
+      "beyond 1e+75" },
   };
   for (const Case& c : cases)
   {
@@ -613,6 +615,69 @@ TEST(PointPairFitFilter, BadInputGivesAClearErrorAndEmptyOutputs)
   }
 }
 } // namespace
+
+// POINT_TO_SURFACE beside volume cells with a vertex far away (the fuzz, seed 90512: a
+// tetrahedron with a vertex at 1e150 passed the old 1e150 limit, and VTK's closest-point query
+// aborted in vtkTriangle::EvaluatePosition, its products of four coordinates overflowing). The
+// target is the mesh's own sphere (so the fit starts at residual 0 and cannot improve) with a
+// tetrahedron, a triangle and a hexahedron beside it, reaching 10 or 1e75: the locator's queries
+// meet those cells and give finite residuals (zero); reaching 1e150 the target is refused.
+TEST(PointPairFitFilter, FarVolumeCellsInTheTargetAreQueriedWithinTheRangeAndRefusedBeyond)
+{
+  vtkSmartPointer<vtkPolyData> mesh = unitSphere(6, 4);
+  for (const double far : { 10.0, 1e75, 1e150 })
+  {
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->DeepCopy(mesh->GetPoints());
+    const vtkIdType first = points->GetNumberOfPoints();
+    const double corners[][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { far, 0, 1 }, { 2, 0, 0 },
+      { 3, 0, 0 }, { 3, 1, 0 }, { 2, 1, 0 }, { 2, 0, 1 }, { 3, 0, 1 }, { 3, 1, 1 }, { 2, 1, 1 },
+      { 0, 2, far } };
+    for (const auto& c : corners)
+    {
+      points->InsertNextPoint(c);
+    }
+    vtkNew<vtkUnstructuredGrid> target;
+    target->SetPoints(points);
+    for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+    {
+      vtkCell* cell = mesh->GetCell(c);
+      target->InsertNextCell(cell->GetCellType(), cell->GetPointIds());
+    }
+    const vtkIdType tetra[] = { first, first + 1, first + 2, first + 3 };
+    const vtkIdType hexahedron[] = { first + 4, first + 5, first + 6, first + 7, first + 8,
+      first + 9, first + 10, first + 11 };
+    const vtkIdType triangle[] = { first, first + 2, first + 12 };
+    target->InsertNextCell(VTK_TETRA, 4, tetra);
+    target->InsertNextCell(VTK_HEXAHEDRON, 8, hexahedron);
+    target->InsertNextCell(VTK_TRIANGLE, 3, triangle);
+    vtkNew<vtkPointPairFitFilter> fit;
+    fit->SetInputData(mesh);
+    fit->SetTargetData(target);
+    fit->SetTargetModeToPointToSurface();
+    fit->AddGenerator(0.0, 0.0, 0.5, 0.0, 0.0, 1.0, 0.0);
+    EventCounter events(fit);
+    fit->Update();
+    if (far <= 1e75)
+    {
+      ASSERT_EQ(events.errors, 0) << far << ": " << events.lastError;
+      vtkDataArray* residual = fit->GetOutput()->GetPointData()->GetArray("FitResidual");
+      ASSERT_NE(residual, nullptr);
+      ASSERT_EQ(residual->GetNumberOfTuples(), mesh->GetNumberOfPoints());
+      for (vtkIdType i = 0; i < residual->GetNumberOfTuples(); ++i)
+      {
+        EXPECT_EQ(residual->GetTuple1(i), 0.0) << far << ", point " << i;
+      }
+    }
+    else
+    {
+      EXPECT_EQ(events.errors, 1);
+      EXPECT_NE(events.lastError.find("at most 1e+75"), std::string::npos) << events.lastError;
+      EXPECT_EQ(fit->GetOutput()->GetNumberOfPoints(), 0);
+    }
+  }
+}
 
 TEST(PointPairFitFilter, TheGeneratorsOutputIsBuiltAnewOnlyWhenTheFittedGeneratorsChange)
 {
