@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <limits>
 
 namespace cga
 {
@@ -32,7 +31,7 @@ BOOSTED_FORCE_INLINE Eight squareRoot(Eight x)
 // Per lane, whether the square is squareIsSafe's (all-ones where it is).
 BOOSTED_FORCE_INLINE auto safeSquare(Eight square)
 {
-  return (square >= 1e-290) & (square <= std::numeric_limits<double>::max());
+  return (square >= 1e-290) & detail::finiteLanes(square);
 }
 } // namespace
 

@@ -5,6 +5,10 @@
 // instruction set.
 #pragma once
 
+#include "ForceInline.h"
+
+#include <limits>
+
 #if defined(BOOSTED_KERNEL_X86_DISPATCH) && defined(__GNUC__) && !defined(__clang__)
 #define BOOSTED_LANE_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #else
@@ -18,5 +22,22 @@ namespace detail
 /// GCC's vector extension: eight doubles (a block of kernel::kLanes points, eight of a bivector's
 /// ten components, eight samples), for loops where GCC's own vectorization did worse.
 typedef double Eight __attribute__((vector_size(8 * sizeof(double))));
+
+// Templates on the lane vector (Eight), so that only the files that use them, compiled with
+// -Wno-psabi, declare functions passing 64-byte vectors.
+
+/// Per lane |v| (std::fabs, which the vector extension lacks).
+template <class Lanes>
+BOOSTED_FORCE_INLINE Lanes magnitude(Lanes v)
+{
+  return v < 0.0 ? -v : v;
+}
+
+/// Per lane, all ones where v is finite, as std::isfinite (a NaN fails the comparison).
+template <class Lanes>
+BOOSTED_FORCE_INLINE auto finiteLanes(Lanes v)
+{
+  return magnitude(v) <= std::numeric_limits<double>::max();
+}
 } // namespace detail
 } // namespace cga

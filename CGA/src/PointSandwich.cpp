@@ -3,12 +3,12 @@
 #include "cga/CompactAlgebra.h"
 
 #include "CompactLayout.h"
+#include "ConformalLanes.h"
 #include "LaneClones.h"
 #include "PointMapCore.h"
 
 #include <algorithm>
 #include <cstring>
-#include <limits>
 
 namespace cga
 {
@@ -87,39 +87,24 @@ PointMaps::PointMaps(const PointMap* maps, std::size_t count)
   }
 }
 
-// PointMap::apply(p, out)'s operations in its order, on eight maps at a time (LaneClones.h's
-// Eight): up(p), applyMatrix's sums from 0, normalizePoint's divisions and checks.
+// PointMap::apply(p, out)'s operations in its order, on eight maps at a time (ConformalLanes.h).
 BOOSTED_LANE_CLONES
 void PointMaps::apply(Vec3 p, Vec3* out, bool* mapped) const
 {
   using detail::Eight;
-  constexpr int C = ConformalVector::Count;
   const ConformalVector x = ConformalVector::point(p);
-  const double largest = std::numeric_limits<double>::max();
   for (std::size_t first = 0; first < this->Count; first += 8)
   {
     const double* entries = this->Entries.data() + 25 * first;
-    Eight r[C];
-    for (int i = 0; i < C; ++i)
-    {
-      Eight s = Eight{};
-      for (int j = 0; j < C; ++j)
-      {
-        Eight m;
-        std::memcpy(&m, entries + 8 * (i * C + j), sizeof m);
-        s += m * x[j];
-      }
-      r[i] = s;
-    }
-    const Eight alpha = r[ConformalVector::NO];
+    auto entry = [entries](int i, int j) {
+      Eight m;
+      std::memcpy(&m, entries + 8 * (i * ConformalVector::Count + j), sizeof m);
+      return m;
+    };
+    Eight r[ConformalVector::Count];
+    detail::conformalProduct(entry, x.c.data(), r);
     Eight image[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      image[k] = r[ConformalVector::E1 + k] / alpha;
-    }
-    auto finite = [largest](const Eight& v) { return (v < 0.0 ? -v : v) <= largest; };
-    const auto ok =
-      (alpha != 0.0) & finite(alpha) & finite(image[0]) & finite(image[1]) & finite(image[2]);
+    const auto ok = detail::normalizedLanes(r, image);
     const int lanes = static_cast<int>(std::min<std::size_t>(8, this->Count - first));
     for (int l = 0; l < lanes; ++l)
     {

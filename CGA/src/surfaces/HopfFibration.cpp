@@ -8,6 +8,7 @@
 #include "cga/PointPairs.h"
 #include "cga/PointSandwich.h"
 
+#include "../ConformalLanes.h"
 #include "../LaneClones.h"
 
 #include <algorithm>
@@ -24,7 +25,7 @@ constexpr double kPi = 3.14159265358979323846;
 // from the origin for the unit circle: far beyond any useful clip radius).
 constexpr double kInfinityWeight = 1e-13;
 
-// fiberPoints' loop over the circle's points, eight at a time in LaneClones.h's Eight, with the
+// fiberPoints' loop over the circle's points, eight at a time (ConformalLanes.h), with the
 // operations of the one-point code in its order (up(x), applyMatrix's sums from 0, maxAbs,
 // normalizePoint's divisions, the frame's sums): the same bits. Points sent to infinity (or not
 // finite) are NaN.
@@ -54,32 +55,17 @@ void circleImages(const std::array<double, 25>& matrix, const Vec3* circle, std:
     const Eight& pz = x[ConformalVector::E3];
     x[ConformalVector::NI] = 0.5 * (px * px + py * py + pz * pz);
     Eight r[C];
-    for (int i = 0; i < C; ++i)
-    {
-      Eight s = Eight{};
-      for (int j = 0; j < C; ++j)
-      {
-        s += matrix[static_cast<std::size_t>(i * C + j)] * x[j];
-      }
-      r[i] = s;
-    }
+    detail::conformalProduct(
+      [&matrix](int i, int j) { return matrix[static_cast<std::size_t>(i * C + j)]; }, x, r);
     Eight largest = Eight{};
     for (int i = 0; i < C; ++i)
     {
-      const Eight magnitude = r[i] < 0.0 ? -r[i] : r[i];
+      const Eight magnitude = detail::magnitude(r[i]);
       largest = (magnitude > largest) | (magnitude != magnitude) ? magnitude : largest;
     }
-    const Eight alpha = r[ConformalVector::NO];
-    const Eight weight = alpha < 0.0 ? -alpha : alpha;
     Eight p[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      p[k] = r[ConformalVector::E1 + k] / alpha;
-    }
-    const double largestDouble = std::numeric_limits<double>::max();
-    auto finite = [&](const Eight& v) { return (v < 0.0 ? -v : v) <= largestDouble; };
-    const auto kept = (weight > kInfinityWeight * largest) & (alpha != 0.0) & finite(alpha) &
-      finite(p[0]) & finite(p[1]) & finite(p[2]);
+    const auto kept = (detail::magnitude(r[ConformalVector::NO]) > kInfinityWeight * largest) &
+      detail::normalizedLanes(r, p);
     const double frame[3][3] = { { a.x, b.x, n.x }, { a.y, b.y, n.y }, { a.z, b.z, n.z } };
     const double origin[3] = { center.x, center.y, center.z };
     Eight world[3];
