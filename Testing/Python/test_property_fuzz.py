@@ -12,6 +12,12 @@ failure prints a one-line reproducer.
         /usr/bin/python3 Testing/Python/test_property_fuzz.py [--seed S] [--trials N]
     ... test_property_fuzz.py --seed S --trial T     # replays one trial here, printing its calls
 
+    ... test_property_fuzz.py --found                # the kept recipes of fuzz_found.json
+
+Every failure the fuzz once found is kept in fuzz_found.json as its recipe (the calls, which no
+later change of the recipe generator alters) and replayed by --found (ctest Python.PropertyFuzzFound),
+each in a process of its own, so that a fixed defect stays fixed whatever the seeds reach.
+
 The seed is fixed in CI (DEFAULT_SEED); BOOSTEDSURFACES_FUZZ_SEED or --seed gives another, and
 BOOSTEDSURFACES_FUZZ_TRIALS or --trials another number of trials. The process sets its own
 environment before VTK starts: a small memory budget (--memory-budget, so that nothing big is
@@ -52,6 +58,9 @@ def arguments():
                                     DEFAULT_TRIALS))
     parser.add_argument("--first", type=int, default=0, help="the first trial's number")
     parser.add_argument("--trial", type=int, help="replay this one trial in this process")
+    parser.add_argument("--found", action="store_true",
+                        help="replay every recipe of fuzz_found.json, each in a process")
+    parser.add_argument("--found-case", type=int, help=argparse.SUPPRESS)  # one, in this process
     parser.add_argument("--timeout", type=float, default=60.0, help="seconds a trial may take")
     parser.add_argument("--jobs", type=int, default=1, help="worker processes at once")
     parser.add_argument("--memory-budget", default="32M",
@@ -105,7 +114,11 @@ class MessageLog:
 
 def run_trial(models, log, seed, trial, verbose=False):
     """Runs one trial; returns (problems, statistics)."""
-    recipe = fuzz_recipe.make_recipe(models, seed, trial)
+    return run_recipe(models, log, fuzz_recipe.make_recipe(models, seed, trial), verbose)
+
+
+def run_recipe(models, log, recipe, verbose=False):
+    """Runs one recipe (fuzz_recipe.make_recipe's, or a kept one); returns (problems, statistics)."""
     if verbose:
         print(fuzz_recipe.describe(recipe).replace("algorithm.SetInputDataObject", "# input"))
     model = next(m for m in models if m.name == recipe["class"])
@@ -170,8 +183,9 @@ def simulated_failures():
     (test_property_fuzz_harness.py) makes those trials go wrong. In the worker: "crash" aborts,
     "hang" sleeps, "cut" writes half a result line and dies (a line that cannot be read), "exit"
     ends the worker quietly before the trial begins. In the driver: "driver-error" raises at
-    the trial's result (a bug of the driver itself). The item "late-eof" (no trial) is
-    simulated_load's."""
+    the trial's result (a bug of the driver itself). With --found, "found-crash" and
+    "found-hang" make the kept case of that number abort or hang. The item "late-eof" (no
+    trial) is simulated_load's."""
     items = os.environ.get("BOOSTEDSURFACES_FUZZ_SIMULATE", "").split(",")
     return {int(trial): kind for kind, trial in (item.split(":") for item in items
                                                  if ":" in item)}
@@ -366,18 +380,21 @@ def run_worker(first, end, class_names, failures, simulated):
             child.wait()
 
 
-def ended_how(code, stderr):
-    """How a worker ended: (its signal or exit code, the last lines of its stderr)."""
+def exit_description(code):
+    """A process's return code in words: its signal, or its exit code."""
     if code < 0:
         try:
-            how = "signal %s" % signal.Signals(-code).name
+            return "signal %s" % signal.Signals(-code).name
         except ValueError:  # a signal without a name (a real-time one)
-            how = "signal %d" % -code
-    else:
-        how = "exit code %d" % code
+            return "signal %d" % -code
+    return "exit code %d" % code
+
+
+def ended_how(code, stderr):
+    """How a worker ended: (its signal or exit code, the last lines of its stderr)."""
     stderr.seek(0)
     tail = stderr.read().decode(errors="replace").strip().splitlines()[-12:]
-    return how, " | ".join(tail) or "nothing on stderr"
+    return exit_description(code), " | ".join(tail) or "nothing on stderr"
 
 
 def drive_span(first, end, class_names, failures):
@@ -479,12 +496,52 @@ def drive():
 
 
 def replay(trial):
-    models = fuzz_recipe.discover()
-    problems, _ = run_trial(models, MessageLog(), ARGS.seed, trial, verbose=True)
+    return replay_recipe(fuzz_recipe.make_recipe(fuzz_recipe.discover(), ARGS.seed, trial),
+                         "trial %d" % trial)
+
+
+def replay_recipe(recipe, name):
+    problems, _ = run_recipe(fuzz_recipe.discover(), MessageLog(), recipe, verbose=True)
     for category, text in problems:
         print("%s [%s] %s" % ("KNOWN ISSUE" if excused(category) else "FAIL", category, text))
-    print("trial %d: %s" % (trial, "passed" if not problems else "%d problems" % len(problems)))
+    print("%s: %s" % (name, "passed" if not problems else "%d problems" % len(problems)))
     return 1 if any(not excused(category) for category, _ in problems) else 0
+
+
+FOUND_FILE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "fuzz_found.json")
+
+
+def found_cases():
+    """The kept recipes: [{"found": where, "defect": what it showed, "recipe": calls}]."""
+    with open(FOUND_FILE) as stream:
+        return json.load(stream)
+
+
+def replay_found():
+    """Each kept recipe in a process of its own (a crash or hang is that case's failure)."""
+    cases = found_cases()
+    failed = 0
+    for k, case in enumerate(cases):
+        command = [sys.executable, os.path.abspath(__file__), "--memory-budget",
+                   ARGS.memory_budget, "--found-case", str(k)]
+        try:
+            done = subprocess.run(command, capture_output=True, text=True, errors="replace",
+                                  timeout=ARGS.timeout)
+            code, output = done.returncode, done.stdout + done.stderr
+        except subprocess.TimeoutExpired as expired:
+            code, output = None, (expired.stdout or b"").decode(errors="replace")
+        verdict = ("passed" if code == 0 else "hung (more than %g s)" % ARGS.timeout
+                   if code is None else "failed (%s)" % exit_description(code))
+        print("%s case %d (%s, %s; %s): %s" % ("ok" if code == 0 else "FAIL", k,
+                                               case["recipe"]["class"], case["found"],
+                                               case["defect"], verdict), flush=True)
+        if code != 0:
+            failed += 1
+            print("  " + "\n  ".join(output.strip().splitlines()[-15:]))
+            print("  reproduce: PYTHONPATH=%s %s" % (os.environ.get("PYTHONPATH", ""),
+                                                   " ".join(command)))
+    print("%d of %d kept recipes failed" % (failed, len(cases)))
+    return 1 if failed or not cases else 0
 
 
 if __name__ == "__main__":
@@ -492,5 +549,15 @@ if __name__ == "__main__":
         worker(ARGS.worker)
     elif ARGS.trial is not None:
         sys.exit(replay(ARGS.trial))
+    elif ARGS.found_case is not None:
+        simulated_found = simulated_failures().get(ARGS.found_case)
+        if simulated_found == "found-crash":
+            os.abort()
+        if simulated_found == "found-hang":
+            time.sleep(3600)
+        sys.exit(replay_recipe(found_cases()[ARGS.found_case]["recipe"],
+                               "kept case %d" % ARGS.found_case))
+    elif ARGS.found:
+        sys.exit(replay_found())
     else:
         sys.exit(drive())

@@ -2,7 +2,8 @@
 kills its worker process, a trial that hangs, a worker that writes a line that cannot be read or
 ends before its trials, and an error of the driver itself are each reported as failures with the
 one-line reproducers of their trials, the trials after them still run (or fail too, after the
-driver's error), no trial is lost unreported, and the run fails. The failures are simulated
+driver's error), no trial is lost unreported, and the run fails; so is a kept recipe
+(fuzz_found.json, --found) that kills its process or hangs. The failures are simulated
 (BOOSTEDSURFACES_FUZZ_SIMULATE) in short runs.
 
     PYTHONPATH=<build>/lib/python3.11/site-packages:Testing/Support \\
@@ -94,6 +95,18 @@ class HarnessTest(unittest.TestCase):
         self.assertEqual(result.returncode, 0, shown(result))
         self.assertIn("# seed 5 trial 3: vtk", result.stdout, shown(result))
         self.assertIn("trial 3: passed", result.stdout, shown(result))
+
+    def test_a_kept_recipe_that_crashes_or_hangs_fails_the_replay(self):
+        for simulate, verdict in (("found-crash:0", "failed (signal SIGABRT)"),
+                                  ("found-hang:0", "hung (more than 5 s)")):
+            result = run_fuzz(simulate, "--found", "--timeout", "5")
+            self.assertEqual(result.returncode, 1, shown(result))
+            failed = [line for line in result.stdout.splitlines() if line.startswith("FAIL case")]
+            self.assertEqual(len(failed), 1, shown(result))
+            self.assertTrue(failed[0].startswith("FAIL case 0 ") and failed[0].endswith(verdict),
+                            shown(result))
+            self.assertIn("--found-case 0", result.stdout, shown(result))
+            self.assertRegex(result.stdout, r"(?m)^1 of \d+ kept recipes failed$", shown(result))
 
 
 if __name__ == "__main__":
