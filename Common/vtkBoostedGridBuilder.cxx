@@ -470,75 +470,108 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(
   auto* doublePoints = vtkDoubleArray::FastDownCast(points->GetData());
   auto* floatPoints = vtkFloatArray::FastDownCast(points->GetData());
 
-  // Each segment writes its own range of every array.
+  // Each segment writes its own range of every array: first which columns become its points
+  // (point offsets[i] + j is column newColumns[j]), then each array in a pass of its own (one
+  // output stream at a time: writing every array's values point by point, six to ten streams at
+  // once, was 21 % of a Hopf fibration update).
   forEach(segments.size(), columnsPerSegment, [&](size_t i) {
     const Segment& s = segments[i];
     const int r = s.Row;
-    const double v = (r % this->BlockRows()) * vScale; // the texture coordinate of the row
-    vtkIdType next = offsets[i];
-    // The normals of columns [runFirst, runFirst + NormalsPerRun), made as the walk reaches them.
-    double runNormals[3 * NormalsPerRun];
-    int runFirst = -NormalsPerRun;
+    const vtkIdType first = offsets[i];
+    std::vector<int> newColumns;
+    newColumns.reserve(static_cast<size_t>(counts[i]));
     walk(
       s,
       [&](int c) {
-        const vtkIdType id = next++;
+        const long long id = first + static_cast<vtkIdType>(newColumns.size());
+        newColumns.push_back(c);
         ids[this->Index(r, c)] = id;
-        const double* relative = &this->Points[3 * this->Index(r, c)];
-        const double p[3] = { this->Origin[0] + relative[0], this->Origin[1] + relative[1],
-          this->Origin[2] + relative[2] };
-        for (int k = 0; k < 3; ++k)
-        {
-          if (doublePoints)
-          {
-            doublePoints->SetValue(3 * id + k, p[k]);
-          }
-          else
-          {
-            floatPoints->SetValue(3 * id + k, static_cast<float>(p[k]));
-          }
-        }
-        if (withSurfaceAttributes)
-        {
-          if (c >= runFirst + NormalsPerRun)
-          {
-            runFirst = c;
-            this->ComputeNormals(r, c, std::min(s.LastColumn, c + NormalsPerRun), runNormals);
-          }
-          const double* n = runNormals + 3 * (c - runFirst);
-          for (int k = 0; k < 3; ++k)
-          {
-            normals->SetValue(3 * id + k, static_cast<float>(n[k]));
-          }
-        }
-        if (withTCoords)
-        {
-          tcoords->SetValue(2 * id, static_cast<float>(c * uScale));
-          tcoords->SetValue(2 * id + 1, static_cast<float>(v));
-        }
-        for (size_t k = 0; k < parameters.size(); ++k)
-        {
-          const Parameter& parameter = this->Parameters[k];
-          parameters[k]->SetValue(id, parameter.Values[parameter.PerRow ? r : c]);
-        }
-        for (size_t k = 0; k < integerParameters.size(); ++k)
-        {
-          integerParameters[k]->SetValue(id, this->IntegerParameters[k].second[r]);
-        }
-        for (size_t k = 0; k < sampleOutputs.size(); ++k)
-        {
-          const SampleArray& values = this->SampleArrays[k];
-          const int n = values.Components;
-          const double* from = &values.Values[static_cast<size_t>(n) * this->Index(r, c)];
-          double* to = sampleOutputs[k] + static_cast<size_t>(n) * id;
-          for (int j = 0; j < n; ++j)
-          {
-            to[j] = from[j];
-          }
-        }
-        return static_cast<long long>(id);
+        return id;
       },
       [&](int c, long long id) { ids[this->Index(r, c)] = id; });
+    const size_t n = newColumns.size();
+    auto sample = [&](size_t j) { return static_cast<size_t>(this->Index(r, newColumns[j])); };
+    if (doublePoints)
+    {
+      double* to = doublePoints->GetPointer(3 * first);
+      for (size_t j = 0; j < n; ++j)
+      {
+        const double* relative = &this->Points[3 * sample(j)];
+        for (int k = 0; k < 3; ++k)
+        {
+          to[3 * j + k] = this->Origin[k] + relative[k];
+        }
+      }
+    }
+    else
+    {
+      float* to = floatPoints->GetPointer(3 * first);
+      for (size_t j = 0; j < n; ++j)
+      {
+        const double* relative = &this->Points[3 * sample(j)];
+        for (int k = 0; k < 3; ++k)
+        {
+          to[3 * j + k] = static_cast<float>(this->Origin[k] + relative[k]);
+        }
+      }
+    }
+    if (withSurfaceAttributes)
+    {
+      // The normals of columns [runFirst, runFirst + NormalsPerRun), made as the pass reaches them.
+      double runNormals[3 * NormalsPerRun];
+      int runFirst = -NormalsPerRun;
+      float* to = normals->GetPointer(3 * first);
+      for (size_t j = 0; j < n; ++j)
+      {
+        const int c = newColumns[j];
+        if (c >= runFirst + NormalsPerRun)
+        {
+          runFirst = c;
+          this->ComputeNormals(r, c, std::min(s.LastColumn, c + NormalsPerRun), runNormals);
+        }
+        for (int k = 0; k < 3; ++k)
+        {
+          to[3 * j + k] = static_cast<float>(runNormals[3 * (c - runFirst) + k]);
+        }
+      }
+    }
+    if (withTCoords)
+    {
+      const float v = static_cast<float>((r % this->BlockRows()) * vScale); // the row's
+      float* to = tcoords->GetPointer(2 * first);
+      for (size_t j = 0; j < n; ++j)
+      {
+        to[2 * j] = static_cast<float>(newColumns[j] * uScale);
+        to[2 * j + 1] = v;
+      }
+    }
+    for (size_t k = 0; k < parameters.size(); ++k)
+    {
+      const Parameter& parameter = this->Parameters[k];
+      double* to = parameters[k]->GetPointer(first);
+      for (size_t j = 0; j < n; ++j)
+      {
+        to[j] = parameter.Values[parameter.PerRow ? r : newColumns[j]];
+      }
+    }
+    for (size_t k = 0; k < integerParameters.size(); ++k)
+    {
+      std::fill_n(integerParameters[k]->GetPointer(first), n, this->IntegerParameters[k].second[r]);
+    }
+    for (size_t k = 0; k < sampleOutputs.size(); ++k)
+    {
+      const SampleArray& values = this->SampleArrays[k];
+      const size_t components = static_cast<size_t>(values.Components);
+      double* to = sampleOutputs[k] + components * static_cast<size_t>(first);
+      for (size_t j = 0; j < n; ++j)
+      {
+        const double* from = &values.Values[components * sample(j)];
+        for (size_t m = 0; m < components; ++m)
+        {
+          to[components * j + m] = from[m];
+        }
+      }
+    }
   });
   if (merge)
   {
