@@ -131,13 +131,20 @@ Vec3 planeNormal(const Vec3* points, std::size_t count, Vec3 center)
   const bool multiply = e >= -1021 && e <= 1021;
   const double factor = multiply ? std::ldexp(1.0, -e) : 1.0;
   auto scaledPoint = [&](Vec3 p) { return multiply ? (p - center) * factor : scaledBy(p - center, e); };
+  // Each point checked and scaled once, carried to the next pair.
   Vec3 newell{};
+  bool previousFinite = count > 0 && isFinite(points[0]);
+  Vec3 previous = previousFinite ? scaledPoint(points[0]) : Vec3{};
   for (std::size_t i = 1; i < count; ++i)
   {
-    if (isFinite(points[i - 1]) && isFinite(points[i]))
+    const bool finite = isFinite(points[i]);
+    const Vec3 current = finite ? scaledPoint(points[i]) : Vec3{};
+    if (previousFinite && finite)
     {
-      newell = newell + cross(scaledPoint(points[i - 1]), scaledPoint(points[i]));
+      newell = newell + cross(previous, current);
     }
+    previous = current;
+    previousFinite = finite;
   }
   const double size = std::sqrt(dot(newell, newell));
   return size > 0.0 ? newell * (1.0 / size) : Vec3{};
