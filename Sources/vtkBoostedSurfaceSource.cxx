@@ -108,23 +108,47 @@ int vtkBoostedSurfaceSource::RequestData(
     const cga::BoostedCircleRow row(centered, lambdas[r]);
     // The row's points about the circle's center (NaN where mapped to infinity), for its plane.
     std::vector<cga::Vec3> rowPoints(columns, cga::Vec3{ NAN, NAN, NAN });
-    // Declared once per row, not zeroed per sample: each call sets the members it returns (the
-    // point; with the first or second derivatives), all that Set reads.
-    cga::SurfaceDerivatives x;
-    for (int c = 0; c < columns; ++c)
+    if (exact && !curvatures)
     {
-      // False: the point went to infinity; left NaN and dropped.
-      const bool mapped = !exact ? row.point(circleSamples[c].point, x.point)
-        : curvatures             ? row.derivatives(circleSamples[c], x)
-                                 : row.firstDerivatives(circleSamples[c], x);
-      if (mapped)
+      // The points and normals eight samples at a time (the same bits as firstDerivatives and
+      // cga::surfaceNormal, sample by sample).
+      std::vector<cga::Vec3> normals(columns);
+      std::vector<unsigned char> state(columns);
+      row.pointsAndNormals(circleSamples.data(), static_cast<size_t>(columns), rowPoints.data(),
+        normals.data(), state.data());
+      for (int c = 0; c < columns; ++c)
       {
-        const double point[3] = { x.point.x, x.point.y, x.point.z };
-        grid.SetPoint(r, c, point);
-        rowPoints[c] = x.point;
-        if (exact)
+        if (state[c] > 0) // 0: the point went to infinity; left NaN and dropped
         {
-          exact->Set(r, c, x);
+          const double point[3] = { rowPoints[c].x, rowPoints[c].y, rowPoints[c].z };
+          grid.SetPoint(r, c, point);
+        }
+        if (state[c] > 1)
+        {
+          const double normal[3] = { normals[c].x, normals[c].y, normals[c].z };
+          grid.SetSampleNormal(r, c, normal);
+        }
+      }
+    }
+    else
+    {
+      // Declared once per row, not zeroed per sample: each call sets the members it returns (the
+      // point; with the derivatives), all that Set reads.
+      cga::SurfaceDerivatives x;
+      for (int c = 0; c < columns; ++c)
+      {
+        // False: the point went to infinity; left NaN and dropped.
+        const bool mapped = exact ? row.derivatives(circleSamples[c], x)
+                                  : row.point(circleSamples[c].point, x.point);
+        if (mapped)
+        {
+          const double point[3] = { x.point.x, x.point.y, x.point.z };
+          grid.SetPoint(r, c, point);
+          rowPoints[c] = x.point;
+          if (exact)
+          {
+            exact->Set(r, c, x);
+          }
         }
       }
     }

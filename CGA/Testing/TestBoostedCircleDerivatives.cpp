@@ -12,6 +12,8 @@
 #include "cga/surfaces/BoostedCircle.h"
 
 #include <cmath>
+#include <cstring>
+#include <vector>
 
 namespace
 {
@@ -182,5 +184,69 @@ TEST(BoostedCircleDerivatives, BoostInTheCirclesPlaneSweepsThatPlane)
     }
   }
   EXPECT_GE(regular, 12);
+}
+
+// pointsAndNormals, eight samples side by side, against firstDerivatives then surfaceNormal one
+// sample at a time, bit for bit: random families at unit scale and at 1e-120 and 1e120 (squared
+// derivative lengths outside [2^-200, 2^200]: the lane takes surfaceNormal itself), and samples
+// that are not finite (no point), with a zero tangent (degenerate: the point without a normal) or
+// a tangent of 1e150 (out of range), in runs of every length from 0 to 19 at every offset.
+TEST(BoostedCircleDerivatives, PointsAndNormalsAreTheOneSampleCodeBitForBit)
+{
+  cgatest::Random random(1307);
+  int kinds[3] = { 0, 0, 0 };
+  for (double scale : { 1.0, 1e-120, 1e120 })
+  {
+    for (int trial = 0; trial < 6; ++trial)
+    {
+      BoostedCircle family;
+      family.center = scale * random.vec3(1.0);
+      family.normal = random.unit();
+      family.radius = scale * random.uniform(0.5, 2.0);
+      family.boostLocation = family.center + scale * random.vec3(1.0);
+      family.boostDirection = (random.uniform(0.2, 1.0) / scale) * random.unit();
+      const BoostedCircleRow row(family, random.uniform(-0.5, 0.5));
+      std::vector<BoostedCircle::CircleSample> samples;
+      for (int c = 0; c < 19; ++c)
+      {
+        samples.push_back(family.circleSample(random.uniform(0.0, 6.283)));
+      }
+      samples[2].point.y = NAN;
+      samples[5].tangent = Vec3{};
+      samples[7].tangent = 1e150 * samples[7].tangent;
+      samples[11].point.x = INFINITY;
+      for (std::size_t offset = 0; offset < samples.size(); ++offset)
+      {
+        for (std::size_t count = 0; offset + count <= samples.size(); ++count)
+        {
+          const Vec3 untouched{ 42.0, 42.0, 42.0 };
+          std::vector<Vec3> points(count + 1, untouched), normals(count + 1, untouched);
+          std::vector<unsigned char> state(count + 1, 9);
+          row.pointsAndNormals(
+            samples.data() + offset, count, points.data(), normals.data(), state.data());
+          for (std::size_t i = 0; i < count; ++i)
+          {
+            SurfaceDerivatives x;
+            Vec3 normal = untouched;
+            const bool mapped = row.firstDerivatives(samples[offset + i], x);
+            const unsigned char expected =
+              !mapped ? 0 : surfaceNormal(x.du, x.dv, normal) ? 2 : 1;
+            ASSERT_EQ(state[i], expected) << scale << " " << offset << " " << i;
+            ++kinds[expected];
+            const Vec3 point = mapped ? x.point : untouched;
+            EXPECT_EQ(0, std::memcmp(&points[i], &point, sizeof point)) << offset << " " << i;
+            EXPECT_EQ(0, std::memcmp(&normals[i], &normal, sizeof normal)) << offset << " " << i;
+          }
+          EXPECT_EQ(state[count], 9); // nothing written past the run
+          EXPECT_EQ(points[count].x, 42.0);
+          EXPECT_EQ(normals[count].x, 42.0);
+        }
+      }
+    }
+  }
+  // Every outcome was met (the not-finite samples, the zero tangent, the regular ones).
+  EXPECT_GT(kinds[0], 0);
+  EXPECT_GT(kinds[1], 0);
+  EXPECT_GT(kinds[2], 0);
 }
 } // namespace

@@ -18,16 +18,6 @@ namespace
 using detail::Eight;
 constexpr int L = 8;
 
-BOOSTED_FORCE_INLINE Eight squareRoot(Eight x)
-{
-  Eight r;
-  for (int l = 0; l < L; ++l)
-  {
-    r[l] = __builtin_sqrt(x[l]);
-  }
-  return r;
-}
-
 // Per lane, whether the square is squareIsSafe's (all-ones where it is).
 BOOSTED_FORCE_INLINE auto safeSquare(Eight square)
 {
@@ -66,7 +56,7 @@ void crossedDifferenceNormals(const double* left, const double* right, const dou
     }
     const Eight aSquare = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
     const Eight bSquare = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
-    const Eight aLength = squareRoot(aSquare), bLength = squareRoot(bSquare);
+    const Eight aLength = detail::squareRoot(aSquare), bLength = detail::squareRoot(bSquare);
     for (int k = 0; k < 3; ++k)
     {
       a[k] = a[k] / aLength;
@@ -75,7 +65,7 @@ void crossedDifferenceNormals(const double* left, const double* right, const dou
     const Eight normal[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
       a[0] * b[1] - a[1] * b[0] };
     const Eight length =
-      squareRoot(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+      detail::squareRoot(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
     const auto usable = safeSquare(aSquare) & safeSquare(bSquare) & (length > minimumSine);
     const Eight inverse = 1.0 / length;
     for (int l = 0; l < n; ++l)

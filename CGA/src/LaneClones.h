@@ -33,6 +33,19 @@ BOOSTED_FORCE_INLINE Lanes magnitude(Lanes v)
   return v < 0.0 ? -v : v;
 }
 
+/// Per lane sqrt, correctly rounded as std::sqrt: one vector instruction in the files compiled
+/// with -fno-math-errno (CMakeLists.txt), a call per lane elsewhere (the same values).
+template <class Lanes>
+BOOSTED_FORCE_INLINE Lanes squareRoot(Lanes x)
+{
+  Lanes r;
+  for (int l = 0; l < static_cast<int>(sizeof(Lanes) / sizeof(double)); ++l)
+  {
+    r[l] = __builtin_sqrt(x[l]);
+  }
+  return r;
+}
+
 /// Per lane, all ones where v is finite, as std::isfinite (a NaN fails the comparison).
 template <class Lanes>
 BOOSTED_FORCE_INLINE auto finiteLanes(Lanes v)

@@ -4,9 +4,13 @@
 #include "cga/PointPairs.h"
 #include "cga/PointSandwich.h"
 
+#include "../ConformalLanes.h"
 #include "../ForceInline.h"
+#include "../LaneClones.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <sstream>
 
 namespace cga
@@ -198,5 +202,100 @@ bool BoostedCircleRow::compute(
     out.dvv = (yVV.euclidean() - 2.0 * yV.weight() * xV - yVV.weight() * point) * inverseW;
   }
   return true;
+}
+
+// compute<false> and surfaceNormal (scaledFirst's common case: squared lengths within
+// [2^-200, 2^200]) on eight samples, in their operations and order (ConformalLanes.h: times' sums
+// from 0 are conformalProduct's, normalizePoint is normalizedLanes); a lane outside that range
+// takes surfaceNormal itself.
+BOOSTED_LANE_CLONES
+void BoostedCircleRow::pointsAndNormals(const BoostedCircle::CircleSample* samples,
+  std::size_t count, Vec3* points, Vec3* normals, unsigned char* state) const
+{
+  using detail::Eight;
+  constexpr int L = 8, C = ConformalVector::Count;
+  constexpr int NO = ConformalVector::NO, E1 = ConformalVector::E1, NI = ConformalVector::NI;
+  const std::array<double, 25>& boost = this->BoostColumns;
+  const std::array<double, 25>& commutator = this->CommutatorColumns;
+  auto boostEntry = [&boost](int i, int j) { return boost[static_cast<std::size_t>(j * C + i)]; };
+  auto commutatorEntry = [&commutator](
+                           int i, int j) { return commutator[static_cast<std::size_t>(j * C + i)]; };
+  for (std::size_t first = 0; first < count; first += L)
+  {
+    const int lanes = static_cast<int>(std::min<std::size_t>(L, count - first));
+    // The samples' points and tangents by component (a partial block repeats its last sample).
+    alignas(64) double in[2][3][L];
+    for (int l = 0; l < L; ++l)
+    {
+      const BoostedCircle::CircleSample& s =
+        samples[first + static_cast<std::size_t>(std::min(l, lanes - 1))];
+      const Vec3 from[2] = { s.point, s.tangent };
+      for (int v = 0; v < 2; ++v)
+      {
+        in[v][0][l] = from[v].x;
+        in[v][1][l] = from[v].y;
+        in[v][2][l] = from[v].z;
+      }
+    }
+    Eight p[3], t[3];
+    std::memcpy(p, in[0], sizeof p);
+    std::memcpy(t, in[1], sizeof t);
+    Eight x[C], xTheta[C];
+    x[NO] = Eight{} + 1.0;
+    xTheta[NO] = Eight{};
+    for (int k = 0; k < 3; ++k)
+    {
+      x[E1 + k] = p[k];
+      xTheta[E1 + k] = t[k];
+    }
+    x[NI] = 0.5 * (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    xTheta[NI] = p[0] * t[0] + p[1] * t[1] + p[2] * t[2];
+    Eight y[C], yU[C], yV[C];
+    detail::conformalProduct(boostEntry, x, y);
+    Eight point[3];
+    const auto mapped = detail::normalizedLanes(y, point);
+    detail::conformalProduct(boostEntry, xTheta, yU);
+    detail::conformalProduct(commutatorEntry, y, yV);
+    const Eight inverseW = 1.0 / y[NO];
+    Eight du[3], dv[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      du[k] = (yU[E1 + k] - yU[NO] * point[k]) * inverseW;
+      dv[k] = (yV[E1 + k] - yV[NO] * point[k]) * inverseW;
+    }
+    const Eight uu = du[0] * du[0] + du[1] * du[1] + du[2] * du[2];
+    const Eight vv = dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2];
+    const Eight larger = uu < vv ? vv : uu; // std::max(uu, vv)
+    const auto inRange = (larger >= 0x1p-200) & (larger <= 0x1p200);
+    const Eight area[3] = { du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2],
+      du[0] * dv[1] - du[1] * dv[0] };
+    const Eight areaSquared = area[0] * area[0] + area[1] * area[1] + area[2] * area[2];
+    const auto regular = areaSquared > 1e-24 * larger * larger;
+    const Eight scale = 1.0 / detail::squareRoot(areaSquared);
+    for (int l = 0; l < lanes; ++l)
+    {
+      const std::size_t i = first + static_cast<std::size_t>(l);
+      if (!mapped[l])
+      {
+        state[i] = 0;
+        continue;
+      }
+      points[i] = { point[0][l], point[1][l], point[2][l] };
+      bool normal = regular[l] != 0;
+      if (inRange[l])
+      {
+        if (normal)
+        {
+          normals[i] = { area[0][l] * scale[l], area[1][l] * scale[l], area[2][l] * scale[l] };
+        }
+      }
+      else
+      {
+        normal = surfaceNormal(
+          { du[0][l], du[1][l], du[2][l] }, { dv[0][l], dv[1][l], dv[2][l] }, normals[i]);
+      }
+      state[i] = normal ? 2 : 1;
+    }
+  }
 }
 } // namespace cga

@@ -12,6 +12,7 @@
 #include "cga/Vec3.h"
 
 #include <array>
+#include <cstddef>
 #include <string>
 
 namespace cga
@@ -80,6 +81,14 @@ public:
   /// The same with the first derivatives only (the second ones left as they are in out): what
   /// the normal needs, at half the cost.
   bool firstDerivatives(const BoostedCircle::CircleSample& sample, SurfaceDerivatives& out) const;
+
+  /// The points and unit normals of `count` circle samples, eight side by side: state[i] is 0
+  /// where firstDerivatives is false (the point at infinity; points[i] and normals[i] unchanged),
+  /// 1 where only the point is given (surfaceNormal of the first derivatives is false: a
+  /// degenerate sample; normals[i] unchanged) and 2 with both. The same bits as firstDerivatives
+  /// and then surfaceNormal, sample by sample.
+  void pointsAndNormals(const BoostedCircle::CircleSample* samples, std::size_t count,
+    Vec3* points, Vec3* normals, unsigned char* state) const;
 
   /// The point alone: PointMap(K(lambda)).apply.
   bool point(Vec3 p, Vec3& out) const { return this->Boost.apply(p, out); }
