@@ -31,11 +31,20 @@ void vtkBoostedCurvatureArrays::Set(int row, int column, const cga::SurfaceDeriv
     }
     return;
   }
-  const cga::SurfaceCurvature curvature = cga::surfaceCurvature(derivatives);
+  this->SetCurvature(row, column, cga::surfaceCurvature(derivatives));
+}
+
+void vtkBoostedCurvatureArrays::SetCurvature(
+  int row, int column, const cga::SurfaceCurvature& curvature)
+{
   if (curvature.regular)
   {
     const double normal[3] = { curvature.normal.x, curvature.normal.y, curvature.normal.z };
     this->Grid.SetSampleNormal(row, column, normal);
+  }
+  if (this->Curvatures < 0)
+  {
+    return;
   }
   // A degenerate sample's SurfaceCurvature is all zeros: written as it is.
   double* k = this->Grid.SampleValues(this->Curvatures, row, column);

@@ -27,6 +27,7 @@ class vtkPointData;
 
 namespace cga
 {
+struct SurfaceCurvature;
 struct SurfaceDerivatives;
 }
 
@@ -50,6 +51,9 @@ public:
   /// The sample's normal (where regular) and, with the arrays, its values. Thread-safe for
   /// distinct samples.
   void Set(int row, int column, const cga::SurfaceDerivatives& derivatives);
+  /// The same from the sample's curvature (cga::surfaceCurvature of its derivatives): its normal
+  /// and, with the arrays, its values.
+  void SetCurvature(int row, int column, const cga::SurfaceCurvature& curvature);
 
   /// Point `id` of `data` was interpolated: its two principal directions back to unit length
   /// (zero vectors stay zero). Nothing when `data` has no PrincipalDirections.

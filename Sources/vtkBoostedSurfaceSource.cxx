@@ -130,25 +130,34 @@ int vtkBoostedSurfaceSource::RequestData(
         }
       }
     }
-    else
+    else if (exact)
     {
-      // Declared once per row, not zeroed per sample: each call sets the members it returns (the
-      // point; with the derivatives), all that Set reads.
-      cga::SurfaceDerivatives x;
+      // The points and curvatures eight samples at a time (the same bits as derivatives and
+      // cga::surfaceCurvature, sample by sample).
+      std::vector<cga::SurfaceCurvature> curvature(columns);
+      std::unique_ptr<bool[]> mapped(new bool[columns]);
+      row.curvatures(circleSamples.data(), static_cast<size_t>(columns), rowPoints.data(),
+        curvature.data(), mapped.get());
       for (int c = 0; c < columns; ++c)
       {
-        // False: the point went to infinity; left NaN and dropped.
-        const bool mapped = exact ? row.derivatives(circleSamples[c], x)
-                                  : row.point(circleSamples[c].point, x.point);
-        if (mapped)
+        if (mapped[c]) // false: the point went to infinity; left NaN and dropped
         {
-          const double point[3] = { x.point.x, x.point.y, x.point.z };
+          const double point[3] = { rowPoints[c].x, rowPoints[c].y, rowPoints[c].z };
           grid.SetPoint(r, c, point);
-          rowPoints[c] = x.point;
-          if (exact)
-          {
-            exact->Set(r, c, x);
-          }
+          exact->SetCurvature(r, c, curvature[c]);
+        }
+      }
+    }
+    else
+    {
+      for (int c = 0; c < columns; ++c)
+      {
+        cga::Vec3 point;
+        if (row.point(circleSamples[c].point, point)) // false: at infinity; left NaN and dropped
+        {
+          const double xyz[3] = { point.x, point.y, point.z };
+          grid.SetPoint(r, c, xyz);
+          rowPoints[c] = point;
         }
       }
     }

@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <vector>
 
 namespace
@@ -248,5 +249,97 @@ TEST(BoostedCircleDerivatives, PointsAndNormalsAreTheOneSampleCodeBitForBit)
   EXPECT_GT(kinds[0], 0);
   EXPECT_GT(kinds[1], 0);
   EXPECT_GT(kinds[2], 0);
+}
+
+bool sameBits(double a, double b)
+{
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+bool sameBits(Vec3 a, Vec3 b)
+{
+  return sameBits(a.x, b.x) && sameBits(a.y, b.y) && sameBits(a.z, b.z);
+}
+
+// curvatures, eight samples side by side, against derivatives then surfaceCurvature one sample at
+// a time, bit for bit (member by member): random families at 1, 1e-120, 1e-78 (where the area
+// element's square is subnormal without the rescaling) and 1e120 (first derivatives rescaled: the
+// lane takes surfaceCurvature itself), boosts anywhere, along the
+// circle's axis and in its plane (umbilics), and samples that are not finite, degenerate (a zero tangent), with a second derivative
+// of 1e200 (the second derivatives rescaled) or of zero, in runs of every length at every offset.
+TEST(BoostedCircleDerivatives, CurvaturesAreTheOneSampleCodeBitForBit)
+{
+  cgatest::Random random(1308);
+  int regular = 0, degenerate = 0, unmapped = 0;
+  for (double scale : { 1.0, 1e-120, 1e-78, 1e120 })
+  {
+    for (int trial = 0; trial < 6; ++trial)
+    {
+      BoostedCircle family;
+      family.center = scale * random.vec3(1.0);
+      family.normal = random.unit();
+      family.radius = scale * random.uniform(0.5, 2.0);
+      // Trials 1 and 4: the boost along the circle's axis (a surface of revolution); 2 and 5: in
+      // its plane through its center (the plane itself: every point an umbilic).
+      const int kind = trial % 3;
+      family.boostLocation = family.center + (kind == 0 ? scale * random.vec3(1.0) : Vec3{});
+      const Vec3 inPlane = normalized(cross(family.normal, random.unit()));
+      family.boostDirection = (random.uniform(0.2, 1.0) / scale) *
+        (kind == 0 ? random.unit() : kind == 1 ? family.normal : inPlane);
+      const BoostedCircleRow row(family, random.uniform(-0.5, 0.5));
+      std::vector<BoostedCircle::CircleSample> samples;
+      for (int c = 0; c < 19; ++c)
+      {
+        samples.push_back(family.circleSample(random.uniform(0.0, 6.283)));
+      }
+      samples[2].point.y = NAN;
+      samples[5].tangent = Vec3{};
+      samples[7].second = 1e200 * samples[7].second;
+      samples[9].second = Vec3{};
+      samples[11].point.x = INFINITY;
+      for (std::size_t offset = 0; offset < samples.size(); ++offset)
+      {
+        for (std::size_t count = 0; offset + count <= samples.size(); ++count)
+        {
+          const Vec3 untouched{ 42.0, 42.0, 42.0 };
+          std::vector<Vec3> points(count + 1, untouched);
+          std::vector<SurfaceCurvature> curvatures(count + 1);
+          curvatures[count].k1 = 42.0;
+          std::unique_ptr<bool[]> mapped(new bool[count + 1]);
+          mapped[count] = true;
+          row.curvatures(
+            samples.data() + offset, count, points.data(), curvatures.data(), mapped.get());
+          for (std::size_t i = 0; i < count; ++i)
+          {
+            SurfaceDerivatives x;
+            const bool expectedMapped = row.derivatives(samples[offset + i], x);
+            ASSERT_EQ(mapped[i], expectedMapped) << scale << " " << offset << " " << i;
+            if (!expectedMapped)
+            {
+              ++unmapped;
+              EXPECT_TRUE(sameBits(points[i], untouched));
+              continue;
+            }
+            EXPECT_TRUE(sameBits(points[i], x.point)) << scale << " " << offset << " " << i;
+            const SurfaceCurvature expected = surfaceCurvature(x);
+            const SurfaceCurvature& k = curvatures[i];
+            (expected.regular ? regular : degenerate) += 1;
+            EXPECT_EQ(k.regular, expected.regular);
+            EXPECT_TRUE(sameBits(k.normal, expected.normal) && sameBits(k.k1, expected.k1) &&
+              sameBits(k.k2, expected.k2) && sameBits(k.direction1, expected.direction1) &&
+              sameBits(k.direction2, expected.direction2) &&
+              sameBits(k.gaussian, expected.gaussian) && sameBits(k.mean, expected.mean))
+              << scale << " " << offset << " " << i;
+          }
+          EXPECT_TRUE(mapped[count]); // nothing written past the run
+          EXPECT_EQ(points[count].x, 42.0);
+          EXPECT_EQ(curvatures[count].k1, 42.0);
+        }
+      }
+    }
+  }
+  EXPECT_GT(regular, 0);
+  EXPECT_GT(degenerate, 0);
+  EXPECT_GT(unmapped, 0);
 }
 } // namespace

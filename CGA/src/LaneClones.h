@@ -22,6 +22,8 @@ namespace detail
 /// GCC's vector extension: eight doubles (a block of kernel::kLanes points, eight of a bivector's
 /// ten components, eight samples), for loops where GCC's own vectorization did worse.
 typedef double Eight __attribute__((vector_size(8 * sizeof(double))));
+/// A comparison's result on Eight: all ones in the lanes where it holds.
+using EightMask = decltype(Eight{} < Eight{});
 
 // Templates on the lane vector (Eight), so that only the files that use them, compiled with
 // -Wno-psabi, declare functions passing 64-byte vectors.

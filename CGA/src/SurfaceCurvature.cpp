@@ -1,6 +1,7 @@
 #include "cga/SurfaceCurvature.h"
 
 #include "ForceInline.h"
+#include "SurfaceCurvatureSteps.h"
 
 #include <algorithm>
 #include <cmath>
@@ -150,6 +151,33 @@ Vec3 planeNormal(const Vec3* points, std::size_t count, Vec3 center)
   return size > 0.0 ? newell * (1.0 / size) : Vec3{};
 }
 
+void principalDirections(Vec3 n, Vec3 t1, Vec3 t2, double w11, double w12, double w22,
+  double half, double radius, Vec3& direction1, Vec3& direction2)
+{
+  // The eigenvector of k1 at angle phi from e1, tan 2 phi = w12 / half, phi in (-pi/2, pi/2].
+  // Its sign: positive along the nearer of e1 and e2, so that it flips only where it is at 45
+  // degrees to both, not where it is along e2 (a surface of revolution's meridian is
+  // perpendicular to the parallels x_u: there cos phi is rounding, and its sign would flip from
+  // sample to sample). At an umbilic, where W's off-mean part is rounding, every direction is
+  // principal: e1.
+  const double size = std::max({ std::fabs(w11), std::fabs(w12), std::fabs(w22) });
+  const bool umbilic = radius <= 64.0 * std::numeric_limits<double>::epsilon() * size;
+  double along1 = 1.0, along2 = 0.0; // cos and sin of phi = 0, without the calls
+  if (!umbilic)
+  {
+    const double phi = 0.5 * std::atan2(w12, half);
+    along1 = std::cos(phi);
+    along2 = std::sin(phi);
+  }
+  if (std::fabs(along2) > along1 && along2 < 0.0)
+  {
+    along1 = -along1;
+    along2 = -along2;
+  }
+  direction1 = along1 * t1 + along2 * t2;
+  direction2 = cross(n, direction1);
+}
+
 SurfaceCurvature surfaceCurvature(const SurfaceDerivatives& x)
 {
   SurfaceCurvature result;
@@ -192,32 +220,11 @@ SurfaceCurvature surfaceCurvature(const SurfaceDerivatives& x)
   {
     return result;
   }
-  // The eigenvector of k1 at angle phi from e1, tan 2 phi = w12 / half, phi in (-pi/2, pi/2].
-  // Its sign: positive along the nearer of e1 and e2, so that it flips only where it is at 45
-  // degrees to both, not where it is along e2 (a surface of revolution's meridian is
-  // perpendicular to the parallels x_u: there cos phi is rounding, and its sign would flip from
-  // sample to sample). At an umbilic, where W's off-mean part is rounding, every direction is
-  // principal: e1.
-  const double size = std::max({ std::fabs(w11), std::fabs(w12), std::fabs(w22) });
-  const bool umbilic = radius <= 64.0 * std::numeric_limits<double>::epsilon() * size;
-  double along1 = 1.0, along2 = 0.0; // cos and sin of phi = 0, without the calls
-  if (!umbilic)
-  {
-    const double phi = 0.5 * std::atan2(w12, half);
-    along1 = std::cos(phi);
-    along2 = std::sin(phi);
-  }
-  if (std::fabs(along2) > along1 && along2 < 0.0)
-  {
-    along1 = -along1;
-    along2 = -along2;
-  }
   result.regular = true;
   result.normal = n;
   result.k1 = k1;
   result.k2 = k2;
-  result.direction1 = along1 * t1 + along2 * t2;
-  result.direction2 = cross(n, result.direction1);
+  principalDirections(n, t1, t2, w11, w12, w22, half, radius, result.direction1, result.direction2);
   result.gaussian = gaussian;
   result.mean = mean;
   return result;

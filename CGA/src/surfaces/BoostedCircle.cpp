@@ -7,6 +7,7 @@
 #include "../ConformalLanes.h"
 #include "../ForceInline.h"
 #include "../LaneClones.h"
+#include "../SurfaceCurvatureSteps.h"
 
 #include <algorithm>
 #include <cmath>
@@ -204,74 +205,140 @@ bool BoostedCircleRow::compute(
   return true;
 }
 
-// compute<false> and surfaceNormal (scaledFirst's common case: squared lengths within
-// [2^-200, 2^200]) on eight samples, in their operations and order (ConformalLanes.h: times' sums
-// from 0 are conformalProduct's, normalizePoint is normalizedLanes); a lane outside that range
-// takes surfaceNormal itself.
+namespace
+{
+using detail::Eight;
+using detail::EightMask;
+constexpr int kLanes = 8;
+
+// compute<Second>'s results on eight samples.
+struct DerivativeLanes
+{
+  Eight point[3], du[3], dv[3], duu[3], duv[3], dvv[3];
+};
+
+// compute<Second> on the samples first .. first + lanes - 1 (a partial block repeats its last
+// sample), in its operations and order (ConformalLanes.h: times' sums from 0 are
+// conformalProduct's, normalizePoint is normalizedLanes): all ones where it is true.
+template <bool Second>
+BOOSTED_FORCE_INLINE EightMask derivativeLanes(const std::array<double, 25>& boost,
+  const std::array<double, 25>& commutator, const BoostedCircle::CircleSample* samples, int lanes,
+  DerivativeLanes& d)
+{
+  constexpr int C = ConformalVector::Count;
+  constexpr int NO = ConformalVector::NO, E1 = ConformalVector::E1, NI = ConformalVector::NI;
+  auto boostEntry = [&boost](int i, int j) { return boost[static_cast<std::size_t>(j * C + i)]; };
+  auto commutatorEntry = [&commutator](
+                           int i, int j) { return commutator[static_cast<std::size_t>(j * C + i)]; };
+  // The samples' points, tangents and second derivatives by component.
+  alignas(64) double in[3][3][kLanes];
+  for (int l = 0; l < kLanes; ++l)
+  {
+    const BoostedCircle::CircleSample& s = samples[std::min(l, lanes - 1)];
+    const Vec3 from[3] = { s.point, s.tangent, s.second };
+    for (int v = 0; v < 3; ++v)
+    {
+      in[v][0][l] = from[v].x;
+      in[v][1][l] = from[v].y;
+      in[v][2][l] = from[v].z;
+    }
+  }
+  Eight p[3], t[3], tt[3];
+  std::memcpy(p, in[0], sizeof p);
+  std::memcpy(t, in[1], sizeof t);
+  std::memcpy(tt, in[2], sizeof tt);
+  Eight x[C], xTheta[C];
+  x[NO] = Eight{} + 1.0;
+  xTheta[NO] = Eight{};
+  for (int k = 0; k < 3; ++k)
+  {
+    x[E1 + k] = p[k];
+    xTheta[E1 + k] = t[k];
+  }
+  x[NI] = 0.5 * (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+  xTheta[NI] = p[0] * t[0] + p[1] * t[1] + p[2] * t[2];
+  Eight y[C], yU[C], yV[C];
+  detail::conformalProduct(boostEntry, x, y);
+  const EightMask mapped = detail::normalizedLanes(y, d.point);
+  detail::conformalProduct(boostEntry, xTheta, yU);
+  detail::conformalProduct(commutatorEntry, y, yV);
+  const Eight inverseW = 1.0 / y[NO];
+  for (int k = 0; k < 3; ++k)
+  {
+    d.du[k] = (yU[E1 + k] - yU[NO] * d.point[k]) * inverseW;
+    d.dv[k] = (yV[E1 + k] - yV[NO] * d.point[k]) * inverseW;
+  }
+  if (Second)
+  {
+    Eight xThetaTheta[C];
+    xThetaTheta[NO] = Eight{};
+    for (int k = 0; k < 3; ++k)
+    {
+      xThetaTheta[E1 + k] = tt[k];
+    }
+    xThetaTheta[NI] =
+      (t[0] * t[0] + t[1] * t[1] + t[2] * t[2]) + (p[0] * tt[0] + p[1] * tt[1] + p[2] * tt[2]);
+    Eight yUU[C], yVV[C], yUV[C];
+    detail::conformalProduct(boostEntry, xThetaTheta, yUU);
+    detail::conformalProduct(commutatorEntry, yV, yVV);
+    detail::conformalProduct(commutatorEntry, yU, yUV);
+    for (int k = 0; k < 3; ++k)
+    {
+      d.duu[k] = ((yUU[E1 + k] - (2.0 * yU[NO]) * d.du[k]) - yUU[NO] * d.point[k]) * inverseW;
+      d.duv[k] = (((yUV[E1 + k] - yU[NO] * d.dv[k]) - yV[NO] * d.du[k]) - yUV[NO] * d.point[k]) *
+        inverseW;
+      d.dvv[k] = ((yVV[E1 + k] - (2.0 * yV[NO]) * d.dv[k]) - yVV[NO] * d.point[k]) * inverseW;
+    }
+  }
+  return mapped;
+}
+
+// scaledFirst's common case on eight lanes: where `inRange` (the larger squared length in
+// [2^-200, 2^200]; elsewhere scaledFirst rescales) it is true exactly where `regular`, with
+// this unit normal.
+struct FirstFormLanes
+{
+  Eight lengthU2, larger, normal[3];
+  EightMask inRange, regular;
+};
+
+BOOSTED_FORCE_INLINE void firstFormLanes(const Eight* du, const Eight* dv, FirstFormLanes& f)
+{
+  f.lengthU2 = du[0] * du[0] + du[1] * du[1] + du[2] * du[2];
+  const Eight vv = dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2];
+  f.larger = f.lengthU2 < vv ? vv : f.lengthU2; // std::max(uu, vv)
+  f.inRange = (f.larger >= 0x1p-200) & (f.larger <= 0x1p200);
+  const Eight area[3] = { du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2],
+    du[0] * dv[1] - du[1] * dv[0] };
+  const Eight areaSquared = area[0] * area[0] + area[1] * area[1] + area[2] * area[2];
+  f.regular = areaSquared > 1e-24 * f.larger * f.larger;
+  const Eight scale = 1.0 / detail::squareRoot(areaSquared);
+  for (int k = 0; k < 3; ++k)
+  {
+    f.normal[k] = area[k] * scale;
+  }
+}
+
+Vec3 laneOf(const Eight* v, int l)
+{
+  return { v[0][l], v[1][l], v[2][l] };
+}
+} // namespace
+
+// compute<false> and surfaceNormal on eight samples at a time; a lane outside scaledFirst's
+// common range takes surfaceNormal itself.
 BOOSTED_LANE_CLONES
 void BoostedCircleRow::pointsAndNormals(const BoostedCircle::CircleSample* samples,
   std::size_t count, Vec3* points, Vec3* normals, unsigned char* state) const
 {
-  using detail::Eight;
-  constexpr int L = 8, C = ConformalVector::Count;
-  constexpr int NO = ConformalVector::NO, E1 = ConformalVector::E1, NI = ConformalVector::NI;
-  const std::array<double, 25>& boost = this->BoostColumns;
-  const std::array<double, 25>& commutator = this->CommutatorColumns;
-  auto boostEntry = [&boost](int i, int j) { return boost[static_cast<std::size_t>(j * C + i)]; };
-  auto commutatorEntry = [&commutator](
-                           int i, int j) { return commutator[static_cast<std::size_t>(j * C + i)]; };
-  for (std::size_t first = 0; first < count; first += L)
+  for (std::size_t first = 0; first < count; first += kLanes)
   {
-    const int lanes = static_cast<int>(std::min<std::size_t>(L, count - first));
-    // The samples' points and tangents by component (a partial block repeats its last sample).
-    alignas(64) double in[2][3][L];
-    for (int l = 0; l < L; ++l)
-    {
-      const BoostedCircle::CircleSample& s =
-        samples[first + static_cast<std::size_t>(std::min(l, lanes - 1))];
-      const Vec3 from[2] = { s.point, s.tangent };
-      for (int v = 0; v < 2; ++v)
-      {
-        in[v][0][l] = from[v].x;
-        in[v][1][l] = from[v].y;
-        in[v][2][l] = from[v].z;
-      }
-    }
-    Eight p[3], t[3];
-    std::memcpy(p, in[0], sizeof p);
-    std::memcpy(t, in[1], sizeof t);
-    Eight x[C], xTheta[C];
-    x[NO] = Eight{} + 1.0;
-    xTheta[NO] = Eight{};
-    for (int k = 0; k < 3; ++k)
-    {
-      x[E1 + k] = p[k];
-      xTheta[E1 + k] = t[k];
-    }
-    x[NI] = 0.5 * (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-    xTheta[NI] = p[0] * t[0] + p[1] * t[1] + p[2] * t[2];
-    Eight y[C], yU[C], yV[C];
-    detail::conformalProduct(boostEntry, x, y);
-    Eight point[3];
-    const auto mapped = detail::normalizedLanes(y, point);
-    detail::conformalProduct(boostEntry, xTheta, yU);
-    detail::conformalProduct(commutatorEntry, y, yV);
-    const Eight inverseW = 1.0 / y[NO];
-    Eight du[3], dv[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      du[k] = (yU[E1 + k] - yU[NO] * point[k]) * inverseW;
-      dv[k] = (yV[E1 + k] - yV[NO] * point[k]) * inverseW;
-    }
-    const Eight uu = du[0] * du[0] + du[1] * du[1] + du[2] * du[2];
-    const Eight vv = dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2];
-    const Eight larger = uu < vv ? vv : uu; // std::max(uu, vv)
-    const auto inRange = (larger >= 0x1p-200) & (larger <= 0x1p200);
-    const Eight area[3] = { du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2],
-      du[0] * dv[1] - du[1] * dv[0] };
-    const Eight areaSquared = area[0] * area[0] + area[1] * area[1] + area[2] * area[2];
-    const auto regular = areaSquared > 1e-24 * larger * larger;
-    const Eight scale = 1.0 / detail::squareRoot(areaSquared);
+    const int lanes = static_cast<int>(std::min<std::size_t>(kLanes, count - first));
+    DerivativeLanes d;
+    const EightMask mapped = derivativeLanes<false>(
+      this->BoostColumns, this->CommutatorColumns, samples + first, lanes, d);
+    FirstFormLanes f;
+    firstFormLanes(d.du, d.dv, f);
     for (int l = 0; l < lanes; ++l)
     {
       const std::size_t i = first + static_cast<std::size_t>(l);
@@ -280,21 +347,109 @@ void BoostedCircleRow::pointsAndNormals(const BoostedCircle::CircleSample* sampl
         state[i] = 0;
         continue;
       }
-      points[i] = { point[0][l], point[1][l], point[2][l] };
-      bool normal = regular[l] != 0;
-      if (inRange[l])
+      points[i] = laneOf(d.point, l);
+      bool normal = f.regular[l] != 0;
+      if (!f.inRange[l])
       {
-        if (normal)
-        {
-          normals[i] = { area[0][l] * scale[l], area[1][l] * scale[l], area[2][l] * scale[l] };
-        }
+        normal = surfaceNormal(laneOf(d.du, l), laneOf(d.dv, l), normals[i]);
       }
-      else
+      else if (normal)
       {
-        normal = surfaceNormal(
-          { du[0][l], du[1][l], du[2][l] }, { dv[0][l], dv[1][l], dv[2][l] }, normals[i]);
+        normals[i] = laneOf(f.normal, l);
       }
       state[i] = normal ? 2 : 1;
+    }
+  }
+}
+
+// compute<true> and surfaceCurvature on eight samples at a time, in their operations and order
+// where surfaceCurvature takes its common path (no rescaling of the first or second derivatives,
+// the eigenvalues' radius without hypot, finite curvatures; its principalDirections per lane);
+// another lane takes surfaceCurvature itself.
+BOOSTED_LANE_CLONES
+void BoostedCircleRow::curvatures(const BoostedCircle::CircleSample* samples, std::size_t count,
+  Vec3* points, SurfaceCurvature* out, bool* mapped) const
+{
+  for (std::size_t first = 0; first < count; first += kLanes)
+  {
+    const int lanes = static_cast<int>(std::min<std::size_t>(kLanes, count - first));
+    DerivativeLanes d;
+    const EightMask imaged = derivativeLanes<true>(
+      this->BoostColumns, this->CommutatorColumns, samples + first, lanes, d);
+    FirstFormLanes f;
+    firstFormLanes(d.du, d.dv, f);
+    // The second derivatives: finite, and their largest component 0 or in [2^-100, 2^100]
+    // (scaleExponent 0: no rescaling).
+    Eight second = Eight{};
+    EightMask finiteSecond = f.inRange | ~f.inRange; // all ones
+    for (const Eight* v : { d.duu, d.duv, d.dvv })
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        finiteSecond &= detail::finiteLanes(v[k]);
+        const Eight size = detail::magnitude(v[k]);
+        second = second < size ? size : second;
+      }
+    }
+    const EightMask unscaled = (second == 0.0) | ((second >= 0x1p-100) & (second <= 0x1p100));
+    const Eight* n = f.normal;
+    const Eight lengthU = detail::squareRoot(f.lengthU2);
+    Eight t1[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      t1[k] = d.du[k] / lengthU;
+    }
+    const Eight t2[3] = { n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2],
+      n[0] * t1[1] - n[1] * t1[0] };
+    auto dot = [](const Eight* a, const Eight* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+    const Eight alpha = lengthU, beta = dot(d.dv, t1), gamma = dot(d.dv, t2);
+    const Eight l = -dot(d.duu, n), m = -dot(d.duv, n), nn = -dot(d.dvv, n);
+    const Eight w11 = l / (alpha * alpha);
+    const Eight w12 = (m * alpha - l * beta) / (alpha * alpha * gamma);
+    const Eight w22 = (l * beta * beta - 2.0 * m * alpha * beta + nn * alpha * alpha) /
+      (alpha * alpha * gamma * gamma);
+    const Eight half = 0.5 * (w11 - w22);
+    const Eight halfSize = detail::magnitude(half), w12Size = detail::magnitude(w12);
+    const Eight largerOfTwo = halfSize < w12Size ? w12Size : halfSize;
+    // radiusOf's square root (its other case, hypot, is surfaceCurvature's own).
+    const EightMask plainRadius =
+      ((largerOfTwo >= 0x1p-450) | (largerOfTwo == 0.0)) & (largerOfTwo <= 0x1p450);
+    const Eight radius = detail::squareRoot(half * half + w12 * w12);
+    const Eight center = 0.5 * (w11 + w22);
+    const Eight k1 = center + radius, k2 = center - radius;
+    const Eight gaussian = k1 * k2;
+    const EightMask common = f.inRange & f.regular & finiteSecond & unscaled & plainRadius &
+      detail::finiteLanes(k1) & detail::finiteLanes(k2) & detail::finiteLanes(gaussian);
+    for (int lane = 0; lane < lanes; ++lane)
+    {
+      const std::size_t i = first + static_cast<std::size_t>(lane);
+      mapped[i] = imaged[lane] != 0;
+      if (!mapped[i])
+      {
+        continue;
+      }
+      points[i] = laneOf(d.point, lane);
+      if (!common[lane])
+      {
+        SurfaceDerivatives x;
+        x.point = points[i];
+        x.du = laneOf(d.du, lane);
+        x.dv = laneOf(d.dv, lane);
+        x.duu = laneOf(d.duu, lane);
+        x.duv = laneOf(d.duv, lane);
+        x.dvv = laneOf(d.dvv, lane);
+        out[i] = surfaceCurvature(x);
+        continue;
+      }
+      SurfaceCurvature& c = out[i];
+      c.regular = true;
+      c.normal = laneOf(n, lane);
+      c.k1 = k1[lane];
+      c.k2 = k2[lane];
+      principalDirections(c.normal, laneOf(t1, lane), laneOf(t2, lane), w11[lane], w12[lane],
+        w22[lane], half[lane], radius[lane], c.direction1, c.direction2);
+      c.gaussian = gaussian[lane];
+      c.mean = center[lane];
     }
   }
 }

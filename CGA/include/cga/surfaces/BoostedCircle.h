@@ -90,6 +90,13 @@ public:
   void pointsAndNormals(const BoostedCircle::CircleSample* samples, std::size_t count,
     Vec3* points, Vec3* normals, unsigned char* state) const;
 
+  /// The points and curvatures of `count` circle samples, eight side by side: mapped[i] as
+  /// derivatives gives it (false: the point at infinity; points[i] and out[i] unchanged), and
+  /// where it is true points[i] and out[i] = surfaceCurvature of the derivatives. The same bits
+  /// as derivatives and then surfaceCurvature, sample by sample.
+  void curvatures(const BoostedCircle::CircleSample* samples, std::size_t count, Vec3* points,
+    SurfaceCurvature* out, bool* mapped) const;
+
   /// The point alone: PointMap(K(lambda)).apply.
   bool point(Vec3 p, Vec3& out) const { return this->Boost.apply(p, out); }
 
