@@ -187,11 +187,53 @@ TEST(BoostedCircleDerivatives, BoostInTheCirclesPlaneSweepsThatPlane)
   EXPECT_GE(regular, 12);
 }
 
+// A family for the eight-sample tests at `scale`: the boost anywhere (kind 0), along the
+// circle's axis (1: a surface of revolution) or in its plane through its center (2: Fig 1's plane).
+BoostedCircle trialFamily(cgatest::Random& random, double scale, int kind)
+{
+  BoostedCircle family;
+  family.center = scale * random.vec3(1.0);
+  family.normal = random.unit();
+  family.radius = scale * random.uniform(0.5, 2.0);
+  family.boostLocation = family.center + (kind == 0 ? scale * random.vec3(1.0) : Vec3{});
+  const Vec3 inPlane = normalized(cross(family.normal, random.unit()));
+  family.boostDirection = (random.uniform(0.2, 1.0) / scale) *
+    (kind == 0 ? random.unit() : kind == 1 ? family.normal : inPlane);
+  return family;
+}
+
+// 19 samples of the family's circle; 2 and 11 not finite, 5 with a zero tangent (degenerate).
+std::vector<BoostedCircle::CircleSample> trialSamples(
+  cgatest::Random& random, const BoostedCircle& family)
+{
+  std::vector<BoostedCircle::CircleSample> samples;
+  for (int c = 0; c < 19; ++c)
+  {
+    samples.push_back(family.circleSample(random.uniform(0.0, 6.283)));
+  }
+  samples[2].point.y = NAN;
+  samples[5].tangent = Vec3{};
+  samples[11].point.x = INFINITY;
+  return samples;
+}
+
+// body(offset, count) for every run of `size` samples: every length at every offset.
+template <class Body>
+void forEveryRun(std::size_t size, Body body)
+{
+  for (std::size_t offset = 0; offset < size; ++offset)
+  {
+    for (std::size_t count = 0; offset + count <= size; ++count)
+    {
+      body(offset, count);
+    }
+  }
+}
+
 // pointsAndNormals, eight samples side by side, against firstDerivatives then surfaceNormal one
-// sample at a time, bit for bit: random families at unit scale and at 1e-120 and 1e120 (squared
-// derivative lengths outside [2^-200, 2^200]: the lane takes surfaceNormal itself), and samples
-// that are not finite (no point), with a zero tangent (degenerate: the point without a normal) or
-// a tangent of 1e150 (out of range), in runs of every length from 0 to 19 at every offset.
+// sample at a time, bit for bit: trialFamily's families at 1, 1e-120 and 1e120 (squared
+// derivative lengths outside [2^-200, 2^200]: the lane takes surfaceNormal itself), trialSamples
+// and a tangent of 1e150 (out of range), in runs of every length at every offset.
 TEST(BoostedCircleDerivatives, PointsAndNormalsAreTheOneSampleCodeBitForBit)
 {
   cgatest::Random random(1307);
@@ -200,49 +242,32 @@ TEST(BoostedCircleDerivatives, PointsAndNormalsAreTheOneSampleCodeBitForBit)
   {
     for (int trial = 0; trial < 6; ++trial)
     {
-      BoostedCircle family;
-      family.center = scale * random.vec3(1.0);
-      family.normal = random.unit();
-      family.radius = scale * random.uniform(0.5, 2.0);
-      family.boostLocation = family.center + scale * random.vec3(1.0);
-      family.boostDirection = (random.uniform(0.2, 1.0) / scale) * random.unit();
+      const BoostedCircle family = trialFamily(random, scale, trial % 3);
       const BoostedCircleRow row(family, random.uniform(-0.5, 0.5));
-      std::vector<BoostedCircle::CircleSample> samples;
-      for (int c = 0; c < 19; ++c)
-      {
-        samples.push_back(family.circleSample(random.uniform(0.0, 6.283)));
-      }
-      samples[2].point.y = NAN;
-      samples[5].tangent = Vec3{};
+      std::vector<BoostedCircle::CircleSample> samples = trialSamples(random, family);
       samples[7].tangent = 1e150 * samples[7].tangent;
-      samples[11].point.x = INFINITY;
-      for (std::size_t offset = 0; offset < samples.size(); ++offset)
-      {
-        for (std::size_t count = 0; offset + count <= samples.size(); ++count)
+      forEveryRun(samples.size(), [&](std::size_t offset, std::size_t count) {
+        const Vec3 untouched{ 42.0, 42.0, 42.0 };
+        std::vector<Vec3> points(count + 1, untouched), normals(count + 1, untouched);
+        std::vector<unsigned char> state(count + 1, 9);
+        row.pointsAndNormals(
+          samples.data() + offset, count, points.data(), normals.data(), state.data());
+        for (std::size_t i = 0; i < count; ++i)
         {
-          const Vec3 untouched{ 42.0, 42.0, 42.0 };
-          std::vector<Vec3> points(count + 1, untouched), normals(count + 1, untouched);
-          std::vector<unsigned char> state(count + 1, 9);
-          row.pointsAndNormals(
-            samples.data() + offset, count, points.data(), normals.data(), state.data());
-          for (std::size_t i = 0; i < count; ++i)
-          {
-            SurfaceDerivatives x;
-            Vec3 normal = untouched;
-            const bool mapped = row.firstDerivatives(samples[offset + i], x);
-            const unsigned char expected =
-              !mapped ? 0 : surfaceNormal(x.du, x.dv, normal) ? 2 : 1;
-            ASSERT_EQ(state[i], expected) << scale << " " << offset << " " << i;
-            ++kinds[expected];
-            const Vec3 point = mapped ? x.point : untouched;
-            EXPECT_EQ(0, std::memcmp(&points[i], &point, sizeof point)) << offset << " " << i;
-            EXPECT_EQ(0, std::memcmp(&normals[i], &normal, sizeof normal)) << offset << " " << i;
-          }
-          EXPECT_EQ(state[count], 9); // nothing written past the run
-          EXPECT_EQ(points[count].x, 42.0);
-          EXPECT_EQ(normals[count].x, 42.0);
+          SurfaceDerivatives x;
+          Vec3 normal = untouched;
+          const bool mapped = row.firstDerivatives(samples[offset + i], x);
+          const unsigned char expected = !mapped ? 0 : surfaceNormal(x.du, x.dv, normal) ? 2 : 1;
+          ASSERT_EQ(state[i], expected) << scale << " " << offset << " " << i;
+          ++kinds[expected];
+          const Vec3 point = mapped ? x.point : untouched;
+          EXPECT_EQ(0, std::memcmp(&points[i], &point, sizeof point)) << offset << " " << i;
+          EXPECT_EQ(0, std::memcmp(&normals[i], &normal, sizeof normal)) << offset << " " << i;
         }
-      }
+        EXPECT_EQ(state[count], 9); // nothing written past the run
+        EXPECT_EQ(points[count].x, 42.0);
+        EXPECT_EQ(normals[count].x, 42.0);
+      });
     }
   }
   // Every outcome was met (the not-finite samples, the zero tangent, the regular ones).
@@ -262,11 +287,10 @@ bool sameBits(Vec3 a, Vec3 b)
 }
 
 // curvatures, eight samples side by side, against derivatives then surfaceCurvature one sample at
-// a time, bit for bit (member by member): random families at 1, 1e-120, 1e-78 (where the area
-// element's square is subnormal without the rescaling) and 1e120 (first derivatives rescaled: the
-// lane takes surfaceCurvature itself), boosts anywhere, along the
-// circle's axis and in its plane (umbilics), and samples that are not finite, degenerate (a zero tangent), with a second derivative
-// of 1e200 (the second derivatives rescaled) or of zero, in runs of every length at every offset.
+// a time, bit for bit (member by member): trialFamily's families at 1, 1e-120, 1e-78 (where the
+// area element's square is subnormal without the rescaling) and 1e120 (first derivatives
+// rescaled: the lane takes surfaceCurvature itself), trialSamples and second derivatives of 1e200
+// (rescaled) and 0, in runs of every length at every offset.
 TEST(BoostedCircleDerivatives, CurvaturesAreTheOneSampleCodeBitForBit)
 {
   cgatest::Random random(1308);
@@ -275,67 +299,46 @@ TEST(BoostedCircleDerivatives, CurvaturesAreTheOneSampleCodeBitForBit)
   {
     for (int trial = 0; trial < 6; ++trial)
     {
-      BoostedCircle family;
-      family.center = scale * random.vec3(1.0);
-      family.normal = random.unit();
-      family.radius = scale * random.uniform(0.5, 2.0);
-      // Trials 1 and 4: the boost along the circle's axis (a surface of revolution); 2 and 5: in
-      // its plane through its center (the plane itself: every point an umbilic).
-      const int kind = trial % 3;
-      family.boostLocation = family.center + (kind == 0 ? scale * random.vec3(1.0) : Vec3{});
-      const Vec3 inPlane = normalized(cross(family.normal, random.unit()));
-      family.boostDirection = (random.uniform(0.2, 1.0) / scale) *
-        (kind == 0 ? random.unit() : kind == 1 ? family.normal : inPlane);
+      const BoostedCircle family = trialFamily(random, scale, trial % 3);
       const BoostedCircleRow row(family, random.uniform(-0.5, 0.5));
-      std::vector<BoostedCircle::CircleSample> samples;
-      for (int c = 0; c < 19; ++c)
-      {
-        samples.push_back(family.circleSample(random.uniform(0.0, 6.283)));
-      }
-      samples[2].point.y = NAN;
-      samples[5].tangent = Vec3{};
+      std::vector<BoostedCircle::CircleSample> samples = trialSamples(random, family);
       samples[7].second = 1e200 * samples[7].second;
       samples[9].second = Vec3{};
-      samples[11].point.x = INFINITY;
-      for (std::size_t offset = 0; offset < samples.size(); ++offset)
-      {
-        for (std::size_t count = 0; offset + count <= samples.size(); ++count)
+      forEveryRun(samples.size(), [&](std::size_t offset, std::size_t count) {
+        const Vec3 untouched{ 42.0, 42.0, 42.0 };
+        std::vector<Vec3> points(count + 1, untouched);
+        std::vector<SurfaceCurvature> curvatures(count + 1);
+        curvatures[count].k1 = 42.0;
+        std::unique_ptr<bool[]> mapped(new bool[count + 1]);
+        mapped[count] = true;
+        row.curvatures(
+          samples.data() + offset, count, points.data(), curvatures.data(), mapped.get());
+        for (std::size_t i = 0; i < count; ++i)
         {
-          const Vec3 untouched{ 42.0, 42.0, 42.0 };
-          std::vector<Vec3> points(count + 1, untouched);
-          std::vector<SurfaceCurvature> curvatures(count + 1);
-          curvatures[count].k1 = 42.0;
-          std::unique_ptr<bool[]> mapped(new bool[count + 1]);
-          mapped[count] = true;
-          row.curvatures(
-            samples.data() + offset, count, points.data(), curvatures.data(), mapped.get());
-          for (std::size_t i = 0; i < count; ++i)
+          SurfaceDerivatives x;
+          const bool expectedMapped = row.derivatives(samples[offset + i], x);
+          ASSERT_EQ(mapped[i], expectedMapped) << scale << " " << offset << " " << i;
+          if (!expectedMapped)
           {
-            SurfaceDerivatives x;
-            const bool expectedMapped = row.derivatives(samples[offset + i], x);
-            ASSERT_EQ(mapped[i], expectedMapped) << scale << " " << offset << " " << i;
-            if (!expectedMapped)
-            {
-              ++unmapped;
-              EXPECT_TRUE(sameBits(points[i], untouched));
-              continue;
-            }
-            EXPECT_TRUE(sameBits(points[i], x.point)) << scale << " " << offset << " " << i;
-            const SurfaceCurvature expected = surfaceCurvature(x);
-            const SurfaceCurvature& k = curvatures[i];
-            (expected.regular ? regular : degenerate) += 1;
-            EXPECT_EQ(k.regular, expected.regular);
-            EXPECT_TRUE(sameBits(k.normal, expected.normal) && sameBits(k.k1, expected.k1) &&
-              sameBits(k.k2, expected.k2) && sameBits(k.direction1, expected.direction1) &&
-              sameBits(k.direction2, expected.direction2) &&
-              sameBits(k.gaussian, expected.gaussian) && sameBits(k.mean, expected.mean))
-              << scale << " " << offset << " " << i;
+            ++unmapped;
+            EXPECT_TRUE(sameBits(points[i], untouched));
+            continue;
           }
-          EXPECT_TRUE(mapped[count]); // nothing written past the run
-          EXPECT_EQ(points[count].x, 42.0);
-          EXPECT_EQ(curvatures[count].k1, 42.0);
+          EXPECT_TRUE(sameBits(points[i], x.point)) << scale << " " << offset << " " << i;
+          const SurfaceCurvature expected = surfaceCurvature(x);
+          const SurfaceCurvature& k = curvatures[i];
+          (expected.regular ? regular : degenerate) += 1;
+          EXPECT_EQ(k.regular, expected.regular);
+          EXPECT_TRUE(sameBits(k.normal, expected.normal) && sameBits(k.k1, expected.k1) &&
+            sameBits(k.k2, expected.k2) && sameBits(k.direction1, expected.direction1) &&
+            sameBits(k.direction2, expected.direction2) &&
+            sameBits(k.gaussian, expected.gaussian) && sameBits(k.mean, expected.mean))
+            << scale << " " << offset << " " << i;
         }
-      }
+        EXPECT_TRUE(mapped[count]); // nothing written past the run
+        EXPECT_EQ(points[count].x, 42.0);
+        EXPECT_EQ(curvatures[count].k1, 42.0);
+      });
     }
   }
   EXPECT_GT(regular, 0);
