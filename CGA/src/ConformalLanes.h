@@ -16,7 +16,7 @@ namespace detail
 /// r = M x in applyMatrix's order (each row summed from 0 over j), with entry(i, j) M's entry
 /// and x[j] the vector's component: either may be per lane (Eight) or shared (double).
 template <class Entry, class Component>
-BOOSTED_FORCE_INLINE void conformalProduct(Entry entry, const Component* x, Eight* r)
+BOOSTED_LANE_INLINE void conformalProduct(Entry entry, const Component* x, Eight* r)
 {
   constexpr int C = ConformalVector::Count;
   for (int i = 0; i < C; ++i)
@@ -33,7 +33,7 @@ BOOSTED_FORCE_INLINE void conformalProduct(Entry entry, const Component* x, Eigh
 /// normalizePoint on eight lanes: image[k] = r's e_k over its weight -ni.r = r's no component; all
 /// ones in the lanes where normalizePoint maps (the weight nonzero and finite, the image finite).
 template <class Lanes>
-BOOSTED_FORCE_INLINE auto normalizedLanes(const Lanes* r, Lanes* image)
+BOOSTED_LANE_INLINE auto normalizedLanes(const Lanes* r, Lanes* image)
 {
   const Lanes alpha = r[ConformalVector::NO];
   for (int k = 0; k < 3; ++k)

@@ -13,6 +13,17 @@
 #define BOOSTED_FORCE_INLINE inline
 #endif
 
+// BOOSTED_LANE_INLINE: always inlined, under the sanitizers too. The lane helpers (LaneClones.h,
+// ConformalLanes.h and their users) pass GCC's 64-byte vectors by value, whose calling convention
+// differs between an AVX-512 lane clone and a default-target copy of the helper (-Wpsabi): an
+// out-of-line call mixes the two (the ASan build, where BOOSTED_FORCE_INLINE is a plain inline,
+// called derivativeLanes out of line and read its arguments shifted by the hidden return pointer).
+#if defined(__GNUC__) || defined(__clang__)
+#define BOOSTED_LANE_INLINE inline __attribute__((always_inline))
+#else
+#define BOOSTED_LANE_INLINE inline
+#endif
+
 // BOOSTED_COLD: a rare branch kept out of line (and out of the hot code's cache lines), so that its
 // code does not enter the register allocation of the common path that calls it (PointMapCore.h's
 // strong branch: inlined, it cost the common path about 4 ns per point on AVX-512).

@@ -19,7 +19,7 @@ using detail::Eight;
 constexpr int L = 8;
 
 // Per lane, whether the square is squareIsSafe's (all-ones where it is).
-BOOSTED_FORCE_INLINE auto safeSquare(Eight square)
+BOOSTED_LANE_INLINE auto safeSquare(Eight square)
 {
   return (square >= 1e-290) & detail::finiteLanes(square);
 }

@@ -30,7 +30,7 @@ using EightMask = decltype(Eight{} < Eight{});
 
 /// Per lane |v| (std::fabs, which the vector extension lacks).
 template <class Lanes>
-BOOSTED_FORCE_INLINE Lanes magnitude(Lanes v)
+BOOSTED_LANE_INLINE Lanes magnitude(Lanes v)
 {
   return v < 0.0 ? -v : v;
 }
@@ -38,7 +38,7 @@ BOOSTED_FORCE_INLINE Lanes magnitude(Lanes v)
 /// Per lane sqrt, correctly rounded as std::sqrt: one vector instruction in the files compiled
 /// with -fno-math-errno (CMakeLists.txt), a call per lane elsewhere (the same values).
 template <class Lanes>
-BOOSTED_FORCE_INLINE Lanes squareRoot(Lanes x)
+BOOSTED_LANE_INLINE Lanes squareRoot(Lanes x)
 {
   Lanes r;
   for (int l = 0; l < static_cast<int>(sizeof(Lanes) / sizeof(double)); ++l)
@@ -50,7 +50,7 @@ BOOSTED_FORCE_INLINE Lanes squareRoot(Lanes x)
 
 /// Per lane, all ones where v is finite, as std::isfinite (a NaN fails the comparison).
 template <class Lanes>
-BOOSTED_FORCE_INLINE auto finiteLanes(Lanes v)
+BOOSTED_LANE_INLINE auto finiteLanes(Lanes v)
 {
   return magnitude(v) <= std::numeric_limits<double>::max();
 }

@@ -221,7 +221,7 @@ struct DerivativeLanes
 // sample), in its operations and order (ConformalLanes.h: times' sums from 0 are
 // conformalProduct's, normalizePoint is normalizedLanes): all ones where it is true.
 template <bool Second>
-BOOSTED_FORCE_INLINE EightMask derivativeLanes(const std::array<double, 25>& boost,
+BOOSTED_LANE_INLINE EightMask derivativeLanes(const std::array<double, 25>& boost,
   const std::array<double, 25>& commutator, const BoostedCircle::CircleSample* samples, int lanes,
   DerivativeLanes& d)
 {
@@ -302,7 +302,7 @@ struct FirstFormLanes
   EightMask inRange, regular;
 };
 
-BOOSTED_FORCE_INLINE void firstFormLanes(const Eight* du, const Eight* dv, FirstFormLanes& f)
+BOOSTED_LANE_INLINE void firstFormLanes(const Eight* du, const Eight* dv, FirstFormLanes& f)
 {
   f.lengthU2 = du[0] * du[0] + du[1] * du[1] + du[2] * du[2];
   const Eight vv = dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2];

@@ -182,7 +182,7 @@ BOOSTED_FORCE_INLINE ExponentOf<T> exponentOfWeight(const Bivector& pair, const 
 
 /// exponentOfWeight for eight samples at once (LaneClones.h's Eight; CurvaturePatch.cpp's
 /// controlPointGenerators): each lane as for double, exactly zero where its w is zero.
-BOOSTED_FORCE_INLINE ExponentOf<Eight> exponentOfWeight(const Bivector& pair, const Eight& w)
+BOOSTED_LANE_INLINE ExponentOf<Eight> exponentOfWeight(const Bivector& pair, const Eight& w)
 {
   ExponentOf<Eight> term;
   const auto zero = w == 0.0;
