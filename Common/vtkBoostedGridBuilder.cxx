@@ -22,6 +22,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
+#include <vector>
 
 namespace
 {
@@ -459,14 +461,6 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(
     vtkBoostedLargeArrays::SetNumberOfTuples(array, total);
     sampleArrays.push_back(array);
   }
-  // Their values, fetched once: GetPointer per point and array cost a call each (and copy_n of a
-  // run-time length a memmove call), 15 % of a boosted surface update with its four curvature
-  // arrays.
-  std::vector<double*> sampleOutputs;
-  for (const auto& array : sampleArrays)
-  {
-    sampleOutputs.push_back(array->GetPointer(0));
-  }
   auto* doublePoints = vtkDoubleArray::FastDownCast(points->GetData());
   auto* floatPoints = vtkFloatArray::FastDownCast(points->GetData());
 
@@ -491,29 +485,24 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(
       [&](int c, long long id) { ids[this->Index(r, c)] = id; });
     const size_t n = newColumns.size();
     auto sample = [&](size_t j) { return static_cast<size_t>(this->Index(r, newColumns[j])); };
-    if (doublePoints)
-    {
-      double* to = doublePoints->GetPointer(3 * first);
+    auto writePoints = [&](auto* to) { // double or float
       for (size_t j = 0; j < n; ++j)
       {
         const double* relative = &this->Points[3 * sample(j)];
         for (int k = 0; k < 3; ++k)
         {
-          to[3 * j + k] = this->Origin[k] + relative[k];
+          to[3 * j + k] = static_cast<std::remove_pointer_t<decltype(to)>>(
+            this->Origin[k] + relative[k]);
         }
       }
+    };
+    if (doublePoints)
+    {
+      writePoints(doublePoints->GetPointer(3 * first));
     }
     else
     {
-      float* to = floatPoints->GetPointer(3 * first);
-      for (size_t j = 0; j < n; ++j)
-      {
-        const double* relative = &this->Points[3 * sample(j)];
-        for (int k = 0; k < 3; ++k)
-        {
-          to[3 * j + k] = static_cast<float>(this->Origin[k] + relative[k]);
-        }
-      }
+      writePoints(floatPoints->GetPointer(3 * first));
     }
     if (withSurfaceAttributes)
     {
@@ -558,11 +547,11 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(
     {
       std::fill_n(integerParameters[k]->GetPointer(first), n, this->IntegerParameters[k].second[r]);
     }
-    for (size_t k = 0; k < sampleOutputs.size(); ++k)
+    for (size_t k = 0; k < sampleArrays.size(); ++k)
     {
       const SampleArray& values = this->SampleArrays[k];
       const size_t components = static_cast<size_t>(values.Components);
-      double* to = sampleOutputs[k] + components * static_cast<size_t>(first);
+      double* to = sampleArrays[k]->GetPointer(static_cast<vtkIdType>(components) * first);
       for (size_t j = 0; j < n; ++j)
       {
         const double* from = &values.Values[components * sample(j)];

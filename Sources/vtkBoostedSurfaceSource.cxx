@@ -108,6 +108,7 @@ int vtkBoostedSurfaceSource::RequestData(
     const cga::BoostedCircleRow row(centered, lambdas[r]);
     // The row's points about the circle's center (NaN where mapped to infinity), for its plane.
     std::vector<cga::Vec3> rowPoints(columns, cga::Vec3{ NAN, NAN, NAN });
+    // Each branch leaves rowPoints NaN where the point went to infinity (dropped).
     if (exact && !curvatures)
     {
       // The points and normals eight samples at a time (the same bits as firstDerivatives and
@@ -118,11 +119,6 @@ int vtkBoostedSurfaceSource::RequestData(
         normals.data(), state.data());
       for (int c = 0; c < columns; ++c)
       {
-        if (state[c] > 0) // 0: the point went to infinity; left NaN and dropped
-        {
-          const double point[3] = { rowPoints[c].x, rowPoints[c].y, rowPoints[c].z };
-          grid.SetPoint(r, c, point);
-        }
         if (state[c] > 1)
         {
           const double normal[3] = { normals[c].x, normals[c].y, normals[c].z };
@@ -140,10 +136,8 @@ int vtkBoostedSurfaceSource::RequestData(
         curvature.data(), mapped.get());
       for (int c = 0; c < columns; ++c)
       {
-        if (mapped[c]) // false: the point went to infinity; left NaN and dropped
+        if (mapped[c])
         {
-          const double point[3] = { rowPoints[c].x, rowPoints[c].y, rowPoints[c].z };
-          grid.SetPoint(r, c, point);
           exact->SetCurvature(r, c, curvature[c]);
         }
       }
@@ -152,13 +146,15 @@ int vtkBoostedSurfaceSource::RequestData(
     {
       for (int c = 0; c < columns; ++c)
       {
-        cga::Vec3 point;
-        if (row.point(circleSamples[c].point, point)) // false: at infinity; left NaN and dropped
-        {
-          const double xyz[3] = { point.x, point.y, point.z };
-          grid.SetPoint(r, c, xyz);
-          rowPoints[c] = point;
-        }
+        row.point(circleSamples[c].point, rowPoints[c]);
+      }
+    }
+    for (int c = 0; c < columns; ++c)
+    {
+      if (cga::isFinite(rowPoints[c])) // a mapped point is finite (normalizePoint)
+      {
+        const double point[3] = { rowPoints[c].x, rowPoints[c].y, rowPoints[c].z };
+        grid.SetPoint(r, c, point);
       }
     }
     // The image circle's plane, for the normals where the surface's are degenerate: from the

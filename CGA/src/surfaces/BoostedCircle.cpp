@@ -211,6 +211,19 @@ using detail::Eight;
 using detail::EightMask;
 constexpr int kLanes = 8;
 
+// dot and cross (Vec3.h) on eight lanes, in their order of operations.
+BOOSTED_LANE_INLINE Eight dotLanes(const Eight* a, const Eight* b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+BOOSTED_LANE_INLINE void crossLanes(const Eight* a, const Eight* b, Eight* r)
+{
+  r[0] = a[1] * b[2] - a[2] * b[1];
+  r[1] = a[2] * b[0] - a[0] * b[2];
+  r[2] = a[0] * b[1] - a[1] * b[0];
+}
+
 // compute<Second>'s results on eight samples.
 struct DerivativeLanes
 {
@@ -255,8 +268,8 @@ BOOSTED_LANE_INLINE EightMask derivativeLanes(const std::array<double, 25>& boos
     x[E1 + k] = p[k];
     xTheta[E1 + k] = t[k];
   }
-  x[NI] = 0.5 * (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-  xTheta[NI] = p[0] * t[0] + p[1] * t[1] + p[2] * t[2];
+  x[NI] = 0.5 * dotLanes(p, p);
+  xTheta[NI] = dotLanes(p, t);
   Eight y[C], yU[C], yV[C];
   detail::conformalProduct(boostEntry, x, y);
   const EightMask mapped = detail::normalizedLanes(y, d.point);
@@ -276,8 +289,7 @@ BOOSTED_LANE_INLINE EightMask derivativeLanes(const std::array<double, 25>& boos
     {
       xThetaTheta[E1 + k] = tt[k];
     }
-    xThetaTheta[NI] =
-      (t[0] * t[0] + t[1] * t[1] + t[2] * t[2]) + (p[0] * tt[0] + p[1] * tt[1] + p[2] * tt[2]);
+    xThetaTheta[NI] = dotLanes(t, t) + dotLanes(p, tt);
     Eight yUU[C], yVV[C], yUV[C];
     detail::conformalProduct(boostEntry, xThetaTheta, yUU);
     detail::conformalProduct(commutatorEntry, yV, yVV);
@@ -304,13 +316,13 @@ struct FirstFormLanes
 
 BOOSTED_LANE_INLINE void firstFormLanes(const Eight* du, const Eight* dv, FirstFormLanes& f)
 {
-  f.lengthU2 = du[0] * du[0] + du[1] * du[1] + du[2] * du[2];
-  const Eight vv = dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2];
+  f.lengthU2 = dotLanes(du, du);
+  const Eight vv = dotLanes(dv, dv);
   f.larger = f.lengthU2 < vv ? vv : f.lengthU2; // std::max(uu, vv)
   f.inRange = (f.larger >= 0x1p-200) & (f.larger <= 0x1p200);
-  const Eight area[3] = { du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2],
-    du[0] * dv[1] - du[1] * dv[0] };
-  const Eight areaSquared = area[0] * area[0] + area[1] * area[1] + area[2] * area[2];
+  Eight area[3];
+  crossLanes(du, dv, area);
+  const Eight areaSquared = dotLanes(area, area);
   f.regular = areaSquared > 1e-24 * f.larger * f.larger;
   const Eight scale = 1.0 / detail::squareRoot(areaSquared);
   for (int k = 0; k < 3; ++k)
@@ -381,7 +393,7 @@ void BoostedCircleRow::curvatures(const BoostedCircle::CircleSample* samples, st
     // The second derivatives: finite, and their largest component 0 or in [2^-100, 2^100]
     // (scaleExponent 0: no rescaling).
     Eight second = Eight{};
-    EightMask finiteSecond = f.inRange | ~f.inRange; // all ones
+    EightMask finiteSecond = Eight{} == Eight{}; // all ones
     for (const Eight* v : { d.duu, d.duv, d.dvv })
     {
       for (int k = 0; k < 3; ++k)
@@ -399,11 +411,10 @@ void BoostedCircleRow::curvatures(const BoostedCircle::CircleSample* samples, st
     {
       t1[k] = d.du[k] / lengthU;
     }
-    const Eight t2[3] = { n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2],
-      n[0] * t1[1] - n[1] * t1[0] };
-    auto dot = [](const Eight* a, const Eight* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
-    const Eight alpha = lengthU, beta = dot(d.dv, t1), gamma = dot(d.dv, t2);
-    const Eight l = -dot(d.duu, n), m = -dot(d.duv, n), nn = -dot(d.dvv, n);
+    Eight t2[3];
+    crossLanes(n, t1, t2);
+    const Eight alpha = lengthU, beta = dotLanes(d.dv, t1), gamma = dotLanes(d.dv, t2);
+    const Eight l = -dotLanes(d.duu, n), m = -dotLanes(d.duv, n), nn = -dotLanes(d.dvv, n);
     const Eight w11 = l / (alpha * alpha);
     const Eight w12 = (m * alpha - l * beta) / (alpha * alpha * gamma);
     const Eight w22 = (l * beta * beta - 2.0 * m * alpha * beta + nn * alpha * alpha) /
