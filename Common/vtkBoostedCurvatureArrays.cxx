@@ -26,8 +26,7 @@ void vtkBoostedCurvatureArrays::Set(int row, int column, const cga::SurfaceDeriv
     cga::Vec3 n;
     if (cga::surfaceNormal(derivatives.du, derivatives.dv, n))
     {
-      const double normal[3] = { n.x, n.y, n.z };
-      this->Grid.SetSampleNormal(row, column, normal);
+      this->SetNormal(row, column, n);
     }
     return;
   }
@@ -39,8 +38,7 @@ void vtkBoostedCurvatureArrays::SetCurvature(
 {
   if (curvature.regular)
   {
-    const double normal[3] = { curvature.normal.x, curvature.normal.y, curvature.normal.z };
-    this->Grid.SetSampleNormal(row, column, normal);
+    this->SetNormal(row, column, curvature.normal);
   }
   if (this->Curvatures < 0)
   {
@@ -60,6 +58,12 @@ void vtkBoostedCurvatureArrays::SetCurvature(
   }
   *this->Grid.SampleValues(this->Gaussian, row, column) = curvature.gaussian;
   *this->Grid.SampleValues(this->Mean, row, column) = curvature.mean;
+}
+
+void vtkBoostedCurvatureArrays::SetNormal(int row, int column, const cga::Vec3& normal)
+{
+  const double n[3] = { normal.x, normal.y, normal.z };
+  this->Grid.SetSampleNormal(row, column, n);
 }
 
 void vtkBoostedCurvatureArrays::RenormalizeDirections(vtkPointData* data, vtkIdType id)

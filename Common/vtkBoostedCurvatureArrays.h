@@ -29,6 +29,7 @@ namespace cga
 {
 struct SurfaceCurvature;
 struct SurfaceDerivatives;
+struct Vec3;
 }
 
 class BOOSTEDSURFACESCOMMON_EXPORT vtkBoostedCurvatureArrays
@@ -45,15 +46,15 @@ public:
   /// `withArrays` false: only the exact normals (the arrays are not added).
   vtkBoostedCurvatureArrays(vtkBoostedGridBuilder& grid, bool withArrays);
 
-  /// Whether Set needs the second derivatives (only the arrays do).
-  bool WithArrays() const { return this->Curvatures >= 0; }
-
   /// The sample's normal (where regular) and, with the arrays, its values. Thread-safe for
   /// distinct samples.
   void Set(int row, int column, const cga::SurfaceDerivatives& derivatives);
   /// The same from the sample's curvature (cga::surfaceCurvature of its derivatives): its normal
   /// and, with the arrays, its values.
   void SetCurvature(int row, int column, const cga::SurfaceCurvature& curvature);
+  /// The sample's exact normal alone (a unit vector: cga::surfaceNormal's), for a source that
+  /// computes its normals itself. Thread-safe for distinct samples.
+  void SetNormal(int row, int column, const cga::Vec3& normal);
 
   /// Point `id` of `data` was interpolated: its two principal directions back to unit length
   /// (zero vectors stay zero). Nothing when `data` has no PrincipalDirections.

@@ -121,8 +121,7 @@ int vtkBoostedSurfaceSource::RequestData(
       {
         if (state[c] > 1)
         {
-          const double normal[3] = { normals[c].x, normals[c].y, normals[c].z };
-          grid.SetSampleNormal(r, c, normal);
+          exact->SetNormal(r, c, normals[c]);
         }
       }
     }

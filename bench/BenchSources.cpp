@@ -86,10 +86,11 @@ void HopfFibration(benchmark::State& state)
   timeSource(state, source, state.range(0));
 }
 
-void CurvaturePatch(benchmark::State& state, int method)
+void CurvaturePatch(benchmark::State& state, int method, bool computeCurvatures)
 {
   // A 1000 x 1000 patch: the default curvatures (0.5, 0.5), the default corners for Bilinear,
-  // four control points (Fig 10's kind) for ControlPoints.
+  // four control points (Fig 10's kind) for ControlPoints; Curvatures: Translated Tangents with
+  // ComputeCurvatures on.
   vtkNew<vtkCurvaturePatchSource> source;
   source->SetMethod(method);
   source->AddControlPoint(-1, -1, 0, 0, 0, 1, 1, 0, 0, 0.5, 0.5);
@@ -99,6 +100,7 @@ void CurvaturePatch(benchmark::State& state, int method)
   source->SetUResolution(kMeshSide - 1);
   source->SetVResolution(kMeshSide - 1);
   source->SetClipRadius(1e6);
+  source->SetComputeCurvatures(computeCurvatures);
   timeSource(state, source, state.range(0));
 }
 
@@ -144,11 +146,15 @@ BENCHMARK(Torus)->Apply(perThreads);
 BENCHMARK_CAPTURE(BoostedSurface, Surface, false)->Apply(perThreads);
 BENCHMARK_CAPTURE(BoostedSurface, Curvatures, true)->Apply(perThreads);
 BENCHMARK(HopfFibration)->Apply(perThreads);
-BENCHMARK_CAPTURE(CurvaturePatch, TranslatedTangents, vtkCurvaturePatchSource::TRANSLATED_TANGENTS)
+BENCHMARK_CAPTURE(
+  CurvaturePatch, TranslatedTangents, vtkCurvaturePatchSource::TRANSLATED_TANGENTS, false)
   ->Apply(perThreads);
-BENCHMARK_CAPTURE(CurvaturePatch, ControlPoints, vtkCurvaturePatchSource::CONTROL_POINTS)
+BENCHMARK_CAPTURE(CurvaturePatch, ControlPoints, vtkCurvaturePatchSource::CONTROL_POINTS, false)
   ->Apply(perThreads);
-BENCHMARK_CAPTURE(CurvaturePatch, Bilinear, vtkCurvaturePatchSource::BILINEAR)->Apply(perThreads);
+BENCHMARK_CAPTURE(CurvaturePatch, Bilinear, vtkCurvaturePatchSource::BILINEAR, false)
+  ->Apply(perThreads);
+BENCHMARK_CAPTURE(CurvaturePatch, Curvatures, vtkCurvaturePatchSource::TRANSLATED_TANGENTS, true)
+  ->Apply(perThreads);
 BENCHMARK(ConformalOrbit)->Apply(perThreads);
 BENCHMARK(DipoleField)->ArgsProduct({ { 1, 4 }, { 1, 2 } })->ArgNames({ "M", "threads" })->Apply(timedPerPoint);
 } // namespace

@@ -1,4 +1,4 @@
-// The curvature patch's derivatives (CurvaturePatch::exponentJet, ::derivatives): E(a, b)'s jet
+// The curvature patch's derivatives (CurvaturePatch::exponentJet, ::derivatives, ::derivativesRow): E(a, b)'s jet
 // against generatorAt (its value bit for bit) and its central differences for every method, the
 // image's against map(), and the curvatures they give against the paper's statements: eq 15's
 // bent line has curvature kappa, and Fig 7's presets have the principal curvatures
@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <vector>
 
 namespace
 {
@@ -198,6 +199,64 @@ TEST(CurvaturePatchDerivatives, MapRowIsTheOneSampleGeneratorBitForBit)
           << static_cast<int>(method) << " sample " << i << ": " << weights[i] << " " << weight;
       }
     }
+  };
+  forEveryTrialPatch(random, 7, test);
+}
+
+TEST(CurvaturePatchDerivatives, DerivativesRowIsTheOneSampleJetsBitForBit)
+{
+  // derivativesRow maps a row's jets eight at a time (mapJetsByExponential): each sample's
+  // derivatives are those of the jets of exponentJet and p(a, b) mapped alone
+  // (mapJetByExponential), to the bit, in rows of 45 samples (whole blocks, a partial one, two
+  // chunks of derivativesRow), with the trials above; where false, the output is untouched.
+  Random random(1310);
+  const auto test = [&random](const CurvaturePatch& patch, CurvatureMethod method, int trial) {
+    constexpr std::size_t kCount = 45;
+    const double b = random.uniform(-1.0, 1.0);
+    double a[kCount];
+    for (double& value : a)
+    {
+      value = random.uniform(-1.0, 1.0);
+    }
+    SurfaceDerivatives sentinel;
+    sentinel.point = Vec3{ 7, 8, 9 };
+    std::vector<SurfaceDerivatives> out(kCount, sentinel);
+    bool ok[kCount];
+    patch.derivativesRow(b, a, kCount, out.data(), ok);
+    int differentiated = 0;
+    for (std::size_t i = 0; i < kCount; ++i)
+    {
+      SurfaceJet exponent[Bivector::Count], point[3], image[3];
+      patch.exponentJet(a[i], b, patch.frame.origin, exponent);
+      const Vec3 p = a[i] * patch.frame.u + b * patch.frame.v;
+      const Vec3 us = patch.frame.u, vs = patch.frame.v;
+      point[0] = SurfaceJet{ p.x, us.x, vs.x, 0.0, 0.0, 0.0 };
+      point[1] = SurfaceJet{ p.y, us.y, vs.y, 0.0, 0.0, 0.0 };
+      point[2] = SurfaceJet{ p.z, us.z, vs.z, 0.0, 0.0, 0.0 };
+      SurfaceDerivatives expected = sentinel;
+      const bool mapped = mapJetByExponential(exponent, point, patch.rule, image) &&
+        isFinite(patch.frame.origin + Vec3{ image[0].value, image[1].value, image[2].value });
+      ASSERT_EQ(ok[i], mapped) << static_cast<int>(method) << " trial " << trial << " sample " << i;
+      if (mapped)
+      {
+        ++differentiated;
+        const auto part = [&](double SurfaceJet::*member) {
+          return Vec3{ image[0].*member, image[1].*member, image[2].*member };
+        };
+        expected.point = patch.frame.origin + part(&SurfaceJet::value);
+        expected.du = part(&SurfaceJet::da);
+        expected.dv = part(&SurfaceJet::db);
+        expected.duu = part(&SurfaceJet::daa);
+        expected.duv = part(&SurfaceJet::dab);
+        expected.dvv = part(&SurfaceJet::dbb);
+        SurfaceDerivatives one;
+        ASSERT_TRUE(patch.derivatives(a[i], b, one));
+        EXPECT_EQ(0, std::memcmp(&one, &expected, sizeof expected)) << static_cast<int>(method);
+      }
+      EXPECT_EQ(0, std::memcmp(&out[i], &expected, sizeof expected))
+        << static_cast<int>(method) << " trial " << trial << " sample " << i;
+    }
+    EXPECT_GT(differentiated, 0) << static_cast<int>(method) << " trial " << trial;
   };
   forEveryTrialPatch(random, 7, test);
 }

@@ -13,6 +13,17 @@
 
 namespace cga
 {
+namespace
+{
+/// The kernel's arguments for given exponents: no field, only the rule is read.
+kernel::FieldArgs argsOf(ExponentialRule rule)
+{
+  kernel::FieldArgs args;
+  args.exactRule = rule == ExponentialRule::Exact;
+  return args;
+}
+} // namespace
+
 std::size_t mapPointsByExponentials(const Bivector* b,
                                     const Vec3* p,
                                     std::size_t count,
@@ -23,8 +34,7 @@ std::size_t mapPointsByExponentials(const Bivector* b,
   constexpr int L = kernel::kLanes;
   constexpr int kBivector = Bivector::Count;
   const kernel::MapBlockBy mapBlockBy = kernel::activeMapBlockBy();
-  kernel::FieldArgs args; // no field: only the rule is read
-  args.exactRule = rule == ExponentialRule::Exact;
+  const kernel::FieldArgs args = argsOf(rule);
   alignas(64) double bivectors[kBivector * L];
   alignas(64) double xyz[3 * L];
   alignas(64) double image[3 * L];
@@ -51,32 +61,116 @@ std::size_t mapPointsByExponentials(const Bivector* b,
     });
 }
 
-using Second = core::SurfaceJetDual;
-using core::jetOf;
-using core::secondOf;
+namespace
+{
+/// kernel::MapBlockJets one lane at a time, on double's second-order jets (the same template: the
+/// same bits), for the instruction sets without a MapBlockJets.
+void mapBlockJetsByLane(const kernel::FieldArgs& args, const double* bivectorJets,
+  const double* pointJets, double* imageJets, std::uint8_t* mapped)
+{
+  constexpr int L = kernel::kLanes;
+  constexpr int P = kernel::kJetParts;
+  static_assert(P == core::kJetParts, "the kernel's jets are SurfaceJetDual.h's");
+  const auto secondOrderAt = [](const double* parts, int l) {
+    double lane[P];
+    for (int j = 0; j < P; ++j)
+    {
+      lane[j] = parts[j * L + l];
+    }
+    return core::secondOrderOf(lane);
+  };
+  for (int l = 0; l < L; ++l)
+  {
+    core::SurfaceJetDual b[Bivector::Count], p[3], out[3];
+    for (int c = 0; c < Bivector::Count; ++c)
+    {
+      b[c] = secondOrderAt(bivectorJets + P * c * L, l);
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      p[i] = secondOrderAt(pointJets + P * i * L, l);
+    }
+    bool ok = false;
+    core::mapPointBy(args, b, p, out, &ok);
+    for (int i = 0; i < 3; ++i)
+    {
+      double parts[P];
+      core::partsOf(out[i], parts);
+      for (int j = 0; j < P; ++j)
+      {
+        imageJets[(P * i + j) * L + l] = parts[j];
+      }
+    }
+    mapped[l] = ok ? 1 : 0;
+  }
+}
+} // namespace
+
+std::size_t mapJetsByExponential(const SurfaceJet* bivectors,
+                                 const SurfaceJet* points,
+                                 std::size_t count,
+                                 ExponentialRule rule,
+                                 SurfaceJet* images,
+                                 bool* mapped)
+{
+  constexpr int L = kernel::kLanes;
+  constexpr int P = kernel::kJetParts;
+  constexpr int kBivector = Bivector::Count;
+  const kernel::MapBlockJets active = kernel::activeMapBlockJets();
+  const kernel::MapBlockJets mapBlockJets = active ? active : &mapBlockJetsByLane;
+  const kernel::FieldArgs args = argsOf(rule);
+  alignas(64) double bivectorJets[kBivector * P * L];
+  alignas(64) double pointJets[3 * P * L];
+  alignas(64) double imageJets[3 * P * L];
+  std::uint8_t ok[L];
+  // Part j of value v of lane l at [(P v + j) L + l], in SurfaceJet's order.
+  const auto fill = [](const SurfaceJet& x, double* lanes, int l) {
+    const double parts[P] = { x.value, x.da, x.db, x.daa, x.dab, x.dbb };
+    for (int j = 0; j < P; ++j)
+    {
+      lanes[j * L + l] = parts[j];
+    }
+  };
+  return forEachBlock(
+    count,
+    [&](int l, std::size_t i) {
+      for (int c = 0; c < kBivector; ++c)
+      {
+        fill(bivectors[kBivector * i + c], bivectorJets + P * c * L, l);
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        fill(points[3 * i + k], pointJets + P * k * L, l);
+      }
+    },
+    [&](std::size_t, int) { mapBlockJets(args, bivectorJets, pointJets, imageJets, ok); },
+    [&](std::size_t i, int l) {
+      SurfaceJet image[3];
+      bool finite = ok[l] != 0;
+      for (int k = 0; k < 3; ++k)
+      {
+        double parts[P];
+        for (int j = 0; j < P; ++j)
+        {
+          parts[j] = imageJets[(P * k + j) * L + l];
+          finite = finite && std::isfinite(parts[j]);
+        }
+        image[k] = SurfaceJet{ parts[0], parts[1], parts[2], parts[3], parts[4], parts[5] };
+      }
+      mapped[i] = finite;
+      if (finite)
+      {
+        std::copy(image, image + 3, images + 3 * i);
+      }
+      return finite;
+    });
+}
 
 bool mapJetByExponential(
   const SurfaceJet* bivector, const SurfaceJet* point, ExponentialRule rule, SurfaceJet* image)
 {
-  kernel::FieldArgs args; // no field: only the rule is read
-  args.exactRule = rule == ExponentialRule::Exact;
-  Second b[Bivector::Count], p[3], out[3];
-  for (int c = 0; c < Bivector::Count; ++c)
-  {
-    b[c] = secondOf(bivector[c]);
-  }
-  for (int i = 0; i < 3; ++i)
-  {
-    p[i] = secondOf(point[i]);
-  }
   bool mapped = false;
-  core::mapPointBy(args, b, p, out, &mapped);
-  SurfaceJet result[3];
-  if (!mapped || !jetOf(out[0], result[0]) || !jetOf(out[1], result[1]) || !jetOf(out[2], result[2]))
-  {
-    return false;
-  }
-  std::copy(result, result + 3, image);
-  return true;
+  mapJetsByExponential(bivector, point, 1, rule, image, &mapped);
+  return mapped;
 }
 } // namespace cga

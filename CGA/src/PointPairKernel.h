@@ -68,6 +68,21 @@ using MapBlockJacobian = void (*)(const FieldArgs& args,
                                   double* jacobian,
                                   std::uint8_t* mapped);
 
+/// Parts per value of MapBlockJets: the value and its first and second derivatives in two
+/// parameters (a, b), in SurfaceJet's order (value, d/da, d/db, d2/da2, d2/dadb, d2/db2).
+constexpr int kJetParts = 6;
+
+/// mapBlockBy with the first and second derivatives in two parameters (a, b): forward mode on
+/// second-order dual numbers (DualNumber.h), the images mapBlockBy's. bivectorJets holds part j of
+/// component c of lane l's exponent at bivectorJets[(kJetParts c + j) kLanes + l], pointJets part j
+/// of coordinate i at pointJets[(kJetParts i + j) kLanes + l]; imageJets receives the image's in
+/// pointJets' layout. AVX-512 only (null elsewhere: mapJetsByExponential maps one lane at a time).
+using MapBlockJets = void (*)(const FieldArgs& args,
+                              const double* bivectorJets,
+                              const double* pointJets,
+                              double* imageJets,
+                              std::uint8_t* mapped);
+
 /// Adds B(p) of args' generators (falloff and epsilon; strength and rule are not read) to
 /// bivectors, component-major (bivectors[c * kLanes + l]): the kernel's generator loop for the
 /// generator tree's near field (GeneratorTree.cpp), which sums parts of the generators.
@@ -141,6 +156,7 @@ namespace avx512
 void mapBlock(const FieldArgs&, const double*, double*, std::uint8_t*);
 void mapBlockBy(const FieldArgs&, double*, const double*, double*, std::uint8_t*);
 void mapBlockJacobian(const FieldArgs&, const double*, double*, double*, std::uint8_t*);
+void mapBlockJets(const FieldArgs&, const double*, const double*, double*, std::uint8_t*);
 void mapBlockDirectional(
   const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
 void addFieldBlock(const FieldArgs&, const double*, double*);

@@ -18,6 +18,7 @@ struct Candidate
   MapBlock block;
   MapBlockBy blockBy;
   MapBlockJacobian blockJacobian;
+  MapBlockJets blockJets; // null: none (mapJetsByExponential's lane-by-lane loop)
   MapBlockDirectional blockDirectional;
   AddFieldBlock addField;
   MapDisplacedBlock displacedBlock;
@@ -45,14 +46,14 @@ bool hasAvx512()
 
 // Narrowest first.
 const Candidate kCandidates[] = {
-  { "baseline", &baseline::mapBlock, &baseline::mapBlockBy, &baseline::mapBlockJacobian,
+  { "baseline", &baseline::mapBlock, &baseline::mapBlockBy, &baseline::mapBlockJacobian, nullptr,
     &baseline::mapBlockDirectional, &baseline::addFieldBlock, &baseline::mapDisplacedBlock,
     nullptr, &always },
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
-  { "avx2", &avx2::mapBlock, &avx2::mapBlockBy, &avx2::mapBlockJacobian,
+  { "avx2", &avx2::mapBlock, &avx2::mapBlockBy, &avx2::mapBlockJacobian, nullptr,
     &avx2::mapBlockDirectional, &avx2::addFieldBlock, &avx2::mapDisplacedBlock, nullptr,
     &hasAvx2 },
-  { "avx512", &avx512::mapBlock, &avx512::mapBlockBy, &avx512::mapBlockJacobian,
+  { "avx512", &avx512::mapBlock, &avx512::mapBlockBy, &avx512::mapBlockJacobian, &avx512::mapBlockJets,
     &avx512::mapBlockDirectional, &avx512::addFieldBlock, &avx512::mapDisplacedBlock,
     &avx512wide::mapDisplacedBlock, &hasAvx512 },
 #endif
@@ -112,6 +113,11 @@ MapBlockBy activeMapBlockBy()
 MapBlockJacobian activeMapBlockJacobian()
 {
   return kCandidates[choice().load(std::memory_order_relaxed)].blockJacobian;
+}
+
+MapBlockJets activeMapBlockJets()
+{
+  return kCandidates[choice().load(std::memory_order_relaxed)].blockJets;
 }
 
 MapBlockDirectional activeMapBlockDirectional()

@@ -13,6 +13,8 @@ namespace kernel
 MapBlock activeMapBlock();
 MapBlockBy activeMapBlockBy();
 MapBlockJacobian activeMapBlockJacobian();
+/// The active instruction set's MapBlockJets, or null where it has none (all but AVX-512).
+MapBlockJets activeMapBlockJets();
 MapBlockDirectional activeMapBlockDirectional();
 AddFieldBlock activeAddFieldBlock();
 /// b = scale B(p) of one point p (3 doubles) by the active kernel's generator loop: the bits of

@@ -48,4 +48,15 @@ struct SurfaceJet
 /// mapped or a derivative is not finite.
 bool mapJetByExponential(
   const SurfaceJet* bivector, const SurfaceJet* point, ExponentialRule rule, SurfaceJet* image);
+
+/// mapJetByExponential of `count` samples at once: eight at a time in the block kernel on CPUs with
+/// AVX-512, one at a time elsewhere (the same bits either way): sample i's exponent is bivectors[10 i, 10 i + 10), its point
+/// points[3 i, 3 i + 3), its image images[3 i, 3 i + 3); mapped[i] is mapJetByExponential's
+/// return value (images left unchanged where false). Returns the count of samples not mapped.
+std::size_t mapJetsByExponential(const SurfaceJet* bivectors,
+                                 const SurfaceJet* points,
+                                 std::size_t count,
+                                 ExponentialRule rule,
+                                 SurfaceJet* images,
+                                 bool* mapped);
 } // namespace cga

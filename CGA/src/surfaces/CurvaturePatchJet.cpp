@@ -1,10 +1,12 @@
 // The curvature patch's E(a, b) as a second-order jet in (a, b), and the image's derivatives
-// through mapJetByExponential: the curvature operators' one template (CurvatureOperatorTerms.h)
+// through mapJetsByExponential: the curvature operators' one template (CurvatureOperatorTerms.h)
 // run on second-order dual numbers, so the jet's value is generatorAt's bit for bit.
 #include "cga/surfaces/CurvaturePatch.h"
 
 #include "../SurfaceJetDual.h"
 #include "CurvatureOperatorTerms.h"
+
+#include <algorithm>
 
 namespace cga
 {
@@ -23,33 +25,53 @@ void CurvaturePatch::exponentJet(
 
 bool CurvaturePatch::derivatives(double a, double b, SurfaceDerivatives& out) const
 {
+  bool ok = false;
+  this->derivativesRow(b, &a, 1, &out, &ok);
+  return ok;
+}
+
+void CurvaturePatch::derivativesRow(
+  double b, const double* a, std::size_t count, SurfaceDerivatives* out, bool* ok) const
+{
   // About the origin, as mapRow: the patch moved by -origin, p = a u + b v, the image moved back.
-  SurfaceJet exponent[Bivector::Count], point[3], image[3];
-  this->exponentJet(a, b, frame.origin, exponent);
-  const double pointValue[3] = { a * frame.u.x + b * frame.v.x, a * frame.u.y + b * frame.v.y,
-    a * frame.u.z + b * frame.v.z };
+  // In chunks of a few blocks (the jets take 624 bytes a sample).
+  constexpr std::size_t kChunk = 32;
+  SurfaceJet exponents[kChunk * Bivector::Count], points[kChunk * 3], images[kChunk * 3];
+  bool mapped[kChunk];
   const double us[3] = { frame.u.x, frame.u.y, frame.u.z };
   const double vs[3] = { frame.v.x, frame.v.y, frame.v.z };
-  for (int i = 0; i < 3; ++i)
+  for (std::size_t first = 0; first < count; first += kChunk)
   {
-    point[i].value = pointValue[i];
-    point[i].da = us[i];
-    point[i].db = vs[i];
+    const std::size_t n = std::min(kChunk, count - first);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const double at = a[first + i];
+      this->exponentJet(at, b, frame.origin, exponents + i * Bivector::Count);
+      for (int k = 0; k < 3; ++k)
+      {
+        points[3 * i + k] = SurfaceJet{ at * us[k] + b * vs[k], us[k], vs[k], 0.0, 0.0, 0.0 };
+      }
+    }
+    mapJetsByExponential(exponents, points, n, rule, images, mapped);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const SurfaceJet* image = images + 3 * i;
+      auto component = [&](double SurfaceJet::*member) {
+        return Vec3{ image[0].*member, image[1].*member, image[2].*member };
+      };
+      const Vec3 point = frame.origin + component(&SurfaceJet::value);
+      ok[first + i] = mapped[i] && isFinite(point);
+      if (ok[first + i])
+      {
+        SurfaceDerivatives& x = out[first + i];
+        x.point = point;
+        x.du = component(&SurfaceJet::da);
+        x.dv = component(&SurfaceJet::db);
+        x.duu = component(&SurfaceJet::daa);
+        x.duv = component(&SurfaceJet::dab);
+        x.dvv = component(&SurfaceJet::dbb);
+      }
+    }
   }
-  if (!mapJetByExponential(exponent, point, rule, image))
-  {
-    return false;
-  }
-  const Vec3 value{ image[0].value, image[1].value, image[2].value };
-  auto component = [&](double SurfaceJet::*member) {
-    return Vec3{ image[0].*member, image[1].*member, image[2].*member };
-  };
-  out.point = frame.origin + value;
-  out.du = component(&SurfaceJet::da);
-  out.dv = component(&SurfaceJet::db);
-  out.duu = component(&SurfaceJet::daa);
-  out.duv = component(&SurfaceJet::dab);
-  out.dvv = component(&SurfaceJet::dbb);
-  return isFinite(out.point);
 }
 } // namespace cga

@@ -85,9 +85,15 @@ struct CurvaturePatch
   void exponentJet(double a, double b, Vec3 shift, SurfaceJet exponent[Bivector::Count]) const;
 
   /// The image of p(a, b) with its first and second derivatives, u = a, v = b: E(a, b) and
-  /// p(a, b) as jets through mapJetByExponential, about the origin as map(). False where map()
+  /// p(a, b) as jets through mapJetsByExponential, about the origin as map(). False where map()
   /// would be, or where a derivative is not finite (out unchanged).
   bool derivatives(double a, double b, SurfaceDerivatives& out) const;
+
+  /// derivatives() of the samples (a[i], b) of one row, i < count, at once: each exponent's jet
+  /// as exponentJet, their images eight at a time (mapJetsByExponential). ok[i] is derivatives()'
+  /// return value (out[i] unchanged where false); derivatives() is this for one sample.
+  void derivativesRow(double b, const double* a, std::size_t count, SurfaceDerivatives* out,
+    bool* ok) const;
 
 private:
   /// E(a, b) of the patch moved by -shift.
