@@ -153,30 +153,47 @@ int vtkCurvaturePatchSource::RequestData(
   // slots: the builder's points and weights (one row's values are consecutive).
   driver.SampleRuns([&](int r, int first, int last) {
     const size_t count = static_cast<size_t>(last - first);
-    std::vector<cga::Vec3> images(count);
+    double* runWeights = grid.SampleValues(weights, r, first);
     std::unique_ptr<bool[]> mapped(new bool[count]);
-    patch.mapRow(
-      vs[r], &us[first], count, images.data(), grid.SampleValues(weights, r, first), mapped.get());
-    for (size_t i = 0; i < count; ++i)
-    {
-      if (mapped[i]) // false: at infinity; left NaN and dropped
-      {
-        const double point[3] = { images[i].x, images[i].y, images[i].z };
-        grid.SetPoint(r, first + static_cast<int>(i), point);
-      }
-    }
+    const auto setPoint = [&grid, r](int column, const cga::Vec3& image) {
+      const double point[3] = { image.x, image.y, image.z };
+      grid.SetPoint(r, column, point);
+    };
     if (exact)
     {
-      // The row's derivatives eight samples at a time; where derivativesRow fails (a sample at
-      // infinity, a derivative not finite) the grid keeps its central-difference normal.
+      // The row's derivatives eight samples at a time; their points and weights are mapRow's (the
+      // same bits), so the samples are not mapped again. Where derivativesRow fails (a sample at
+      // infinity, a derivative not finite) the sample is mapped alone and keeps its
+      // central-difference normal.
       std::vector<cga::SurfaceDerivatives> derivatives(count);
-      std::unique_ptr<bool[]> differentiated(new bool[count]);
-      patch.derivativesRow(vs[r], &us[first], count, derivatives.data(), differentiated.get());
+      patch.derivativesRow(vs[r], &us[first], count, derivatives.data(), mapped.get(), runWeights);
       for (size_t i = 0; i < count; ++i)
       {
-        if (mapped[i] && differentiated[i])
+        const int column = first + static_cast<int>(i);
+        cga::Vec3 image = derivatives[i].point;
+        if (mapped[i])
         {
-          exact->Set(r, first + static_cast<int>(i), derivatives[i]);
+          exact->Set(r, column, derivatives[i]);
+        }
+        else
+        {
+          mapped[i] = patch.map(us[column], vs[r], image, runWeights[i]);
+        }
+        if (mapped[i]) // false: at infinity; left NaN and dropped
+        {
+          setPoint(column, image);
+        }
+      }
+    }
+    else
+    {
+      std::vector<cga::Vec3> images(count);
+      patch.mapRow(vs[r], &us[first], count, images.data(), runWeights, mapped.get());
+      for (size_t i = 0; i < count; ++i)
+      {
+        if (mapped[i]) // false: at infinity; left NaN and dropped
+        {
+          setPoint(first + static_cast<int>(i), images[i]);
         }
       }
     }

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace
@@ -259,6 +260,76 @@ TEST(CurvaturePatchDerivatives, DerivativesRowIsTheOneSampleJetsBitForBit)
     EXPECT_GT(differentiated, 0) << static_cast<int>(method) << " trial " << trial;
   };
   forEveryTrialPatch(random, 7, test);
+}
+
+TEST(CurvaturePatchDerivatives, DerivativesRowPointsAndWeightsAreMapRowsBitForBit)
+{
+  // derivativesRow's points and weights are the jets' value parts: where it succeeds they are
+  // mapRow's to the bit (the patch source takes its points from them with ComputeCurvatures), and
+  // where mapRow fails it fails too; rows of 21 samples, the trials above.
+  Random random(1311);
+  const auto test = [&random](const CurvaturePatch& patch, CurvatureMethod method, int trial) {
+    constexpr std::size_t kCount = 21;
+    const double b = random.uniform(-1.0, 1.0);
+    double a[kCount], weights[kCount], jetWeights[kCount];
+    Vec3 out[kCount];
+    bool mapped[kCount], ok[kCount];
+    std::vector<SurfaceDerivatives> derivatives(kCount);
+    for (double& value : a)
+    {
+      value = random.uniform(-1.0, 1.0);
+    }
+    patch.mapRow(b, a, kCount, out, weights, mapped);
+    patch.derivativesRow(b, a, kCount, derivatives.data(), ok, jetWeights);
+    int compared = 0;
+    for (std::size_t i = 0; i < kCount; ++i)
+    {
+      const std::string where =
+        std::to_string(static_cast<int>(method)) + " trial " + std::to_string(trial);
+      if (!mapped[i] || !ok[i])
+      {
+        EXPECT_TRUE(mapped[i] || !ok[i]) << where;
+        continue;
+      }
+      ++compared;
+      EXPECT_EQ(0, std::memcmp(&derivatives[i].point, &out[i], sizeof out[i])) << where;
+      EXPECT_EQ(0, std::memcmp(&jetWeights[i], &weights[i], sizeof weights[i]))
+        << where << ": " << jetWeights[i] << " " << weights[i];
+    }
+    EXPECT_GT(compared, 0) << static_cast<int>(method) << " trial " << trial;
+  };
+  forEveryTrialPatch(random, 7, test);
+}
+
+TEST(CurvaturePatchDerivatives, AnOverflowedWeightIsNotDifferentiated)
+{
+  // Curvatures near the largest double: the weight 0.5 (kappaU + kappaV) overflows while the
+  // exponent and its image stay finite. mapRow drops such a sample; derivatives and
+  // derivativesRow do too, leaving their outputs unchanged.
+  Random random(1312);
+  CurvaturePatch patch = patchOf(CurvatureMethod::TranslatedTangents, random);
+  patch.kappaU = patch.kappaV = 1e308;
+  patch.frame.origin = Vec3{}; // the generators' locations within the unit ball: tau stays small
+  ASSERT_TRUE(patch.validate().empty());
+  const double a = 0.3, b = -0.2;
+  const CurvatureGenerator g = patch.generatorAt(a, b);
+  ASSERT_FALSE(std::isfinite(g.weight));
+  const Vec3 p = patch.frame.at(a, b);
+  Vec3 image;
+  bool finite = false;
+  mapPointsByExponentials(&g.exponent, &p, 1, patch.rule, &image, &finite);
+  ASSERT_TRUE(finite); // the premise: only the weight is not finite
+  Vec3 point;
+  double weight = 7.0;
+  EXPECT_FALSE(patch.map(a, b, point, weight));
+  SurfaceDerivatives x;
+  x.point = Vec3{ 7, 8, 9 };
+  EXPECT_FALSE(patch.derivatives(a, b, x));
+  bool ok = true;
+  patch.derivativesRow(b, &a, 1, &x, &ok, &weight);
+  EXPECT_FALSE(ok);
+  EXPECT_EQ(7.0, x.point.x);
+  EXPECT_EQ(7.0, weight);
 }
 
 TEST(CurvaturePatchDerivatives, ImageDerivativesAreMapsDifferences)

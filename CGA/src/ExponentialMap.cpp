@@ -1,14 +1,12 @@
 #include "cga/ExponentialMap.h"
 
-#include "DualNumber.h"
+#include "JetBlockMap.h"
 #include "PointBlocks.h"
 #include "PointMapCore.h"
 #include "PointPairKernel.h"
 #include "PointPairKernelDispatch.h"
-#include "SurfaceJetDual.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 
 namespace cga
@@ -63,44 +61,15 @@ std::size_t mapPointsByExponentials(const Bivector* b,
 
 namespace
 {
-/// kernel::MapBlockJets one lane at a time, on double's second-order jets (the same template: the
-/// same bits), for the instruction sets without a MapBlockJets.
+/// kernel::MapBlockJets one lane at a time on double (the kernel's template: the same bits), for
+/// the instruction sets without a MapBlockJets.
 void mapBlockJetsByLane(const kernel::FieldArgs& args, const double* bivectorJets,
   const double* pointJets, double* imageJets, std::uint8_t* mapped)
 {
-  constexpr int L = kernel::kLanes;
-  constexpr int P = kernel::kJetParts;
-  static_assert(P == core::kJetParts, "the kernel's jets are SurfaceJetDual.h's");
-  const auto secondOrderAt = [](const double* parts, int l) {
-    double lane[P];
-    for (int j = 0; j < P; ++j)
-    {
-      lane[j] = parts[j * L + l];
-    }
-    return core::secondOrderOf(lane);
-  };
-  for (int l = 0; l < L; ++l)
+  for (int l = 0; l < kernel::kLanes; ++l)
   {
-    core::SurfaceJetDual b[Bivector::Count], p[3], out[3];
-    for (int c = 0; c < Bivector::Count; ++c)
-    {
-      b[c] = secondOrderAt(bivectorJets + P * c * L, l);
-    }
-    for (int i = 0; i < 3; ++i)
-    {
-      p[i] = secondOrderAt(pointJets + P * i * L, l);
-    }
     bool ok = false;
-    core::mapPointBy(args, b, p, out, &ok);
-    for (int i = 0; i < 3; ++i)
-    {
-      double parts[P];
-      core::partsOf(out[i], parts);
-      for (int j = 0; j < P; ++j)
-      {
-        imageJets[(P * i + j) * L + l] = parts[j];
-      }
-    }
+    core::mapJetBlockBy<double>(args, bivectorJets, pointJets, imageJets, &ok, l);
     mapped[l] = ok ? 1 : 0;
   }
 }
@@ -125,7 +94,8 @@ std::size_t mapJetsByExponential(const SurfaceJet* bivectors,
   std::uint8_t ok[L];
   // Part j of value v of lane l at [(P v + j) L + l], in SurfaceJet's order.
   const auto fill = [](const SurfaceJet& x, double* lanes, int l) {
-    const double parts[P] = { x.value, x.da, x.db, x.daa, x.dab, x.dbb };
+    double parts[P];
+    core::partsOf(x, parts);
     for (int j = 0; j < P; ++j)
     {
       lanes[j * L + l] = parts[j];
@@ -153,9 +123,8 @@ std::size_t mapJetsByExponential(const SurfaceJet* bivectors,
         for (int j = 0; j < P; ++j)
         {
           parts[j] = imageJets[(P * k + j) * L + l];
-          finite = finite && std::isfinite(parts[j]);
         }
-        image[k] = SurfaceJet{ parts[0], parts[1], parts[2], parts[3], parts[4], parts[5] };
+        finite = core::jetOf(parts, image[k]) && finite;
       }
       mapped[i] = finite;
       if (finite)

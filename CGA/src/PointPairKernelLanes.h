@@ -366,7 +366,7 @@ BOOSTED_FORCE_INLINE LaneVector laneSqrt(LaneVector x)
 
 #include "PointMapCore.h"
 #include "DualNumber.h"
-#include "SurfaceJetDual.h"
+#include "JetBlockMap.h"
 
 namespace cga
 {
@@ -560,36 +560,8 @@ void mapBlockDirectional(const FieldArgs& args, const double* xyz, const double*
 void mapBlockJets(const FieldArgs& args, const double* bivectorJets, const double* pointJets,
   double* imageJets, std::uint8_t* mapped)
 {
-  static_assert(kJetParts == core::kJetParts, "the kernel's jets are SurfaceJetDual.h's");
-  using Second = core::SecondOrderDual<LaneVector>;
-  const auto secondOrderAt = [](const double* parts) {
-    LaneVector lanes[kJetParts];
-    for (int j = 0; j < kJetParts; ++j)
-    {
-      fromLanes(parts + j * L, lanes[j]);
-    }
-    return core::secondOrderOf(lanes);
-  };
-  Second b[core::kBivector], p[3], out[3];
-  for (int c = 0; c < core::kBivector; ++c)
-  {
-    b[c] = secondOrderAt(bivectorJets + kJetParts * c * L);
-  }
-  for (int i = 0; i < 3; ++i)
-  {
-    p[i] = secondOrderAt(pointJets + kJetParts * i * L);
-  }
   bool ok[L];
-  core::mapPointBy(args, b, p, out, ok);
-  for (int i = 0; i < 3; ++i)
-  {
-    LaneVector parts[kJetParts];
-    core::partsOf(out[i], parts);
-    for (int j = 0; j < kJetParts; ++j)
-    {
-      toLanes(parts[j], imageJets + (kJetParts * i + j) * L);
-    }
-  }
+  core::mapJetBlockBy<LaneVector>(args, bivectorJets, pointJets, imageJets, ok);
   for (int l = 0; l < L; ++l)
   {
     mapped[l] = ok[l] ? 1 : 0;

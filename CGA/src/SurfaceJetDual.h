@@ -2,7 +2,7 @@
 // SurfaceJet of ExponentialMap.h, six parts) as the second-order dual number
 // Dual<Dual<T, 2>, 2> of DualNumber.h and back, for T double (the curvature patch's jets of its
 // operators, src/surfaces/CurvaturePatchJet.cpp) or the block kernel's lane vector (the kernel's
-// mapBlockJets, mapJetsByExponential's input and output).
+// mapBlockJets, mapJetsByExponential's input and output, JetBlockMap.h).
 //
 // Internal linkage only (see PointMapCore.h).
 #pragma once
@@ -49,9 +49,33 @@ BOOSTED_FORCE_INLINE void partsOf(const SecondOrderDual<T>& x, T (&parts)[kJetPa
   parts[5] = x.d[1].d[1];
 }
 
+/// A jet's parts in SurfaceJet's order.
+inline void partsOf(const SurfaceJet& j, double (&parts)[kJetParts])
+{
+  parts[0] = j.value;
+  parts[1] = j.da;
+  parts[2] = j.db;
+  parts[3] = j.daa;
+  parts[4] = j.dab;
+  parts[5] = j.dbb;
+}
+
+/// The jet of parts in SurfaceJet's order; false when one is not finite (j is filled anyway).
+inline bool jetOf(const double (&parts)[kJetParts], SurfaceJet& j)
+{
+  j = SurfaceJet{ parts[0], parts[1], parts[2], parts[3], parts[4], parts[5] };
+  bool finite = true;
+  for (double part : parts)
+  {
+    finite = finite && std::isfinite(part);
+  }
+  return finite;
+}
+
 inline SurfaceJetDual secondOf(const SurfaceJet& j)
 {
-  const double parts[kJetParts] = { j.value, j.da, j.db, j.daa, j.dab, j.dbb };
+  double parts[kJetParts];
+  partsOf(j, parts);
   return secondOrderOf(parts);
 }
 
@@ -60,9 +84,7 @@ inline bool jetOf(const SurfaceJetDual& x, SurfaceJet& j)
 {
   double parts[kJetParts];
   partsOf(x, parts);
-  j = SurfaceJet{ parts[0], parts[1], parts[2], parts[3], parts[4], parts[5] };
-  return std::isfinite(j.value) && std::isfinite(j.da) && std::isfinite(j.db) &&
-    std::isfinite(j.daa) && std::isfinite(j.dab) && std::isfinite(j.dbb);
+  return jetOf(parts, j);
 }
 } // namespace
 } // namespace core

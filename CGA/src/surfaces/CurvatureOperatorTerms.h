@@ -14,6 +14,7 @@
 #include "../NullPointPairTerms.h"
 
 #include <array>
+#include <optional>
 
 namespace cga
 {
@@ -345,13 +346,39 @@ BOOSTED_FORCE_INLINE T bilinearT(const CurvaturePatch& patch, const T& a)
   return 0.5 + a / patch.sizeU;
 }
 
-/// The patch's E(a, b) and local weight by its method, of the patch moved by -shift
-/// (CurvaturePatch::generatorAt for shift 0).
-template <typename T>
-BOOSTED_FORCE_INLINE GeneratorOf<T> patchGeneratorOf(const CurvaturePatch& patch, const T& a, const T& b, Vec3 shift)
+/// The pieces of the patch's E(a, b) that do not depend on (a, b), of the patch moved by -shift:
+/// the moved frame, the control points' prepared terms (ControlPoints) and the corners' tau terms
+/// (Bilinear), computed once for many samples (CurvaturePatch::mapRow, derivativesRow) instead of
+/// at every sample.
+struct PatchPieces
 {
-  PatchFrame moved = patch.frame;
-  moved.origin = patch.frame.origin - shift;
+  PatchFrame moved;
+  std::optional<ControlPointSum> controlPointSum;
+  std::optional<BilinearCorners> corners;
+
+  PatchPieces(const CurvaturePatch& patch, Vec3 shift)
+    : moved(patch.frame)
+  {
+    moved.origin = patch.frame.origin - shift;
+    if (patch.method == CurvatureMethod::ControlPoints)
+    {
+      controlPointSum.emplace(patch.controlPoints.data(), patch.controlPoints.size(),
+        patch.falloff, patch.epsilon, shift);
+    }
+    if (patch.method == CurvatureMethod::Bilinear)
+    {
+      corners.emplace(bilinearCornersOf(patch, shift));
+    }
+  }
+};
+
+/// The patch's E(a, b) and local weight by its method, of the patch moved by -shift, given that
+/// shift's pieces.
+template <typename T>
+BOOSTED_FORCE_INLINE GeneratorOf<T> patchGeneratorOf(
+  const CurvaturePatch& patch, const PatchPieces& pieces, const T& a, const T& b)
+{
+  const PatchFrame& moved = pieces.moved;
   switch (patch.method)
   {
     case CurvatureMethod::BentLine:
@@ -365,9 +392,7 @@ BOOSTED_FORCE_INLINE GeneratorOf<T> patchGeneratorOf(const CurvaturePatch& patch
       return osculatingCirclesOf(c, patchPoint(moved, a, b), patch.epsilon);
     }
     case CurvatureMethod::ControlPoints:
-      return controlPointSumOf(ControlPointSum(patch.controlPoints.data(),
-                                 patch.controlPoints.size(), patch.falloff, patch.epsilon, shift),
-        patchPoint(moved, a, b));
+      return controlPointSumOf(*pieces.controlPointSum, patchPoint(moved, a, b));
     case CurvatureMethod::Linear:
     {
       // each row carries the two generators along (x_i + b v): every row is the same curve
@@ -377,10 +402,17 @@ BOOSTED_FORCE_INLINE GeneratorOf<T> patchGeneratorOf(const CurvaturePatch& patch
         patchPoint(moved, hu, b), patch.corners[1], t);
     }
     case CurvatureMethod::Bilinear:
-      return bilinearInterpolationOf(
-        bilinearCornersOf(patch, shift), bilinearS(patch, b), bilinearT(patch, a));
+      return bilinearInterpolationOf(*pieces.corners, bilinearS(patch, b), bilinearT(patch, a));
   }
   return {};
+}
+
+/// The patch's E(a, b) and local weight by its method, of the patch moved by -shift
+/// (CurvaturePatch::generatorAt for shift 0).
+template <typename T>
+BOOSTED_FORCE_INLINE GeneratorOf<T> patchGeneratorOf(const CurvaturePatch& patch, const T& a, const T& b, Vec3 shift)
+{
+  return patchGeneratorOf(patch, PatchPieces(patch, shift), a, b);
 }
 } // namespace
 } // namespace detail

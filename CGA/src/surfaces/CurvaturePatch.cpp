@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 namespace cga
 {
@@ -149,22 +148,8 @@ void CurvaturePatch::mapRow(
 {
   // Computed about the origin (the patch moved by -origin, the images moved back).
   constexpr std::size_t kChunk = 64;
-  // The control points' pieces that do not depend on the sample, once for the row.
-  const ControlPointSum controlPointSum(method == CurvatureMethod::ControlPoints
-      ? controlPoints.data() : nullptr,
-    method == CurvatureMethod::ControlPoints ? controlPoints.size() : 0, falloff, epsilon,
-    frame.origin);
-  PatchFrame moved = frame; // as patchGeneratorOf moves it
-  moved.origin = frame.origin - frame.origin;
-  // Bilinear: the corners' terms once for the row, not at every sample (the same values); the
-  // other methods never read them.
-  const bool bilinear = method == CurvatureMethod::Bilinear;
-  std::optional<detail::BilinearCorners> corners;
-  if (bilinear)
-  {
-    corners.emplace(detail::bilinearCornersOf(*this, frame.origin));
-  }
-  const double s = detail::bilinearS(*this, b);
+  // The pieces that do not depend on the sample, once for the row.
+  const detail::PatchPieces pieces(*this, frame.origin);
   Bivector exponents[kChunk];
   Vec3 points[kChunk], images[kChunk];
   double chunkWeights[kChunk];
@@ -174,15 +159,14 @@ void CurvaturePatch::mapRow(
     const std::size_t n = std::min(kChunk, count - first);
     if (method == CurvatureMethod::ControlPoints)
     {
-      controlPointGenerators(controlPointSum, moved, a + first, b, n, exponents, chunkWeights);
+      controlPointGenerators(*pieces.controlPointSum, pieces.moved, a + first, b, n, exponents,
+        chunkWeights);
     }
     for (std::size_t i = 0; i < n; ++i)
     {
       if (method != CurvatureMethod::ControlPoints)
       {
-        const CurvatureGenerator g = bilinear
-          ? detail::bilinearInterpolationOf(*corners, s, detail::bilinearT(*this, a[first + i]))
-          : generatorAbout(a[first + i], b, frame.origin);
+        const CurvatureGenerator g = detail::patchGeneratorOf(*this, pieces, a[first + i], b);
         exponents[i] = g.exponent;
         chunkWeights[i] = g.weight;
       }

@@ -7,20 +7,34 @@
 #include "CurvatureOperatorTerms.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace cga
 {
-void CurvaturePatch::exponentJet(
-  double aValue, double bValue, Vec3 shift, SurfaceJet exponent[Bivector::Count]) const
+namespace
+{
+/// exponentJet's jets of E(a, b) of the patch moved by pieces' shift, and the value of the local
+/// weight (generatorAbout's).
+void generatorJet(const CurvaturePatch& patch, const detail::PatchPieces& pieces, double aValue,
+  double bValue, SurfaceJet exponent[Bivector::Count], double& weight)
 {
   // The seeds: a with d/da = 1, b with d/db = 1.
   const core::SurfaceJetDual a = core::secondOf(SurfaceJet{ aValue, 1.0, 0.0, 0.0, 0.0, 0.0 });
   const core::SurfaceJetDual b = core::secondOf(SurfaceJet{ bValue, 0.0, 1.0, 0.0, 0.0, 0.0 });
-  const auto generator = detail::patchGeneratorOf(*this, a, b, shift);
+  const auto generator = detail::patchGeneratorOf(patch, pieces, a, b);
   for (int c = 0; c < Bivector::Count; ++c)
   {
-    core::jetOf(generator.exponent[c], exponent[c]); // finite or not: mapJetByExponential checks its result
+    core::jetOf(generator.exponent[c], exponent[c]); // finite or not: mapJetsByExponential checks
   }
+  weight = detail::valuePart(generator.weight);
+}
+} // namespace
+
+void CurvaturePatch::exponentJet(
+  double a, double b, Vec3 shift, SurfaceJet exponent[Bivector::Count]) const
+{
+  double weight;
+  generatorJet(*this, detail::PatchPieces(*this, shift), a, b, exponent, weight);
 }
 
 bool CurvaturePatch::derivatives(double a, double b, SurfaceDerivatives& out) const
@@ -30,13 +44,15 @@ bool CurvaturePatch::derivatives(double a, double b, SurfaceDerivatives& out) co
   return ok;
 }
 
-void CurvaturePatch::derivativesRow(
-  double b, const double* a, std::size_t count, SurfaceDerivatives* out, bool* ok) const
+void CurvaturePatch::derivativesRow(double b, const double* a, std::size_t count,
+  SurfaceDerivatives* out, bool* ok, double* weights) const
 {
   // About the origin, as mapRow: the patch moved by -origin, p = a u + b v, the image moved back.
   // In chunks of a few blocks (the jets take 624 bytes a sample).
   constexpr std::size_t kChunk = 32;
+  const detail::PatchPieces pieces(*this, frame.origin); // once for the row
   SurfaceJet exponents[kChunk * Bivector::Count], points[kChunk * 3], images[kChunk * 3];
+  double chunkWeights[kChunk];
   bool mapped[kChunk];
   const double us[3] = { frame.u.x, frame.u.y, frame.u.z };
   const double vs[3] = { frame.v.x, frame.v.y, frame.v.z };
@@ -46,7 +62,7 @@ void CurvaturePatch::derivativesRow(
     for (std::size_t i = 0; i < n; ++i)
     {
       const double at = a[first + i];
-      this->exponentJet(at, b, frame.origin, exponents + i * Bivector::Count);
+      generatorJet(*this, pieces, at, b, exponents + i * Bivector::Count, chunkWeights[i]);
       for (int k = 0; k < 3; ++k)
       {
         points[3 * i + k] = SurfaceJet{ at * us[k] + b * vs[k], us[k], vs[k], 0.0, 0.0, 0.0 };
@@ -60,9 +76,14 @@ void CurvaturePatch::derivativesRow(
         return Vec3{ image[0].*member, image[1].*member, image[2].*member };
       };
       const Vec3 point = frame.origin + component(&SurfaceJet::value);
-      ok[first + i] = mapped[i] && isFinite(point);
+      // As mapRow, a sample whose weight overflowed is dropped.
+      ok[first + i] = mapped[i] && isFinite(point) && std::isfinite(chunkWeights[i]);
       if (ok[first + i])
       {
+        if (weights)
+        {
+          weights[first + i] = chunkWeights[i];
+        }
         SurfaceDerivatives& x = out[first + i];
         x.point = point;
         x.du = component(&SurfaceJet::da);

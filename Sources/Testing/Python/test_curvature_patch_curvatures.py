@@ -150,6 +150,34 @@ class CurvaturePatchCurvaturesTest(unittest.TestCase):
             for coarse, fine in zip(series, series[1:]):
                 self.assertGreater(coarse / fine, 3.0, (mode, series))
 
+    def test_points_and_weights_are_those_without_curvatures(self):
+        # With ComputeCurvatures the points and weights come from the derivatives' value parts,
+        # not from a second map: every method gives the same points and GeneratorWeight values to
+        # the bit as without the option, on a patch far from the space origin too.
+        for method in range(vtkCurvaturePatchSource.BENT_LINE,
+                            vtkCurvaturePatchSource.BILINEAR + 1):
+            for origin in ((0.0, 0.0, 0.0), (1e3, -2e3, 5e2)):
+                outputs = []
+                for curvatures in (True, False):
+                    s = preset_source(vtkCurvaturePatchSource.ELLIPTIC, 24)
+                    s.SetMethod(method)
+                    s.SetOrigin(origin)
+                    s.SetClipRadius(1e9)
+                    s.AddControlPoint(0.5, -0.5, 0, 0, 0, 1, 1, 0, 0, 0.5, -0.25)
+                    s.AddControlPoint(-0.5, 0.5, 0, 0, 0.2, 1, 1, 0, 0, 0.3, 0.3)
+                    s.SetComputeCurvatures(curvatures)
+                    s.Update()
+                    outputs.append(s.GetOutput())
+                with_curvatures, plain = outputs
+                where = (method, origin)
+                self.assertGreater(plain.GetNumberOfPoints(), 600, where)
+                self.assertEqual(plain.GetNumberOfPoints(), with_curvatures.GetNumberOfPoints(),
+                                 where)
+                weights = [o.GetPointData().GetArray("GeneratorWeight") for o in outputs]
+                for i in range(plain.GetNumberOfPoints()):
+                    self.assertEqual(with_curvatures.GetPoint(i), plain.GetPoint(i), where)
+                    self.assertEqual(weights[0].GetValue(i), weights[1].GetValue(i), where)
+
     def test_exact_normals_and_the_cut_at_the_clip_sphere(self):
         # Fig 7 c cut by a clip sphere of radius 1.5 about the origin: the kept points have the
         # values of the whole patch, the points made by the cut interpolated ones (finite, unit

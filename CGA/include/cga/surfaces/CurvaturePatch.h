@@ -91,9 +91,12 @@ struct CurvaturePatch
 
   /// derivatives() of the samples (a[i], b) of one row, i < count, at once: each exponent's jet
   /// as exponentJet, their images eight at a time (mapJetsByExponential). ok[i] is derivatives()'
-  /// return value (out[i] unchanged where false); derivatives() is this for one sample.
+  /// return value (out[i] unchanged where false); derivatives() is this for one sample. Where
+  /// ok[i], out[i].point and, if weights is not null, weights[i] are mapRow's out[i] and
+  /// weights[i] bit for bit (the same operations: the jets' value parts), so a caller that needs
+  /// the derivatives need not map the samples again.
   void derivativesRow(double b, const double* a, std::size_t count, SurfaceDerivatives* out,
-    bool* ok) const;
+    bool* ok, double* weights = nullptr) const;
 
 private:
   /// E(a, b) of the patch moved by -shift.
