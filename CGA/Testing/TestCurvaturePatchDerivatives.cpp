@@ -332,6 +332,49 @@ TEST(CurvaturePatchDerivatives, AnOverflowedWeightIsNotDifferentiated)
   EXPECT_EQ(7.0, weight);
 }
 
+TEST(CurvaturePatchDerivatives, AFlatFarControlPointAddsNothingToTheDerivatives)
+{
+  // A control point with both curvatures zero has a zero weight, value and derivatives: its term
+  // is exactly zero, even where its tau is not finite (a location near 1e160, |x|^2 overflows;
+  // 0 * inf would be NaN). The derivatives are those without it, in every lane of a row.
+  Random random(1313);
+  CurvaturePatch patch = patchOf(CurvatureMethod::ControlPoints, random);
+  CurvaturePatch withFlat = patch;
+  CurvatureControlPoint flat = patch.controlPoints[0];
+  flat.location = Vec3{ 1e160, -2e160, 5e159 };
+  flat.kappaU = flat.kappaV = 0.0;
+  withFlat.controlPoints.push_back(flat);
+  // Both validated as often: validate() normalizes the frame again, which may move it by an ulp.
+  ASSERT_TRUE(patch.validate().empty());
+  ASSERT_TRUE(withFlat.validate().empty());
+  constexpr std::size_t kCount = 11;
+  const double b = 0.3;
+  double a[kCount];
+  for (double& value : a)
+  {
+    value = random.uniform(-1.0, 1.0);
+  }
+  std::vector<SurfaceDerivatives> expected(kCount), got(kCount);
+  bool expectedOk[kCount], gotOk[kCount];
+  patch.derivativesRow(b, a, kCount, expected.data(), expectedOk);
+  withFlat.derivativesRow(b, a, kCount, got.data(), gotOk);
+  for (std::size_t i = 0; i < kCount; ++i)
+  {
+    ASSERT_TRUE(expectedOk[i]);
+    ASSERT_TRUE(gotOk[i]) << "sample " << i;
+    int k = 0;
+    for (Vec3 SurfaceDerivatives::*part : { &SurfaceDerivatives::point, &SurfaceDerivatives::du,
+           &SurfaceDerivatives::dv, &SurfaceDerivatives::duu, &SurfaceDerivatives::duv,
+           &SurfaceDerivatives::dvv })
+    {
+      const Vec3 e = expected[i].*part, g = got[i].*part;
+      EXPECT_EQ(e.x, g.x) << "sample " << i << " part " << k;
+      EXPECT_EQ(e.y, g.y) << "sample " << i << " part " << k;
+      EXPECT_EQ(e.z, g.z) << "sample " << i << " part " << k++;
+    }
+  }
+}
+
 TEST(CurvaturePatchDerivatives, ImageDerivativesAreMapsDifferences)
 {
   Random random(1304);

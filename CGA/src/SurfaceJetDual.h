@@ -1,8 +1,8 @@
 // Internal: a value with its first and second derivatives in two parameters (a, b) (the public
 // SurfaceJet of ExponentialMap.h, six parts) as the second-order dual number
-// Dual<Dual<T, 2>, 2> of DualNumber.h and back, for T double (the curvature patch's jets of its
-// operators, src/surfaces/CurvaturePatchJet.cpp) or the block kernel's lane vector (the kernel's
-// mapBlockJets, mapJetsByExponential's input and output, JetBlockMap.h).
+// Dual<Dual<T, 2>, 2> of DualNumber.h and back, for T LaneClones.h's Eight (the curvature patch's
+// jets of its operators, src/surfaces/CurvaturePatchJet.cpp), the block kernel's lane vector and
+// double (JetBlockMap.h: mapJetsByExponential's input and output; the tests' reference).
 //
 // Internal linkage only (see PointMapCore.h).
 #pragma once

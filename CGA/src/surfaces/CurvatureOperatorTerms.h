@@ -1,7 +1,8 @@
 // Internal: the curvature operators of CurvatureOperators.h (eq 15-18, 21-22, 24-26) and the
 // curvature patch's choice among them, written once as templates over the number type T of the
 // patch coordinates (a, b): double for the values (CurvatureOperators.cpp, CurvaturePatch.cpp),
-// the second-order dual number of SurfaceJetDual.h for their derivatives in (a, b)
+// LaneClones.h's Eight for eight samples at once (CurvaturePatch.cpp's control point sums), and
+// Eight's second-order dual numbers (SurfaceJetDual.h) for their derivatives in (a, b)
 // (CurvaturePatchJet.cpp). Every operator is a sum of w_i(a, b) tau(x_i(a, b), d_i), the null point
 // pair's closed form from NullPointPairTerms.h. The operations keep one order for every T (the
 // core has no fused multiply-add), so a jet's value is the double result bit for bit.
@@ -9,15 +10,33 @@
 
 #include "cga/surfaces/CurvaturePatch.h"
 
+#include "../DualNumber.h"
 #include "../ForceInline.h"
 #include "../LaneClones.h"
 #include "../NullPointPairTerms.h"
 
 #include <array>
 #include <optional>
+#include <type_traits>
 
 namespace cga
 {
+namespace core
+{
+namespace
+{
+// LaneClones.h's Eight as a number type of DualNumber.h (the jets of eight samples,
+// CurvaturePatchJet.cpp's generatorJets): eight lanes, the mask of its comparisons.
+template <>
+constexpr int kLanesOf<detail::Eight> = 8;
+template <>
+struct MaskOf<detail::Eight>
+{
+  using type = detail::EightMask;
+};
+} // namespace
+} // namespace core
+
 namespace detail
 {
 namespace // internal linkage: no calls through the shared library's symbol table (PLT)
@@ -64,49 +83,30 @@ struct Constant<double>
 {
   static double of(double x) { return x; }
 };
-
-/// The value of x: x itself, or the innermost value of a dual number; and setting it.
-inline double valuePart(double x)
+template <>
+struct Constant<Eight>
 {
-  return x;
-}
-template <typename T>
-double valuePart(const T& x)
-{
-  return valuePart(x.v);
-}
-inline void setValuePart(double& x, double value)
-{
-  x = value;
-}
-template <typename T>
-void setValuePart(T& x, double value)
-{
-  setValuePart(x.v, value);
-}
-
-/// Whether x and, for a dual number, every tangent of it are zero: a weight whose term adds
-/// nothing to the value or to a derivative.
-inline bool allZero(double x)
-{
-  return x == 0.0;
-}
-template <typename T>
-bool allZero(const T& x)
-{
-  if (!allZero(x.v))
+  // A template: compiled only where used (files built with -Wno-psabi; see LaneClones.h).
+  template <typename D>
+  static BOOSTED_LANE_INLINE Eight of(D x)
   {
-    return false;
+    return Eight{} + x;
   }
-  for (const auto& d : x.d)
-  {
-    if (!allZero(d))
-    {
-      return false;
-    }
-  }
-  return true;
-}
+};
+
+/// Whether T holds eight samples, one per lane: Eight or a dual number over it.
+template <typename T>
+struct OnLanes : std::false_type
+{
+};
+template <>
+struct OnLanes<Eight> : std::true_type
+{
+};
+template <typename T, int N>
+struct OnLanes<core::Dual<T, N>> : OnLanes<T>
+{
+};
 
 /// PatchFrame::at(a, b) = origin + a u + b v, on the number types of a and b.
 template <typename A, typename B>
@@ -163,33 +163,86 @@ BOOSTED_FORCE_INLINE ExponentOf<T> nullPointPair(const PointOf<T>& x, Vec3 v)
 }
 
 /// The exponent -w pair of a generator of weight w, exactly zero where w is zero: tau of a
-/// far-away location may not be finite (0 * inf). Where only w's value is zero (two terms that
-/// cancel at p but not nearby), the value is +0 as for double and the tangents are -w pair's.
-template <typename T>
-BOOSTED_FORCE_INLINE ExponentOf<T> exponentOfWeight(const Bivector& pair, const T& w)
+/// far-away location may not be finite (0 * inf).
+BOOSTED_FORCE_INLINE Bivector exponentOfWeight(const Bivector& pair, double w)
 {
-  ExponentOf<T> term{};
-  if (!allZero(w))
+  Bivector term{};
+  if (w != 0.0)
   {
-    const bool zeroValue = valuePart(w) == 0.0;
     term = scaled<double>(pair, -w);
-    for (int c = 0; zeroValue && c < Bivector::Count; ++c)
-    {
-      setValuePart(term[c], 0.0);
-    }
   }
   return term;
 }
 
-/// exponentOfWeight for eight samples at once (LaneClones.h's Eight; CurvaturePatch.cpp's
-/// controlPointGenerators): each lane as for double, exactly zero where its w is zero.
-BOOSTED_LANE_INLINE ExponentOf<Eight> exponentOfWeight(const Bivector& pair, const Eight& w)
+/// Per lane of Eight or of its jets: where x and all its tangents are zero (zeroLanes), where its
+/// value is (zeroValueLanes); x set to +0 where mask holds (clearLanes), or only its value
+/// (clearValueLanes). On Eight itself templates too, compiled only where used (files built with
+/// -Wno-psabi; see LaneClones.h).
+template <typename Lanes>
+using IfEight = std::enable_if_t<std::is_same<Lanes, Eight>::value, int>;
+template <typename Lanes, IfEight<Lanes> = 0>
+BOOSTED_LANE_INLINE EightMask zeroLanes(const Lanes& x)
 {
-  ExponentOf<Eight> term;
-  const auto zero = w == 0.0;
+  return x == 0.0;
+}
+template <typename T, int N>
+BOOSTED_LANE_INLINE EightMask zeroLanes(const core::Dual<T, N>& x)
+{
+  EightMask zero = zeroLanes(x.v);
+  for (const T& d : x.d)
+  {
+    zero = zero & zeroLanes(d);
+  }
+  return zero;
+}
+template <typename Lanes, IfEight<Lanes> = 0>
+BOOSTED_LANE_INLINE EightMask zeroValueLanes(const Lanes& x)
+{
+  return x == 0.0;
+}
+template <typename T, int N>
+BOOSTED_LANE_INLINE EightMask zeroValueLanes(const core::Dual<T, N>& x)
+{
+  return zeroValueLanes(x.v);
+}
+template <typename Lanes, IfEight<Lanes> = 0>
+BOOSTED_LANE_INLINE void clearLanes(Lanes& x, EightMask mask)
+{
+  x = mask ? Eight{} : x;
+}
+template <typename T, int N>
+BOOSTED_LANE_INLINE void clearLanes(core::Dual<T, N>& x, EightMask mask)
+{
+  clearLanes(x.v, mask);
+  for (T& d : x.d)
+  {
+    clearLanes(d, mask);
+  }
+}
+template <typename Lanes, IfEight<Lanes> = 0>
+BOOSTED_LANE_INLINE void clearValueLanes(Lanes& x, EightMask mask)
+{
+  clearLanes(x, mask);
+}
+template <typename T, int N>
+BOOSTED_LANE_INLINE void clearValueLanes(core::Dual<T, N>& x, EightMask mask)
+{
+  clearValueLanes(x.v, mask);
+}
+
+/// exponentOfWeight for eight samples at once (Eight: CurvaturePatch.cpp's
+/// controlPointGenerators; its jets: CurvaturePatchJet.cpp's generatorJets), each lane as for one
+/// sample: zero where w and its tangents are. Where only w's value is zero (two terms that cancel
+/// at p but not nearby), the value is +0 as for double and the tangents are -w pair's.
+template <typename T, std::enable_if_t<OnLanes<T>::value, int> = 0>
+BOOSTED_LANE_INLINE ExponentOf<T> exponentOfWeight(const Bivector& pair, const T& w)
+{
+  const EightMask zero = zeroLanes(w), zeroValue = zeroValueLanes(w);
+  ExponentOf<T> term = scaled<double>(pair, -w);
   for (int c = 0; c < Bivector::Count; ++c)
   {
-    term[c] = zero ? Eight{} : pair[c] * -w;
+    clearLanes(term[c], zero);
+    clearValueLanes(term[c], zeroValue);
   }
   return term;
 }

@@ -9,24 +9,64 @@
 #include <algorithm>
 #include <cmath>
 
+// Compiled per instruction set (LaneClones.h), but not under AddressSanitizer: there
+// BOOSTED_FORCE_INLINE is a plain inline (ForceInline.h), so DualNumber.h's operators on Eight may
+// be called out of line, and a 64-byte vector must not cross a call between a clone and the
+// default target; flattening the instrumented jets instead took 9.5 minutes to compile.
+#ifdef __SANITIZE_ADDRESS__
+#define BOOSTED_JET_CLONES
+#else
+#define BOOSTED_JET_CLONES BOOSTED_LANE_CLONES
+#endif
+
 namespace cga
 {
 namespace
 {
-/// exponentJet's jets of E(a, b) of the patch moved by pieces' shift, and the value of the local
-/// weight (generatorAbout's).
-void generatorJet(const CurvaturePatch& patch, const detail::PatchPieces& pieces, double aValue,
-  double bValue, SurfaceJet exponent[Bivector::Count], double& weight)
+/// exponentJet of the samples (a[i], b), i < count, of the patch moved by pieces' shift, and the
+/// values of their local weights (generatorAbout's), eight samples at a time: the operators'
+/// template on the jets of LaneClones.h's Eight, the same operations in the same order as on
+/// double (the same bits).
+BOOSTED_JET_CLONES
+void generatorJets(const CurvaturePatch& patch, const detail::PatchPieces& pieces, const double* a,
+  double b, std::size_t count, SurfaceJet* exponents, double* weights)
 {
-  // The seeds: a with d/da = 1, b with d/db = 1.
-  const core::SurfaceJetDual a = core::secondOf(SurfaceJet{ aValue, 1.0, 0.0, 0.0, 0.0, 0.0 });
-  const core::SurfaceJetDual b = core::secondOf(SurfaceJet{ bValue, 0.0, 1.0, 0.0, 0.0, 0.0 });
-  const auto generator = detail::patchGeneratorOf(patch, pieces, a, b);
-  for (int c = 0; c < Bivector::Count; ++c)
+  using detail::Eight;
+  constexpr int L = 8;
+  constexpr int P = core::kJetParts;
+  const Eight zero{}, one = zero + 1.0;
+  for (std::size_t first = 0; first < count; first += L)
   {
-    core::jetOf(generator.exponent[c], exponent[c]); // finite or not: mapJetsByExponential checks
+    const int n = static_cast<int>(std::min<std::size_t>(L, count - first));
+    Eight lanes;
+    for (int l = 0; l < L; ++l)
+    {
+      lanes[l] = a[first + static_cast<std::size_t>(std::min(l, n - 1))];
+    }
+    // The seeds: a with d/da = 1, b with d/db = 1.
+    const Eight aParts[P] = { lanes, one, zero, zero, zero, zero };
+    const Eight bParts[P] = { zero + b, zero, one, zero, zero, zero };
+    const auto generator = detail::patchGeneratorOf(
+      patch, pieces, core::secondOrderOf(aParts), core::secondOrderOf(bParts));
+    for (int c = 0; c < Bivector::Count; ++c)
+    {
+      Eight parts[P];
+      core::partsOf(generator.exponent[c], parts);
+      for (int l = 0; l < n; ++l)
+      {
+        double lane[P];
+        for (int j = 0; j < P; ++j)
+        {
+          lane[j] = parts[j][l];
+        }
+        core::jetOf(lane, exponents[(first + static_cast<std::size_t>(l)) * Bivector::Count + c]);
+      }
+    }
+    for (int l = 0; l < n; ++l)
+    {
+      weights[first + static_cast<std::size_t>(l)] = generator.weight.v.v[l];
+    }
   }
-  weight = detail::valuePart(generator.weight);
 }
 } // namespace
 
@@ -34,7 +74,7 @@ void CurvaturePatch::exponentJet(
   double a, double b, Vec3 shift, SurfaceJet exponent[Bivector::Count]) const
 {
   double weight;
-  generatorJet(*this, detail::PatchPieces(*this, shift), a, b, exponent, weight);
+  generatorJets(*this, detail::PatchPieces(*this, shift), &a, b, 1, exponent, &weight);
 }
 
 bool CurvaturePatch::derivatives(double a, double b, SurfaceDerivatives& out) const
@@ -48,7 +88,8 @@ void CurvaturePatch::derivativesRow(double b, const double* a, std::size_t count
   SurfaceDerivatives* out, bool* ok, double* weights) const
 {
   // About the origin, as mapRow: the patch moved by -origin, p = a u + b v, the image moved back.
-  // In chunks of a few blocks (the jets take 624 bytes a sample).
+  // In chunks of a few blocks (the jets take 624 bytes a sample); the exponents' jets eight
+  // samples at a time (generatorJets), their images too (mapJetsByExponential).
   constexpr std::size_t kChunk = 32;
   const detail::PatchPieces pieces(*this, frame.origin); // once for the row
   SurfaceJet exponents[kChunk * Bivector::Count], points[kChunk * 3], images[kChunk * 3];
@@ -59,10 +100,10 @@ void CurvaturePatch::derivativesRow(double b, const double* a, std::size_t count
   for (std::size_t first = 0; first < count; first += kChunk)
   {
     const std::size_t n = std::min(kChunk, count - first);
+    generatorJets(*this, pieces, a + first, b, n, exponents, chunkWeights);
     for (std::size_t i = 0; i < n; ++i)
     {
       const double at = a[first + i];
-      generatorJet(*this, pieces, at, b, exponents + i * Bivector::Count, chunkWeights[i]);
       for (int k = 0; k < 3; ++k)
       {
         points[3 * i + k] = SurfaceJet{ at * us[k] + b * vs[k], us[k], vs[k], 0.0, 0.0, 0.0 };
