@@ -3,7 +3,9 @@
 // image's against map(), and the curvatures they give against the paper's statements: eq 15's
 // bent line has curvature kappa, and Fig 7's presets have the principal curvatures
 // (kappaU, kappaV) at the origin.
+#include "SurfaceJetDual.h"
 #include "TestSupport.h"
+#include "surfaces/CurvatureOperatorTerms.h"
 
 #include "cga/ExponentialMap.h"
 #include "cga/SurfaceCurvature.h"
@@ -61,6 +63,16 @@ void applyTrial(CurvaturePatch& patch, int trial)
     c.kappaU = trial == 1 ? 0.0 : c.kappaU;
     c.kappaV = trial == 2 ? -c.kappaU : c.kappaV;
     c.location = moved ? c.location + shift : c.location;
+  }
+}
+
+// A row's parameters a, uniform in [-1, 1).
+template <std::size_t N>
+void randomRow(Random& random, double (&a)[N])
+{
+  for (double& value : a)
+  {
+    value = random.uniform(-1.0, 1.0);
   }
 }
 
@@ -153,6 +165,36 @@ TEST(CurvaturePatchDerivatives, ExponentJetValueIsTheGeneratorBitForBit)
   });
 }
 
+TEST(CurvaturePatchDerivatives, ExponentJetIsTheScalarJetsBitForBit)
+{
+  // exponentJet runs the operators' template on the jets of eight samples in lanes
+  // (generatorJets): every part, the derivatives too, is the same template's on the jets of one
+  // sample in double (SurfaceJetDual.h) to the bit, at random samples of every method and trial.
+  Random random(1308);
+  forEveryTrialPatch(random, 7, [&random](const CurvaturePatch& patch, CurvatureMethod method, int trial) {
+    const detail::PatchPieces pieces(patch, patch.frame.origin);
+    for (int sample = 0; sample < 9; ++sample)
+    {
+      const double a = random.uniform(-1.0, 1.0), b = random.uniform(-1.0, 1.0);
+      const double aParts[core::kJetParts] = { a, 1.0, 0.0, 0.0, 0.0, 0.0 };
+      const double bParts[core::kJetParts] = { b, 0.0, 1.0, 0.0, 0.0, 0.0 };
+      const auto scalar =
+        detail::patchGeneratorOf(patch, pieces, core::secondOrderOf(aParts), core::secondOrderOf(bParts));
+      SurfaceJet jet[Bivector::Count];
+      patch.exponentJet(a, b, patch.frame.origin, jet);
+      for (int c = 0; c < Bivector::Count; ++c)
+      {
+        double expected[core::kJetParts], parts[core::kJetParts];
+        core::partsOf(scalar.exponent[c], expected);
+        core::partsOf(jet[c], parts);
+        EXPECT_EQ(0, std::memcmp(parts, expected, sizeof parts))
+          << static_cast<int>(method) << " trial " << trial << " component " << c << ": daa "
+          << parts[3] << " " << expected[3] << ", dab " << parts[4] << " " << expected[4];
+      }
+    }
+  });
+}
+
 TEST(CurvaturePatchDerivatives, MapRowIsTheOneSampleGeneratorBitForBit)
 {
   // mapRow computes a row's generators its own way (the control points' sums eight samples at a
@@ -167,10 +209,7 @@ TEST(CurvaturePatchDerivatives, MapRowIsTheOneSampleGeneratorBitForBit)
     double a[kCount], weights[kCount];
     Vec3 out[kCount];
     bool mapped[kCount];
-    for (double& value : a)
-    {
-      value = random.uniform(-1.0, 1.0);
-    }
+    randomRow(random, a);
     patch.mapRow(b, a, kCount, out, weights, mapped);
     for (std::size_t i = 0; i < kCount; ++i)
     {
@@ -215,10 +254,7 @@ TEST(CurvaturePatchDerivatives, DerivativesRowIsTheOneSampleJetsBitForBit)
     constexpr std::size_t kCount = 45;
     const double b = random.uniform(-1.0, 1.0);
     double a[kCount];
-    for (double& value : a)
-    {
-      value = random.uniform(-1.0, 1.0);
-    }
+    randomRow(random, a);
     SurfaceDerivatives sentinel;
     sentinel.point = Vec3{ 7, 8, 9 };
     std::vector<SurfaceDerivatives> out(kCount, sentinel);
@@ -275,10 +311,7 @@ TEST(CurvaturePatchDerivatives, DerivativesRowPointsAndWeightsAreMapRowsBitForBi
     Vec3 out[kCount];
     bool mapped[kCount], ok[kCount];
     std::vector<SurfaceDerivatives> derivatives(kCount);
-    for (double& value : a)
-    {
-      value = random.uniform(-1.0, 1.0);
-    }
+    randomRow(random, a);
     patch.mapRow(b, a, kCount, out, weights, mapped);
     patch.derivativesRow(b, a, kCount, derivatives.data(), ok, jetWeights);
     int compared = 0;
@@ -350,10 +383,7 @@ TEST(CurvaturePatchDerivatives, AFlatFarControlPointAddsNothingToTheDerivatives)
   constexpr std::size_t kCount = 11;
   const double b = 0.3;
   double a[kCount];
-  for (double& value : a)
-  {
-    value = random.uniform(-1.0, 1.0);
-  }
+  randomRow(random, a);
   std::vector<SurfaceDerivatives> expected(kCount), got(kCount);
   bool expectedOk[kCount], gotOk[kCount];
   patch.derivativesRow(b, a, kCount, expected.data(), expectedOk);

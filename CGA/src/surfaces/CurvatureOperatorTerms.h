@@ -174,10 +174,10 @@ BOOSTED_FORCE_INLINE Bivector exponentOfWeight(const Bivector& pair, double w)
   return term;
 }
 
-/// Per lane of Eight or of its jets: where x and all its tangents are zero (zeroLanes), where its
-/// value is (zeroValueLanes); x set to +0 where mask holds (clearLanes), or only its value
-/// (clearValueLanes). On Eight itself templates too, compiled only where used (files built with
-/// -Wno-psabi; see LaneClones.h).
+/// Per lane of Eight, of double (one lane) or of their jets: where x and all its tangents are zero
+/// (zeroLanes), where its value is (zeroValueLanes); x set to +0 where mask holds (clearLanes), or
+/// only its value (clearValueLanes). On Eight itself templates too, compiled only where used (files
+/// built with -Wno-psabi; see LaneClones.h).
 template <typename Lanes>
 using IfEight = std::enable_if_t<std::is_same<Lanes, Eight>::value, int>;
 template <typename Lanes, IfEight<Lanes> = 0>
@@ -185,10 +185,14 @@ BOOSTED_LANE_INLINE EightMask zeroLanes(const Lanes& x)
 {
   return x == 0.0;
 }
-template <typename T, int N>
-BOOSTED_LANE_INLINE EightMask zeroLanes(const core::Dual<T, N>& x)
+BOOSTED_FORCE_INLINE bool zeroLanes(double x)
 {
-  EightMask zero = zeroLanes(x.v);
+  return x == 0.0;
+}
+template <typename T, int N>
+BOOSTED_LANE_INLINE auto zeroLanes(const core::Dual<T, N>& x)
+{
+  auto zero = zeroLanes(x.v);
   for (const T& d : x.d)
   {
     zero = zero & zeroLanes(d);
@@ -200,8 +204,12 @@ BOOSTED_LANE_INLINE EightMask zeroValueLanes(const Lanes& x)
 {
   return x == 0.0;
 }
+BOOSTED_FORCE_INLINE bool zeroValueLanes(double x)
+{
+  return x == 0.0;
+}
 template <typename T, int N>
-BOOSTED_LANE_INLINE EightMask zeroValueLanes(const core::Dual<T, N>& x)
+BOOSTED_LANE_INLINE auto zeroValueLanes(const core::Dual<T, N>& x)
 {
   return zeroValueLanes(x.v);
 }
@@ -210,8 +218,12 @@ BOOSTED_LANE_INLINE void clearLanes(Lanes& x, EightMask mask)
 {
   x = mask ? Eight{} : x;
 }
-template <typename T, int N>
-BOOSTED_LANE_INLINE void clearLanes(core::Dual<T, N>& x, EightMask mask)
+BOOSTED_FORCE_INLINE void clearLanes(double& x, bool mask)
+{
+  x = mask ? 0.0 : x;
+}
+template <typename T, int N, typename Mask>
+BOOSTED_LANE_INLINE void clearLanes(core::Dual<T, N>& x, Mask mask)
 {
   clearLanes(x.v, mask);
   for (T& d : x.d)
@@ -224,20 +236,25 @@ BOOSTED_LANE_INLINE void clearValueLanes(Lanes& x, EightMask mask)
 {
   clearLanes(x, mask);
 }
-template <typename T, int N>
-BOOSTED_LANE_INLINE void clearValueLanes(core::Dual<T, N>& x, EightMask mask)
+BOOSTED_FORCE_INLINE void clearValueLanes(double& x, bool mask)
+{
+  clearLanes(x, mask);
+}
+template <typename T, int N, typename Mask>
+BOOSTED_LANE_INLINE void clearValueLanes(core::Dual<T, N>& x, Mask mask)
 {
   clearValueLanes(x.v, mask);
 }
 
 /// exponentOfWeight for eight samples at once (Eight: CurvaturePatch.cpp's
-/// controlPointGenerators; its jets: CurvaturePatchJet.cpp's generatorJets), each lane as for one
-/// sample: zero where w and its tangents are. Where only w's value is zero (two terms that cancel
-/// at p but not nearby), the value is +0 as for double and the tangents are -w pair's.
-template <typename T, std::enable_if_t<OnLanes<T>::value, int> = 0>
+/// controlPointGenerators; its jets: CurvaturePatchJet.cpp's generatorJets) and for the jets of
+/// one sample (the tests' scalar reference of generatorJets), each lane as for one sample: zero
+/// where w and its tangents are. Where only w's value is zero (two terms that cancel at p but not
+/// nearby), the value is +0 as for double and the tangents are -w pair's.
+template <typename T, std::enable_if_t<OnLanes<T>::value || core::kHasTangents<T>, int> = 0>
 BOOSTED_LANE_INLINE ExponentOf<T> exponentOfWeight(const Bivector& pair, const T& w)
 {
-  const EightMask zero = zeroLanes(w), zeroValue = zeroValueLanes(w);
+  const auto zero = zeroLanes(w), zeroValue = zeroValueLanes(w);
   ExponentOf<T> term = scaled<double>(pair, -w);
   for (int c = 0; c < Bivector::Count; ++c)
   {
