@@ -42,7 +42,7 @@ struct Dual
 /// Dual<Dual<T, 2>, 2> (second order in two seeds) holds each first derivative twice (x.v.d[k] and
 /// x.d[k].v) and the mixed one twice (x.d[0].d[1] and x.d[1].d[0]). Every operation below ends by
 /// copying the first of each pair over the second, so the compiler drops the second's arithmetic
-/// (15 multiplications per product instead of 25). The parts kept are computed as before, to the
+/// (17 multiplications per product instead of 25). The parts kept are computed as before, to the
 /// bit: the two copies of a first derivative were the same expression of equal inputs, and
 /// d[0].d[1] never reads d[1].d[0].
 template <typename D>
