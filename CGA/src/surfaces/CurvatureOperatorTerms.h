@@ -3,9 +3,10 @@
 // patch coordinates (a, b): double for the values (CurvatureOperators.cpp, CurvaturePatch.cpp),
 // LaneClones.h's Eight for eight samples at once (CurvaturePatch.cpp's control point sums), and
 // Eight's second-order dual numbers (SurfaceJetDual.h) for their derivatives in (a, b)
-// (CurvaturePatchJet.cpp), and double's for one sample (the tests' reference of the lanes). Every operator is a sum of w_i(a, b) tau(x_i(a, b), d_i), the null point
-// pair's closed form from NullPointPairTerms.h. The operations keep one order for every T (the
-// core has no fused multiply-add), so a jet's value is the double result bit for bit.
+// (CurvaturePatchJet.cpp), and double's for one sample (the tests' reference of the lanes). Every
+// operator is a sum of w_i(a, b) tau(x_i(a, b), d_i), the null point pair's closed form from
+// NullPointPairTerms.h. The operations keep one order for every T (the core has no fused
+// multiply-add), so a jet's value is the double result bit for bit.
 #pragma once
 
 #include "cga/surfaces/CurvaturePatch.h"
