@@ -24,7 +24,7 @@ struct Parts
   double p[core::kJetParts];
 };
 
-Jet jetOf(const Parts& x)
+Jet dualOf(const Parts& x)
 {
   return core::secondOrderOf(x.p);
 }
@@ -106,7 +106,7 @@ TEST(SecondOrderDual, OperationsFollowTheProductAndChainRules)
   {
     const Parts u = randomParts(random, 0.5, 2.0), w = randomParts(random, 0.5, 2.0),
                 c = randomParts(random, -2.0, 2.0);
-    const Jet ju = jetOf(u), jw = jetOf(w), jc = jetOf(c);
+    const Jet ju = dualOf(u), jw = dualOf(w), jc = dualOf(c);
     const double x = u.p[0];
     const std::string at = " (trial " + std::to_string(trial) + ")";
 
@@ -144,6 +144,6 @@ TEST(SecondOrderDual, OperationsFollowTheProductAndChainRules)
 TEST(SecondOrderDual, SquareRootOfZeroHasNoDerivatives)
 {
   const Parts zero{ { 0.0, 0.5, -0.25, 1.0, 2.0, -3.0 } };
-  expectJet(core::laneSqrt(jetOf(zero)), Parts{ { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 } }, "sqrt(0)");
+  expectJet(core::laneSqrt(dualOf(zero)), Parts{ { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 } }, "sqrt(0)");
 }
 } // namespace

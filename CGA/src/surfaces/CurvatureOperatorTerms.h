@@ -177,16 +177,13 @@ BOOSTED_FORCE_INLINE Bivector exponentOfWeight(const Bivector& pair, double w)
 
 /// Per lane of Eight, of double (one lane) or of their jets: where x and all its tangents are zero
 /// (zeroLanes), where its value is (zeroValueLanes); x set to +0 where mask holds (clearLanes), or
-/// only its value (clearValueLanes). On Eight itself templates too, compiled only where used (files
+/// only its value (clearValueLanes). Templates, so that Eight's are compiled only where used (files
 /// built with -Wno-psabi; see LaneClones.h).
 template <typename Lanes>
-using IfEight = std::enable_if_t<std::is_same<Lanes, Eight>::value, int>;
-template <typename Lanes, IfEight<Lanes> = 0>
-BOOSTED_LANE_INLINE EightMask zeroLanes(const Lanes& x)
-{
-  return x == 0.0;
-}
-BOOSTED_FORCE_INLINE bool zeroLanes(double x)
+using IfPlainLanes =
+  std::enable_if_t<std::is_same<Lanes, Eight>::value || std::is_same<Lanes, double>::value, int>;
+template <typename Lanes, IfPlainLanes<Lanes> = 0>
+BOOSTED_LANE_INLINE auto zeroLanes(const Lanes& x)
 {
   return x == 0.0;
 }
@@ -200,28 +197,20 @@ BOOSTED_LANE_INLINE auto zeroLanes(const core::Dual<T, N>& x)
   }
   return zero;
 }
-template <typename Lanes, IfEight<Lanes> = 0>
-BOOSTED_LANE_INLINE EightMask zeroValueLanes(const Lanes& x)
+template <typename Lanes, IfPlainLanes<Lanes> = 0>
+BOOSTED_LANE_INLINE auto zeroValueLanes(const Lanes& x)
 {
-  return x == 0.0;
-}
-BOOSTED_FORCE_INLINE bool zeroValueLanes(double x)
-{
-  return x == 0.0;
+  return zeroLanes(x); // a plain number is its value
 }
 template <typename T, int N>
 BOOSTED_LANE_INLINE auto zeroValueLanes(const core::Dual<T, N>& x)
 {
   return zeroValueLanes(x.v);
 }
-template <typename Lanes, IfEight<Lanes> = 0>
-BOOSTED_LANE_INLINE void clearLanes(Lanes& x, EightMask mask)
+template <typename Lanes, typename Mask, IfPlainLanes<Lanes> = 0>
+BOOSTED_LANE_INLINE void clearLanes(Lanes& x, Mask mask)
 {
-  x = mask ? Eight{} : x;
-}
-BOOSTED_FORCE_INLINE void clearLanes(double& x, bool mask)
-{
-  x = mask ? 0.0 : x;
+  x = mask ? Lanes{} : x;
 }
 template <typename T, int N, typename Mask>
 BOOSTED_LANE_INLINE void clearLanes(core::Dual<T, N>& x, Mask mask)
@@ -232,14 +221,10 @@ BOOSTED_LANE_INLINE void clearLanes(core::Dual<T, N>& x, Mask mask)
     clearLanes(d, mask);
   }
 }
-template <typename Lanes, IfEight<Lanes> = 0>
-BOOSTED_LANE_INLINE void clearValueLanes(Lanes& x, EightMask mask)
+template <typename Lanes, typename Mask, IfPlainLanes<Lanes> = 0>
+BOOSTED_LANE_INLINE void clearValueLanes(Lanes& x, Mask mask)
 {
-  clearLanes(x, mask);
-}
-BOOSTED_FORCE_INLINE void clearValueLanes(double& x, bool mask)
-{
-  clearLanes(x, mask);
+  clearLanes(x, mask); // a plain number is its value
 }
 template <typename T, int N, typename Mask>
 BOOSTED_LANE_INLINE void clearValueLanes(core::Dual<T, N>& x, Mask mask)
