@@ -97,6 +97,43 @@ void forEveryTrialPatch(Random& random, int trials, const Test& test)
   }
 }
 
+// The patch's exponentJet at (a, b): its value generatorAt's (1e-14), its first and second
+// derivatives generatorAt's central differences (1e-8).
+void expectJetIsTheGeneratorWithItsDifferences(const CurvaturePatch& patch, double a, double b)
+{
+  SurfaceJet jet[Bivector::Count];
+  patch.exponentJet(a, b, Vec3{}, jet);
+  auto e = [&](double da, double db) { return patch.generatorAt(a + da, b + db).exponent; };
+  const Bivector value = e(0, 0);
+  // Central differences at h and h/2, extrapolated (Richardson): truncation O(h^4) = 1e-12,
+  // rounding eps / (h/2)^2 = 1e-9 in the second differences.
+  auto extrapolated = [](auto difference) {
+    const double h = 1e-3;
+    return (4.0 * difference(0.5 * h) - difference(h)) / 3.0;
+  };
+  const std::string where = "method " + std::to_string(static_cast<int>(patch.method)) + " at (" +
+    std::to_string(a) + ", " + std::to_string(b) + ")";
+  for (int c = 0; c < Bivector::Count; ++c)
+  {
+    const double scale = std::max(1.0, value.maxAbs());
+    EXPECT_NEAR(jet[c].value, value[c], 1e-14 * scale) << where;
+    // Each derivative to 1e-8 of the larger of the scale and itself.
+    auto expectDerivative = [&](double got, auto difference) {
+      const double expected = extrapolated(difference);
+      EXPECT_NEAR(got, expected, 1e-8 * std::max(scale, std::fabs(expected))) << where;
+    };
+    expectDerivative(jet[c].da, [&](double h) { return (e(h, 0)[c] - e(-h, 0)[c]) / (2 * h); });
+    expectDerivative(jet[c].db, [&](double h) { return (e(0, h)[c] - e(0, -h)[c]) / (2 * h); });
+    expectDerivative(jet[c].daa,
+      [&](double h) { return (e(h, 0)[c] - 2 * value[c] + e(-h, 0)[c]) / (h * h); });
+    expectDerivative(jet[c].dbb,
+      [&](double h) { return (e(0, h)[c] - 2 * value[c] + e(0, -h)[c]) / (h * h); });
+    expectDerivative(jet[c].dab, [&](double h) {
+      return (e(h, h)[c] - e(h, -h)[c] - e(-h, h)[c] + e(-h, -h)[c]) / (4 * h * h);
+    });
+  }
+}
+
 TEST(CurvaturePatchDerivatives, ExponentJetIsTheGeneratorWithItsDifferences)
 {
   Random random(1303);
@@ -105,34 +142,49 @@ TEST(CurvaturePatchDerivatives, ExponentJetIsTheGeneratorWithItsDifferences)
     for (int trial = 0; trial < 5; ++trial)
     {
       const CurvaturePatch patch = patchOf(method, random);
-      const double a = random.uniform(-1.5, 1.5), b = random.uniform(-1.5, 1.5);
-      SurfaceJet jet[Bivector::Count];
-      patch.exponentJet(a, b, Vec3{}, jet);
-      auto e = [&](double da, double db) { return patch.generatorAt(a + da, b + db).exponent; };
-      const Bivector value = e(0, 0);
-      // Central differences at h and h/2, extrapolated (Richardson): truncation O(h^4) = 1e-12,
-      // rounding eps / (h/2)^2 = 1e-9 in the second differences.
-      auto extrapolated = [](auto difference) {
-        const double h = 1e-3;
-        return (4.0 * difference(0.5 * h) - difference(h)) / 3.0;
-      };
-      for (int c = 0; c < Bivector::Count; ++c)
+      expectJetIsTheGeneratorWithItsDifferences(
+        patch, random.uniform(-1.5, 1.5), random.uniform(-1.5, 1.5));
+    }
+  }
+}
+
+TEST(CurvaturePatchDerivatives, AWeightThatCancelsAtTheSampleKeepsItsDerivatives)
+{
+  // A saddle (kappaV = -kappaU) in the patch's plane, its normal the plane's: the patch's own
+  // (OsculatingCircles, at the frame's origin) or a control point (ControlPoints). On the
+  // diagonals through it the two osculating weights cancel exactly (the sample's offset (d, +-d)
+  // is exact), so the generator's weight is 0 there while its derivatives are not (off the
+  // diagonal one weight wins). The jet keeps those derivatives (only a weight zero with all its
+  // tangents is a zero term) and its value is generatorAt's +0 to the bit.
+  for (const CurvatureMethod method :
+    { CurvatureMethod::OsculatingCircles, CurvatureMethod::ControlPoints })
+  {
+    CurvaturePatch patch;
+    patch.method = method;
+    patch.kappaU = 0.75;
+    patch.kappaV = -0.75;
+    patch.epsilon = 0.25;
+    patch.falloff = 0.5;
+    const Vec3 saddle = method == CurvatureMethod::ControlPoints ? Vec3{ 0.25, -0.5, 0.0 } : Vec3{};
+    patch.controlPoints.push_back({ saddle, Vec3{ 0, 0, 1 }, Vec3{ 1, 0, 0 }, 0.75, -0.75 });
+    ASSERT_TRUE(patch.validate().empty());
+    for (const double d : { -0.375, 0.125, 0.5 })
+    {
+      for (const double sign : { 1.0, -1.0 })
       {
-        const double scale = std::max(1.0, value.maxAbs());
-        EXPECT_NEAR(jet[c].value, value[c], 1e-14 * scale) << static_cast<int>(method);
-        EXPECT_NEAR(jet[c].da,
-          extrapolated([&](double h) { return (e(h, 0)[c] - e(-h, 0)[c]) / (2 * h); }), 1e-8 * scale);
-        EXPECT_NEAR(jet[c].db,
-          extrapolated([&](double h) { return (e(0, h)[c] - e(0, -h)[c]) / (2 * h); }), 1e-8 * scale);
-        EXPECT_NEAR(jet[c].daa, extrapolated([&](double h) {
-          return (e(h, 0)[c] - 2 * value[c] + e(-h, 0)[c]) / (h * h);
-        }), 1e-8 * scale);
-        EXPECT_NEAR(jet[c].dbb, extrapolated([&](double h) {
-          return (e(0, h)[c] - 2 * value[c] + e(0, -h)[c]) / (h * h);
-        }), 1e-8 * scale);
-        EXPECT_NEAR(jet[c].dab, extrapolated([&](double h) {
-          return (e(h, h)[c] - e(h, -h)[c] - e(-h, h)[c] + e(-h, -h)[c]) / (4 * h * h);
-        }), 1e-8 * scale);
+        const double a = saddle.x + d, b = saddle.y + sign * d;
+        const CurvatureGenerator g = patch.generatorAt(a, b);
+        ASSERT_EQ(0.0, g.weight) << "the weights do not cancel at (" << a << ", " << b << ")";
+        SurfaceJet jet[Bivector::Count];
+        patch.exponentJet(a, b, Vec3{}, jet);
+        bool moves = false;
+        for (int c = 0; c < Bivector::Count; ++c)
+        {
+          EXPECT_EQ(0, std::memcmp(&jet[c].value, &g.exponent.c[c], sizeof(double))) << c;
+          moves = moves || jet[c].da != 0.0 || jet[c].db != 0.0;
+        }
+        EXPECT_TRUE(moves) << "the generator does not change near (" << a << ", " << b << ")";
+        expectJetIsTheGeneratorWithItsDifferences(patch, a, b);
       }
     }
   }

@@ -2,16 +2,21 @@
 // T beyond + - * /: the lanes as an array (LaneArray), per-lane masks and selection, the fused
 // multiply-add and the elementary functions sqrt, exp, cosh, sinh, tanh and sincos.
 //
-// T is double (one lane: PointPairField::map, expExact, ...) or the block kernel's vector of lanes,
+// T is double (one lane: PointPairField::map, expExact, ...), the block kernel's vector of lanes,
 // whose overloads PointPairKernelLanes.h defines in its instruction set's namespace (found by
-// argument-dependent lookup). Both call the same functions: with SLEEF (BOOSTED_HAVE_SLEEF) its
-// deterministic 1-ulp functions (Sleef_cinz_*_u10: no fused multiply-add, the same bits on every
-// instruction set and in the scalar build, "purec"), else libm per lane.
+// argument-dependent lookup), or LaneClones.h's Eight (the curvature patch's eight samples and
+// their jets: its masks only, below). The first two call the same elementary functions: with SLEEF
+// (BOOSTED_HAVE_SLEEF) its deterministic 1-ulp functions (Sleef_cinz_*_u10: no fused multiply-add,
+// the same bits on every instruction set and in the scalar build, "purec"), else libm per lane.
 //
 // Internal linkage only (see PointMapCore.h).
 #pragma once
 
+#include "ForceInline.h"
+#include "LaneClones.h"
+
 #include <math.h>
+#include <type_traits>
 
 #ifdef BOOSTED_HAVE_SLEEF
 #include <sleef.h>
@@ -107,6 +112,38 @@ inline double select(bool mask, double a, double b)
 {
   return mask ? a : b;
 }
+// LaneClones.h's Eight: eight lanes, the mask of its comparisons, and the mask logic the curvature
+// patch's jets use. Eight is a builtin vector type (no namespace for argument-dependent lookup), so
+// its overloads are declared here, before DualNumber.h's templates that call them; templates, so
+// that only the files that use them (built with -Wno-psabi, see LaneClones.h) declare functions
+// passing 64-byte vectors.
+template <>
+constexpr int kLanesOf<detail::Eight> = 8;
+template <>
+struct MaskOf<detail::Eight>
+{
+  using type = detail::EightMask;
+};
+template <typename V>
+using IfEight = std::enable_if_t<std::is_same<V, detail::Eight>::value, int>;
+template <typename M>
+using IfEightMask = std::enable_if_t<std::is_same<M, detail::EightMask>::value, int>;
+template <typename V, IfEight<V> = 0>
+BOOSTED_LANE_INLINE detail::EightMask equalTo(V a, V b)
+{
+  return a == b;
+}
+template <typename M, IfEightMask<M> = 0>
+BOOSTED_LANE_INLINE M maskAnd(M a, M b)
+{
+  return a & b;
+}
+template <typename V, IfEight<V> = 0>
+BOOSTED_LANE_INLINE V select(detail::EightMask mask, V a, V b)
+{
+  return mask ? a : b;
+}
+
 /// |x| (the sign bit cleared, as the lane vector's).
 inline double magnitude(double x)
 {

@@ -22,22 +22,6 @@
 
 namespace cga
 {
-namespace core
-{
-namespace
-{
-// LaneClones.h's Eight as a number type of DualNumber.h (the jets of eight samples,
-// CurvaturePatchJet.cpp's generatorJets): eight lanes, the mask of its comparisons.
-template <>
-constexpr int kLanesOf<detail::Eight> = 8;
-template <>
-struct MaskOf<detail::Eight>
-{
-  using type = detail::EightMask;
-};
-} // namespace
-} // namespace core
-
 namespace detail
 {
 namespace // internal linkage: no calls through the shared library's symbol table (PLT)
@@ -175,61 +159,21 @@ BOOSTED_FORCE_INLINE Bivector exponentOfWeight(const Bivector& pair, double w)
   return term;
 }
 
-/// Per lane of Eight, of double (one lane) or of their jets: where x and all its tangents are zero
-/// (zeroLanes), where its value is (zeroValueLanes); x set to +0 where mask holds (clearLanes), or
-/// only its value (clearValueLanes). Templates, so that Eight's are compiled only where used (files
-/// built with -Wno-psabi; see LaneClones.h).
-template <typename Lanes>
-using IfPlainLanes =
-  std::enable_if_t<std::is_same<Lanes, Eight>::value || std::is_same<Lanes, double>::value, int>;
-template <typename Lanes, IfPlainLanes<Lanes> = 0>
-BOOSTED_LANE_INLINE auto zeroLanes(const Lanes& x)
+/// Per lane, where x and all its tangents are zero (x of Eight, double or their jets).
+template <typename T>
+BOOSTED_LANE_INLINE auto zeroWithTangents(const T& x)
 {
-  return x == 0.0;
+  return core::equalTo(x, T{});
 }
 template <typename T, int N>
-BOOSTED_LANE_INLINE auto zeroLanes(const core::Dual<T, N>& x)
+BOOSTED_LANE_INLINE auto zeroWithTangents(const core::Dual<T, N>& x)
 {
-  auto zero = zeroLanes(x.v);
+  auto zero = zeroWithTangents(x.v);
   for (const T& d : x.d)
   {
-    zero = zero & zeroLanes(d);
+    zero = core::maskAnd(zero, zeroWithTangents(d));
   }
   return zero;
-}
-template <typename Lanes, IfPlainLanes<Lanes> = 0>
-BOOSTED_LANE_INLINE auto zeroValueLanes(const Lanes& x)
-{
-  return zeroLanes(x); // a plain number is its value
-}
-template <typename T, int N>
-BOOSTED_LANE_INLINE auto zeroValueLanes(const core::Dual<T, N>& x)
-{
-  return zeroValueLanes(x.v);
-}
-template <typename Lanes, typename Mask, IfPlainLanes<Lanes> = 0>
-BOOSTED_LANE_INLINE void clearLanes(Lanes& x, Mask mask)
-{
-  x = mask ? Lanes{} : x;
-}
-template <typename T, int N, typename Mask>
-BOOSTED_LANE_INLINE void clearLanes(core::Dual<T, N>& x, Mask mask)
-{
-  clearLanes(x.v, mask);
-  for (T& d : x.d)
-  {
-    clearLanes(d, mask);
-  }
-}
-template <typename Lanes, typename Mask, IfPlainLanes<Lanes> = 0>
-BOOSTED_LANE_INLINE void clearValueLanes(Lanes& x, Mask mask)
-{
-  clearLanes(x, mask); // a plain number is its value
-}
-template <typename T, int N, typename Mask>
-BOOSTED_LANE_INLINE void clearValueLanes(core::Dual<T, N>& x, Mask mask)
-{
-  clearValueLanes(x.v, mask);
 }
 
 /// exponentOfWeight for eight samples at once (Eight: CurvaturePatch.cpp's
@@ -240,12 +184,12 @@ BOOSTED_LANE_INLINE void clearValueLanes(core::Dual<T, N>& x, Mask mask)
 template <typename T, std::enable_if_t<OnLanes<T>::value || core::kHasTangents<T>, int> = 0>
 BOOSTED_LANE_INLINE ExponentOf<T> exponentOfWeight(const Bivector& pair, const T& w)
 {
-  const auto zero = zeroLanes(w), zeroValue = zeroValueLanes(w);
+  const auto zero = zeroWithTangents(w);
+  const auto zeroValue = core::equalTo(w, T{}); // a dual number compares its value
   ExponentOf<T> term = scaled<double>(pair, -w);
   for (int c = 0; c < Bivector::Count; ++c)
   {
-    clearLanes(term[c], zero);
-    clearValueLanes(term[c], zeroValue);
+    term[c] = core::zeroValue(zeroValue, core::select(zero, T{}, term[c]));
   }
   return term;
 }
