@@ -1,7 +1,8 @@
 // Every source of this project at 1,000,000 output points beside VTK's torus
 // (vtkParametricFunctionSource with vtkParametricTorus) of the same size, vtkSMPTools on the
 // STDThread backend: Source/<name>/threads:<n>. The targets: each source at least as fast
-// as the torus on one thread, and at least 1.8 times its own one-thread rate on two.
+// as the torus on one thread, and at least 1.8 times its own one-thread rate on two. Beside the
+// rows with curvatures, the torus with VTK's discrete ones (TorusCurvatures): context, not a target.
 #include "BenchSupport.h"
 
 #include "vtkBoostedSurfaceSource.h"
@@ -10,6 +11,7 @@
 #include "vtkDipoleFieldSource.h"
 #include "vtkHopfFibrationSource.h"
 
+#include <vtkCurvatures.h>
 #include <vtkNew.h>
 #include <vtkParametricFunctionSource.h>
 #include <vtkParametricTorus.h>
@@ -34,11 +36,12 @@ double cpuSeconds(clockid_t clock)
 // calling thread waits, so this is the update's serial share, measured in CPU time (which the
 // other jobs of a shared machine do not inflate as they do wall clock): by Amdahl's law two
 // threads give at most 1 / (serial + (1 - serial) / 2) times one.
-void timeSource(benchmark::State& state, vtkAlgorithm* source, long threads)
+// For a pipeline, `source` is its last stage and `first` its source (updateEachIteration).
+void timeSource(benchmark::State& state, vtkAlgorithm* source, long threads, vtkAlgorithm* first = nullptr)
 {
   const double threadBefore = cpuSeconds(CLOCK_THREAD_CPUTIME_ID);
   const double processBefore = cpuSeconds(CLOCK_PROCESS_CPUTIME_ID);
-  const long long points = updateEachIteration(state, source, static_cast<int>(threads));
+  const long long points = updateEachIteration(state, source, static_cast<int>(threads), first);
   state.counters["serial"] = (cpuSeconds(CLOCK_THREAD_CPUTIME_ID) - threadBefore) /
     (cpuSeconds(CLOCK_PROCESS_CPUTIME_ID) - processBefore);
   if (points != static_cast<long long>(kMeshPoints))
@@ -48,15 +51,38 @@ void timeSource(benchmark::State& state, vtkAlgorithm* source, long threads)
   reportPoints(state, kMeshPoints);
 }
 
-void Torus(benchmark::State& state)
+// The torus of 1000 x 1000 points: the source samples UResolution x VResolution (the seams
+// repeated).
+void setTorus(vtkParametricFunctionSource* source, vtkParametricTorus* torus)
 {
-  // 1000 x 1000 points: the source samples UResolution x VResolution (the seams repeated).
-  vtkNew<vtkParametricTorus> torus;
-  vtkNew<vtkParametricFunctionSource> source;
   source->SetParametricFunction(torus);
   source->SetUResolution(kMeshSide);
   source->SetVResolution(kMeshSide);
+}
+
+void Torus(benchmark::State& state)
+{
+  vtkNew<vtkParametricTorus> torus;
+  vtkNew<vtkParametricFunctionSource> source;
+  setTorus(source, torus);
   timeSource(state, source, state.range(0));
+}
+
+void TorusCurvatures(benchmark::State& state)
+{
+  // The torus, then vtkCurvatures for the Gaussian and then the mean curvature (one type per
+  // pass): VTK's discrete curvatures at the mesh's points, where the rows with curvatures compute
+  // both exactly, with the principal curvatures and directions.
+  vtkNew<vtkParametricTorus> torus;
+  vtkNew<vtkParametricFunctionSource> source;
+  setTorus(source, torus);
+  vtkNew<vtkCurvatures> gaussian;
+  gaussian->SetInputConnection(source->GetOutputPort());
+  gaussian->SetCurvatureTypeToGaussian();
+  vtkNew<vtkCurvatures> mean;
+  mean->SetInputConnection(gaussian->GetOutputPort());
+  mean->SetCurvatureTypeToMean();
+  timeSource(state, mean, state.range(0), source);
 }
 
 void BoostedSurface(benchmark::State& state, bool computeCurvatures)
@@ -143,6 +169,7 @@ void perThreads(benchmark::internal::Benchmark* benchmark)
 }
 
 BENCHMARK(Torus)->Apply(perThreads);
+BENCHMARK(TorusCurvatures)->Apply(perThreads);
 BENCHMARK_CAPTURE(BoostedSurface, Surface, false)->Apply(perThreads);
 BENCHMARK_CAPTURE(BoostedSurface, Curvatures, true)->Apply(perThreads);
 BENCHMARK(HopfFibration)->Apply(perThreads);

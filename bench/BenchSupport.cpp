@@ -178,8 +178,10 @@ void perPointCount(benchmark::internal::Benchmark* benchmark)
   timedPerPoint(benchmark);
 }
 
-long long updateEachIteration(benchmark::State& state, vtkAlgorithm* algorithm, int threads)
+long long updateEachIteration(
+  benchmark::State& state, vtkAlgorithm* algorithm, int threads, vtkAlgorithm* first)
 {
+  vtkAlgorithm* const modified = first ? first : algorithm;
   vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, "STDThread", false }, [&]() {
     // One update before the timed ones: a new algorithm's first update may also pay for memory
     // the process touches for the first time (the kernel zeroing fresh pages), and a row whose
@@ -190,7 +192,7 @@ long long updateEachIteration(benchmark::State& state, vtkAlgorithm* algorithm, 
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     for (auto _ : state)
     {
-      algorithm->Modified();
+      modified->Modified();
       algorithm->Update();
     }
   });

@@ -82,8 +82,10 @@ void perPointCount(benchmark::internal::Benchmark* benchmark);
 
 /// Updates a VTK algorithm once per benchmark iteration (Modified() first) with vtkSMPTools on the
 /// STDThread backend and `threads` threads: Debian's VTK defaults to Sequential, which ignores
-/// threads. Returns the algorithm's output point count.
-long long updateEachIteration(benchmark::State& state, vtkAlgorithm* algorithm, int threads);
+/// threads. Returns the algorithm's output point count. For a pipeline, `algorithm` is its last
+/// stage and `first` its source (the one modified, so that every stage runs again).
+long long updateEachIteration(
+  benchmark::State& state, vtkAlgorithm* algorithm, int threads, vtkAlgorithm* first = nullptr);
 
 /// Runs work(first, last) over [0, count) on `threads` threads (the calling thread and
 /// threads - 1 std::threads), which take chunks in turn: a quarter of what is left per thread,
