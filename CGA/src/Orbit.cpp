@@ -5,6 +5,7 @@
 #include "cga/Exponential.h"
 #include "cga/PointSandwich.h"
 
+#include "ReducedSinCos.h"
 #include "SandwichScaling.h"
 
 #include <algorithm>
@@ -92,8 +93,9 @@ void planeFactors(Real square, Real rate, Real t, Real& c, Real& sHat)
   }
   else if (square < 0.0L)
   {
-    c = std::cos(x);
-    sHat = std::sin(x) / rate;
+    Real sine;
+    detail::reducedSinCos(x, sine, c);
+    sHat = sine / rate;
   }
   else if (std::fabs(x) > static_cast<Real>(kExpScalingThreshold))
   {
@@ -124,9 +126,16 @@ Even withinRange(Even k)
   return k;
 }
 
+Real sine(Real x)
+{
+  Real s, c;
+  detail::reducedSinCos(x, s, c);
+  return s;
+}
+
 Real sinc(Real x)
 {
-  return std::fabs(x) < 1e-5L ? 1.0L - x * x / 6.0L : std::sin(x) / x;
+  return std::fabs(x) < 1e-5L ? 1.0L - x * x / 6.0L : sine(x) / x;
 }
 } // namespace
 
@@ -295,9 +304,12 @@ Even Orbit::versor(double t) const
   {
     // Two rotations at nearly equal rates: the divided differences by sums of angles.
     const Real t1 = tt * r1, t2 = tt * r2;
-    const Real sincSum = std::sin(t1 + t2) / (r1 + r2), sincDiff = tt * sinc(t2 - t1);
-    scalar = std::cos(t1) * std::cos(t2);
-    coefW = 0.5L * (std::sin(t1) / r1) * (std::sin(t2) / r2);
+    const Real sincSum = sine(t1 + t2) / (r1 + r2), sincDiff = tt * sinc(t2 - t1);
+    Real s1, c1, s2, c2;
+    detail::reducedSinCos(t1, s1, c1);
+    detail::reducedSinCos(t2, s2, c2);
+    scalar = c1 * c2;
+    coefW = 0.5L * (s1 / r1) * (s2 / r2);
     coefB = 0.5L * (sincSum + sincDiff);
     coefWB = 0.25L * (sincDiff - sincSum) / (r1 * r2);
   }
