@@ -360,9 +360,7 @@ inline void laneSinCos(const DD& x, DD& s, DD& c)
   sinCosReduced(r, sr, cr);
   // k mod 4 by fmod (exact): k may exceed every integer type for a huge x
   const double modulo = __builtin_fmod(k, 4.0);
-  const int quadrant = static_cast<int>(modulo < 0.0 ? modulo + 4.0 : modulo);
-  s = quadrant == 0 ? sr : quadrant == 1 ? cr : quadrant == 2 ? -sr : -cr;
-  c = quadrant == 0 ? cr : quadrant == 1 ? -sr : quadrant == 2 ? -cr : sr;
+  sinCosOfQuadrant(static_cast<int>(modulo < 0.0 ? modulo + 4.0 : modulo), sr, cr, s, c);
 }
 
 /// The rounding unit of double-double for the test of what is rounding (PointMapCore.h's

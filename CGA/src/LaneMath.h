@@ -212,6 +212,15 @@ inline double fusedMultiplyAdd(double a, double b, double c)
   return __builtin_fma(a, b, c);
 }
 
+/// sin and cos of r + quadrant pi/2 (quadrant 0 to 3) from sin r and cos r: the last step of a
+/// reduction by pi/2 (DoubleDouble.h's laneSinCos, ReducedSinCos.h's long double one).
+template <typename T>
+inline void sinCosOfQuadrant(int quadrant, const T& sr, const T& cr, T& s, T& c)
+{
+  s = quadrant == 0 ? sr : quadrant == 1 ? cr : quadrant == 2 ? -sr : -cr;
+  c = quadrant == 0 ? cr : quadrant == 1 ? -sr : quadrant == 2 ? -cr : sr;
+}
+
 // The elementary functions for one lane: the same as every lane of the block kernel computes.
 inline double laneSqrt(double x)
 {

@@ -12,6 +12,8 @@
 // Internal linkage only.
 #pragma once
 
+#include "LaneMath.h"
+
 #include <cmath>
 
 namespace cga
@@ -39,25 +41,7 @@ inline void reducedSinCos(long double x, long double& s, long double& c)
   const long double r = ((x - n * p1) - n * p2) - n * p3;
   long double sr, cr;
   ::sincosl(r, &sr, &cr); // |r| <= π/4 (up to rounding): glibc's kernels without a reduction
-  switch (static_cast<long long>(n) & 3)
-  {
-    case 0:
-      s = sr;
-      c = cr;
-      break;
-    case 1:
-      s = cr;
-      c = -sr;
-      break;
-    case 2:
-      s = -sr;
-      c = -cr;
-      break;
-    default:
-      s = -cr;
-      c = sr;
-      break;
-  }
+  core::sinCosOfQuadrant(static_cast<int>(static_cast<long long>(n) & 3), sr, cr, s, c);
 }
 } // namespace
 } // namespace detail
