@@ -113,9 +113,9 @@ void expectJetIsTheGeneratorWithItsDifferences(const CurvaturePatch& patch, doub
   };
   const std::string where = "method " + std::to_string(static_cast<int>(patch.method)) + " at (" +
     std::to_string(a) + ", " + std::to_string(b) + ")";
+  const double scale = std::max(1.0, value.maxAbs());
   for (int c = 0; c < Bivector::Count; ++c)
   {
-    const double scale = std::max(1.0, value.maxAbs());
     EXPECT_NEAR(jet[c].value, value[c], 1e-14 * scale) << where;
     // Each derivative to 1e-8 of the larger of the scale and itself.
     auto expectDerivative = [&](double got, auto difference) {
