@@ -136,7 +136,7 @@ BENCHMARK(ManyDirect)
   ->Apply(timedPerPoint);
 BENCHMARK(ManyTree)
   ->Name("Many/Tree")
-  ->ArgsProduct({ kManyCounts, { 1, 3, 6 } })
+  ->ArgsProduct({ kManyCounts, { 1, 3, 4, 6 } })
   ->ArgNames({ "M", "digits" })
   ->Apply(timedPerPoint);
 } // namespace
