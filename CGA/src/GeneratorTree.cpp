@@ -702,10 +702,21 @@ bool GeneratorTree::computeMoments(int index)
 // the inner loops, so that they vectorize (compiled for the CPU's widest vectors: BOOSTED_LANE_CLONES).
 // Adds the nodes `starts` and their subtrees to sums for the lanes' points p, each node by its
 // expansion when usable for every point within `radius` of `center` (q at the nearest possible
-// distance), else opened; leaves and nodes without moments directly.
+// distance), else opened; leaves and nodes without moments directly. Nodes visited one after the
+// other often hold consecutive generators (siblings: the tree's order), so each such run is summed
+// in one call of the block kernel instead of one per node (its sums loaded and stored once).
 void GeneratorTree::addNear(const int* starts, std::size_t count, const double* center, double radius,
                             double weightSum, const double* p, double* sums) const
 {
+  std::size_t runFirst = 0, runEnd = 0; // the generators [runFirst, runEnd) not summed yet
+  auto direct = [&](const Node& node) {
+    if (node.first != runEnd)
+    {
+      this->addDirect(runFirst, runEnd - runFirst, p, sums);
+      runFirst = node.first;
+    }
+    runEnd = node.first + node.count;
+  };
   int stack[256];
   for (std::size_t s = 0; s < count; ++s)
   {
@@ -716,7 +727,7 @@ void GeneratorTree::addNear(const int* starts, std::size_t count, const double* 
       const Node& node = this->Nodes[static_cast<std::size_t>(stack[--top])];
       if (node.moments < 0)
       {
-        this->addDirect(node, p, sums);
+        direct(node);
         continue;
       }
       const double dx = center[0] - node.center[0], dy = center[1] - node.center[1],
@@ -743,7 +754,7 @@ void GeneratorTree::addNear(const int* starts, std::size_t count, const double* 
       }
       else if (node.children[0] < 0)
       {
-        this->addDirect(node, p, sums);
+        direct(node);
       }
       else
       {
@@ -752,6 +763,7 @@ void GeneratorTree::addNear(const int* starts, std::size_t count, const double* 
       }
     }
   }
+  this->addDirect(runFirst, runEnd - runFirst, p, sums);
 }
 
 // The lanes in one vector (Eight), each moment's terms summed in a register (they are consecutive),
@@ -813,13 +825,17 @@ void GeneratorTree::addMultipole(const Node& node, const double* moments, int de
   addLanes(sums, out);
 }
 
-// The generators of `node` summed directly for the lanes' points: the block kernel's generator
-// loop (kernel::AddFieldBlock, compiled per instruction set with its sums in registers).
-void GeneratorTree::addDirect(const Node& node, const double* p, double* sums) const
+// The generators [first, first + count) summed directly for the lanes' points: the block kernel's
+// generator loop (kernel::AddFieldBlock, compiled per instruction set with its sums in registers).
+void GeneratorTree::addDirect(std::size_t first, std::size_t count, const double* p, double* sums) const
 {
+  if (count == 0)
+  {
+    return;
+  }
   kernel::FieldArgs args;
-  args.generators = this->Generators.data() + node.first * kStride;
-  args.generatorCount = node.count;
+  args.generators = this->Generators.data() + first * kStride;
+  args.generatorCount = count;
   args.falloff = this->Falloff;
   args.epsilon = this->Epsilon;
   kernel::activeAddFieldBlock()(args, p, sums);

@@ -200,7 +200,7 @@ private:
   void chooseCells();
   int build(std::size_t first, std::size_t count, std::vector<std::size_t>& order, int depth);
   bool computeMoments(int node);
-  void addDirect(const Node& node, const double* p, double* sums) const;
+  void addDirect(std::size_t first, std::size_t count, const double* p, double* sums) const;
   void addMultipole(const Node& node, const double* moments, int degree, const double* p, double* b) const;
   // power[m], m < count, of the coordinates y in the graded order, each its parent's times one
   // coordinate; T is double or Eight (a block's lanes), inlined into each lane clone.
