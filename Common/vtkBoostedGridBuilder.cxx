@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <type_traits>
 #include <vector>
 
@@ -200,6 +201,13 @@ void vtkBoostedGridBuilder::ClearSamples(int row, int firstColumn, int lastColum
   }
 }
 
+void vtkBoostedGridBuilder::SetClipSphere(const double center[3], double radius)
+{
+  this->HasClipSphere = true;
+  std::copy_n(center, 3, this->ClipCenter);
+  this->ClipRadius = radius;
+}
+
 void vtkBoostedGridBuilder::SetOrigin(const double origin[3])
 {
   for (int i = 0; i < 3; ++i)
@@ -354,10 +362,11 @@ void vtkBoostedGridBuilder::ComputeNormals(
   }
 }
 
-vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(
-  vtkPolyData* output, int firstRow, int lastRow, int precision, bool withSurfaceAttributes) const
+vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkPolyData* output,
+  int firstRow, int lastRow, int precision, bool withSurfaceAttributes, vtkIdType& outside) const
 {
-  // -1 (no point) for the samples of every segment, set by the counting pass below.
+  // Each sample's point id (-1: no point) for the samples of every segment, written by the
+  // writing pass below.
   vtkBoostedLargeArrays::Buffer<long long> ids =
     vtkBoostedLargeArrays::New<long long>(static_cast<size_t>(this->Rows) * this->Columns);
   // Curves never repeat the seam (see below), so only surfaces merge.
@@ -416,8 +425,6 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(
   std::vector<vtkIdType> counts(segments.size(), 0);
   forEach(segments.size(), columnsPerSegment, [&](size_t i) {
     const Segment& s = segments[i];
-    std::fill(ids.get() + this->Index(s.Row, s.FirstColumn),
-      ids.get() + this->Index(s.Row, s.LastColumn), -1);
     vtkIdType count = 0;
     walk(s, [&](int) { return count++; }, [](int, long long) {});
     counts[i] = count;
@@ -465,44 +472,62 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(
   auto* floatPoints = vtkFloatArray::FastDownCast(points->GetData());
 
   // Each segment writes its own range of every array: first which columns become its points
-  // (point offsets[i] + j is column newColumns[j]), then each array in a pass of its own (one
+  // (point offsets[i] + j is column columnOf(j)), then each array in a pass of its own (one
   // output stream at a time: writing every array's values point by point, six to ten streams at
   // once, was 21 % of a Hopf fibration update).
-  forEach(segments.size(), columnsPerSegment, [&](size_t i) {
-    const Segment& s = segments[i];
+  // The points each segment writes outside the clip sphere.
+  std::vector<vtkIdType> outsideCounts(segments.size(), 0);
+  const bool clip = this->HasClipSphere;
+  const cga::Vec3 clipCenter{ this->ClipCenter[0], this->ClipCenter[1], this->ClipCenter[2] };
+  const double clipRadius2 = this->ClipRadius * this->ClipRadius;
+  // writeArrays(segment, first point, n, columnOf): the segment's n points' values; returns how
+  // many of them are outside the clip sphere.
+  auto writeArrays = [&](const Segment& s, vtkIdType first, size_t n, auto columnOf) {
     const int r = s.Row;
-    const vtkIdType first = offsets[i];
-    std::vector<int> newColumns;
-    newColumns.reserve(static_cast<size_t>(counts[i]));
-    walk(
-      s,
-      [&](int c) {
-        const long long id = first + static_cast<vtkIdType>(newColumns.size());
-        newColumns.push_back(c);
-        ids[this->Index(r, c)] = id;
-        return id;
-      },
-      [&](int c, long long id) { ids[this->Index(r, c)] = id; });
-    const size_t n = newColumns.size();
-    auto sample = [&](size_t j) { return static_cast<size_t>(this->Index(r, newColumns[j])); };
-    auto writePoints = [&](auto* to) { // double or float
+    auto sample = [&](size_t j) { return static_cast<size_t>(this->Index(r, columnOf(j))); };
+    vtkIdType outsideHere = 0;
+    // withClip: std::true_type or std::false_type (a loop of each, without a test per point).
+    auto writePoints = [&](auto* to, auto withClip) { // double or float
+      using Value = std::remove_pointer_t<decltype(to)>;
+      // Local copies: the stores through `to` could alias members and captured references.
+      const cga::Vec3 origin{ this->Origin[0], this->Origin[1], this->Origin[2] }, center = clipCenter;
+      const double radius2 = clipRadius2, largest = std::numeric_limits<double>::max();
+      const double* from = this->Points.get();
+      vtkIdType count = 0;
       for (size_t j = 0; j < n; ++j)
       {
-        const double* relative = &this->Points[3 * sample(j)];
-        for (int k = 0; k < 3; ++k)
+        const double* relative = from + 3 * sample(j);
+        const cga::Vec3 p{ origin.x + relative[0], origin.y + relative[1], origin.z + relative[2] };
+        to[3 * j] = static_cast<Value>(p.x);
+        to[3 * j + 1] = static_cast<Value>(p.y);
+        to[3 * j + 2] = static_cast<Value>(p.z);
+        if (decltype(withClip)::value)
         {
-          to[3 * j + k] = static_cast<std::remove_pointer_t<decltype(to)>>(
-            this->Origin[k] + relative[k]);
+          // vtkBoostedSphereClip's test, without branches (VTK_DOUBLE_MAX is 1e299).
+          const bool inside = (std::abs(p.x) <= largest) & (std::abs(p.y) <= largest) &
+            (std::abs(p.z) <= largest) & (cga::norm2(p - center) <= radius2);
+          count += !inside;
         }
+      }
+      outsideHere = count;
+    };
+    auto writePointsTo = [&](auto* to) {
+      if (clip)
+      {
+        writePoints(to, std::true_type{});
+      }
+      else
+      {
+        writePoints(to, std::false_type{});
       }
     };
     if (doublePoints)
     {
-      writePoints(doublePoints->GetPointer(3 * first));
+      writePointsTo(doublePoints->GetPointer(3 * first));
     }
     else
     {
-      writePoints(floatPoints->GetPointer(3 * first));
+      writePointsTo(floatPoints->GetPointer(3 * first));
     }
     if (withSurfaceAttributes)
     {
@@ -512,7 +537,7 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(
       float* to = normals->GetPointer(3 * first);
       for (size_t j = 0; j < n; ++j)
       {
-        const int c = newColumns[j];
+        const int c = columnOf(j);
         if (c >= runFirst + NormalsPerRun)
         {
           runFirst = c;
@@ -530,7 +555,7 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(
       float* to = tcoords->GetPointer(2 * first);
       for (size_t j = 0; j < n; ++j)
       {
-        to[2 * j] = static_cast<float>(newColumns[j] * uScale);
+        to[2 * j] = static_cast<float>(columnOf(j) * uScale);
         to[2 * j + 1] = v;
       }
     }
@@ -538,9 +563,14 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(
     {
       const Parameter& parameter = this->Parameters[k];
       double* to = parameters[k]->GetPointer(first);
+      if (parameter.PerRow)
+      {
+        std::fill_n(to, n, parameter.Values[r]);
+        continue;
+      }
       for (size_t j = 0; j < n; ++j)
       {
-        to[j] = parameter.Values[parameter.PerRow ? r : newColumns[j]];
+        to[j] = parameter.Values[columnOf(j)];
       }
     }
     for (size_t k = 0; k < integerParameters.size(); ++k)
@@ -561,6 +591,41 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(
         }
       }
     }
+    return outsideHere;
+  };
+  forEach(segments.size(), columnsPerSegment, [&](size_t i) {
+    const Segment& s = segments[i];
+    const int r = s.Row;
+    const vtkIdType first = offsets[i];
+    const int length = s.LastColumn - s.FirstColumn;
+    if (!merge && counts[i] == length)
+    {
+      // Every sample usable, each its own point (the common case): column FirstColumn + j is
+      // point first + j, and the arrays' loops run over consecutive samples.
+      long long* segmentIds = ids.get() + this->Index(r, s.FirstColumn);
+      for (int j = 0; j < length; ++j)
+      {
+        segmentIds[j] = first + j;
+      }
+      const int firstColumn = s.FirstColumn;
+      outsideCounts[i] = writeArrays(s, first, static_cast<size_t>(length),
+        [firstColumn](size_t j) { return firstColumn + static_cast<int>(j); });
+      return;
+    }
+    std::fill(ids.get() + this->Index(r, s.FirstColumn), ids.get() + this->Index(r, s.LastColumn), -1);
+    std::vector<int> newColumns;
+    newColumns.reserve(static_cast<size_t>(counts[i]));
+    walk(
+      s,
+      [&](int c) {
+        const long long id = first + static_cast<vtkIdType>(newColumns.size());
+        newColumns.push_back(c);
+        ids[this->Index(r, c)] = id;
+        return id;
+      },
+      [&](int c, long long id) { ids[this->Index(r, c)] = id; });
+    outsideCounts[i] =
+      writeArrays(s, first, newColumns.size(), [&newColumns](size_t j) { return newColumns[j]; });
   });
   if (merge)
   {
@@ -575,6 +640,7 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(
     }
   }
 
+  outside = std::accumulate(outsideCounts.begin(), outsideCounts.end(), vtkIdType(0));
   output->SetPoints(points);
   if (withSurfaceAttributes)
   {
@@ -599,11 +665,12 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(
   return ids;
 }
 
-void vtkBoostedGridBuilder::BuildSurface(
+vtkIdType vtkBoostedGridBuilder::BuildSurface(
   vtkPolyData* output, int firstRow, int lastRow, int outputPointsPrecision) const
 {
+  vtkIdType outside = 0;
   const vtkBoostedLargeArrays::Buffer<long long> ids =
-    this->WritePoints(output, firstRow, lastRow, outputPointsPrecision, true);
+    this->WritePoints(output, firstRow, lastRow, outputPointsPrecision, true, outside);
   // The cell of the quad between rows r, r + 1 and columns c, c + 1: its size (0: no cell).
   auto quadCell = [&](int r, int c, vtkIdType cell[4]) -> vtkIdType {
     const vtkIdType quad[4] = { ids[this->Index(r, c)], ids[this->Index(r, c + 1)],
@@ -661,8 +728,9 @@ void vtkBoostedGridBuilder::BuildSurface(
   }));
   if (this->MergeSeam)
   {
-    dropUnusedPoints(output);
+    dropUnusedPoints(output); // an unused point outside is still counted: the clip then runs
   }
+  return outside;
 }
 
 void vtkBoostedGridBuilder::FindMergedRows(
@@ -757,11 +825,12 @@ void vtkBoostedGridBuilder::FindMergedRows(
   }
 }
 
-void vtkBoostedGridBuilder::BuildCurves(
+vtkIdType vtkBoostedGridBuilder::BuildCurves(
   vtkPolyData* output, int firstRow, int lastRow, int outputPointsPrecision) const
 {
+  vtkIdType outside = 0;
   const vtkBoostedLargeArrays::Buffer<long long> ids =
-    this->WritePoints(output, firstRow, lastRow, outputPointsPrecision, false);
+    this->WritePoints(output, firstRow, lastRow, outputPointsPrecision, false, outside);
   // With periodic columns the last column repeats the first: each row is a closed polyline of
   // grid indices.
   const int distinct = this->PeriodicColumns ? this->Columns - 1 : this->Columns;
@@ -834,6 +903,7 @@ void vtkBoostedGridBuilder::BuildCurves(
       }
     }
   }));
+  return outside;
 }
 
 void vtkBoostedGridBuilder::SetRowsPerBlock(int rowsPerBlock)

@@ -187,17 +187,20 @@ bool vtkBoostedGridDriver::Build(vtkPolyData* output)
     // In double precision; single precision is the last step (a cut computed from floats would
     // round twice).
     vtkNew<vtkPolyData> sampled;
-    if (this->Surface)
+    this->Builder->SetClipSphere(this->ClipCenter, this->ClipRadius);
+    const vtkIdType outside = this->Surface
+      ? this->Builder->BuildSurface(
+          sampled, this->FirstRow, this->LastRow, vtkAlgorithm::DOUBLE_PRECISION)
+      : this->Builder->BuildCurves(
+          sampled, this->FirstRow, this->LastRow, vtkAlgorithm::DOUBLE_PRECISION);
+    if (outside == 0)
     {
-      this->Builder->BuildSurface(
-        sampled, this->FirstRow, this->LastRow, vtkAlgorithm::DOUBLE_PRECISION);
+      output->ShallowCopy(sampled); // nothing to cut: what the clip would give
     }
     else
     {
-      this->Builder->BuildCurves(
-        sampled, this->FirstRow, this->LastRow, vtkAlgorithm::DOUBLE_PRECISION);
+      vtkBoostedSphereClip::Clip(sampled, this->ClipCenter, this->ClipRadius, output);
     }
-    vtkBoostedSphereClip::Clip(sampled, this->ClipCenter, this->ClipRadius, output);
     if (this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION)
     {
       problem = vtkBoostedPointsToSinglePrecision(output->GetPoints()); // as built: doubles

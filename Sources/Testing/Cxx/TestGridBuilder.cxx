@@ -1,0 +1,234 @@
+// vtkBoostedGridBuilder's writing pass, checked from its output alone: every usable sample
+// becomes one point with its own values whether its run of columns is whole (the pass's copy of
+// consecutive samples) or has unusable samples (the walk over them), and the count of points
+// outside the clip sphere that the builds return is the one counted here from the written points.
+#include "vtkBoostedGridBuilder.h"
+
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace
+{
+constexpr int kRows = 6, kColumns = 11;
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The sample (r, c): unusable at a few places (whole rows 0, 2 and 5, the others cut once or
+// twice), otherwise a point that names its sample.
+bool usable(int r, int c)
+{
+  return !((r == 1 && c == 4) || (r == 3 && (c == 0 || c == 7 || c == 8)) ||
+    (r == 4 && c == kColumns - 1));
+}
+
+void samplePoint(int r, int c, double p[3])
+{
+  p[0] = usable(r, c) ? 10.0 * r + c : kNaN;
+  p[1] = 0.5 * c;
+  p[2] = -1.0 * r;
+}
+
+// A grid of those samples with a row parameter, a column parameter, an integer row parameter
+// and a sample array of two components.
+void fill(vtkBoostedGridBuilder& grid)
+{
+  std::vector<double> rowValues, columnValues;
+  std::vector<int> rowIds;
+  for (int r = 0; r < kRows; ++r)
+  {
+    rowValues.push_back(100.0 + r);
+    rowIds.push_back(7 * r);
+  }
+  for (int c = 0; c < kColumns; ++c)
+  {
+    columnValues.push_back(0.25 * c);
+  }
+  grid.AddRowParameter("row", rowValues);
+  grid.AddColumnParameter("column", columnValues);
+  grid.AddRowIntegerParameter("rowId", rowIds);
+  const int values = grid.AddSampleArray("pair", 2);
+  for (int r = 0; r < kRows; ++r)
+  {
+    grid.ClearSamples(r, 0, kColumns);
+    for (int c = 0; c < kColumns; ++c)
+    {
+      double p[3];
+      samplePoint(r, c, p);
+      grid.SetPoint(r, c, p);
+      double* pair = grid.SampleValues(values, r, c);
+      pair[0] = r + 0.5;
+      pair[1] = c - 0.5;
+    }
+  }
+}
+
+// Every point is a usable sample of rows [firstRow, lastRow], each once, in row-major order,
+// with that sample's values.
+void expectEveryUsableSampleOnce(vtkPolyData* output, int firstRow, int lastRow)
+{
+  vtkDataArray* row = output->GetPointData()->GetArray("row");
+  vtkDataArray* column = output->GetPointData()->GetArray("column");
+  vtkDataArray* rowId = output->GetPointData()->GetArray("rowId");
+  vtkDataArray* pair = output->GetPointData()->GetArray("pair");
+  ASSERT_TRUE(row && column && rowId && pair);
+  vtkIdType id = 0;
+  for (int r = firstRow; r <= lastRow; ++r)
+  {
+    for (int c = 0; c < kColumns; ++c)
+    {
+      if (!usable(r, c))
+      {
+        continue;
+      }
+      ASSERT_LT(id, output->GetNumberOfPoints());
+      double expected[3], p[3];
+      samplePoint(r, c, expected);
+      output->GetPoint(id, p);
+      EXPECT_EQ(p[0], expected[0]) << r << " " << c;
+      EXPECT_EQ(p[1], expected[1]) << r << " " << c;
+      EXPECT_EQ(p[2], expected[2]) << r << " " << c;
+      EXPECT_EQ(row->GetComponent(id, 0), 100.0 + r);
+      EXPECT_EQ(column->GetComponent(id, 0), 0.25 * c);
+      EXPECT_EQ(rowId->GetComponent(id, 0), 7.0 * r);
+      EXPECT_EQ(pair->GetComponent(id, 0), r + 0.5);
+      EXPECT_EQ(pair->GetComponent(id, 1), c - 0.5);
+      ++id;
+    }
+  }
+  EXPECT_EQ(id, output->GetNumberOfPoints());
+}
+
+// The (row, column) of point `id`, from its parameters.
+std::pair<int, int> sampleOf(vtkPolyData* output, vtkIdType id)
+{
+  return { static_cast<int>(output->GetPointData()->GetArray("row")->GetComponent(id, 0)) - 100,
+    static_cast<int>(std::lround(
+      4.0 * output->GetPointData()->GetArray("column")->GetComponent(id, 0))) };
+}
+
+TEST(GridBuilder, WholeAndCutRunsWriteEveryUsableSampleOnce)
+{
+  vtkBoostedGridBuilder grid(kRows, kColumns, false);
+  fill(grid);
+  vtkNew<vtkPolyData> curves;
+  EXPECT_EQ(grid.BuildCurves(curves, 0, kRows - 1, 1), 0); // no clip sphere: none outside
+  expectEveryUsableSampleOnce(curves, 0, kRows - 1);
+  // Each polyline runs over consecutive usable columns of one row: one per run of them.
+  vtkCellArray* lines = curves->GetLines();
+  vtkIdType count;
+  const vtkIdType* ids;
+  int polylines = 0;
+  for (lines->InitTraversal(); lines->GetNextCell(count, ids); ++polylines)
+  {
+    for (vtkIdType k = 1; k < count; ++k)
+    {
+      const auto a = sampleOf(curves, ids[k - 1]), b = sampleOf(curves, ids[k]);
+      EXPECT_EQ(a.first, b.first);
+      EXPECT_EQ(a.second + 1, b.second);
+    }
+  }
+  // Rows 0, 2, 5 whole, row 1 cut once, row 3 at its first column and in the middle, row 4 at
+  // its last column.
+  EXPECT_EQ(polylines, 3 + 2 + 2 + 1);
+
+  vtkNew<vtkPolyData> surface;
+  EXPECT_EQ(grid.BuildSurface(surface, 1, 4, 1), 0);
+  expectEveryUsableSampleOnce(surface, 1, 4);
+  // Each quad's corners are the samples of one grid cell.
+  vtkCellArray* quads = surface->GetPolys();
+  int cells = 0;
+  for (quads->InitTraversal(); quads->GetNextCell(count, ids); ++cells)
+  {
+    ASSERT_EQ(count, 4);
+    const auto corner = sampleOf(surface, ids[0]);
+    const std::pair<int, int> expected[4] = { corner, { corner.first, corner.second + 1 },
+      { corner.first + 1, corner.second + 1 }, { corner.first + 1, corner.second } };
+    for (int k = 0; k < 4; ++k)
+    {
+      EXPECT_EQ(sampleOf(surface, ids[k]), expected[k]);
+    }
+  }
+  int usableCells = 0;
+  for (int r = 1; r < 4; ++r)
+  {
+    for (int c = 0; c + 1 < kColumns; ++c)
+    {
+      usableCells += usable(r, c) && usable(r, c + 1) && usable(r + 1, c) && usable(r + 1, c + 1);
+    }
+  }
+  EXPECT_EQ(cells, usableCells);
+}
+
+TEST(GridBuilder, BuildsCountThePointsOutsideTheClipSphere)
+{
+  // Counted here as vtkBoostedSphereClip decides: |p - center|^2 <= radius^2 is inside.
+  auto outside = [](vtkPolyData* output, const double center[3], double radius) {
+    vtkIdType count = 0;
+    for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      output->GetPoint(i, p);
+      const double d2 = (p[0] - center[0]) * (p[0] - center[0]) +
+        (p[1] - center[1]) * (p[1] - center[1]) + (p[2] - center[2]) * (p[2] - center[2]);
+      count += !(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) &&
+        d2 <= radius * radius);
+    }
+    return count;
+  };
+  const double center[3] = { 20.0, 2.0, -2.0 };
+  for (double radius : { 1e-3, 5.0, 12.5, 30.0, 1e300 })
+  {
+    vtkBoostedGridBuilder grid(kRows, kColumns, false);
+    fill(grid);
+    grid.SetClipSphere(center, radius);
+    vtkNew<vtkPolyData> curves, surface;
+    const vtkIdType curvesOutside = grid.BuildCurves(curves, 0, kRows - 1, 1);
+    EXPECT_EQ(curvesOutside, outside(curves, center, radius)) << radius;
+    const vtkIdType surfaceOutside = grid.BuildSurface(surface, 0, kRows - 1, 1);
+    EXPECT_EQ(surfaceOutside, outside(surface, center, radius)) << radius;
+    if (radius == 12.5)
+    {
+      EXPECT_GT(curvesOutside, 0);
+      EXPECT_LT(curvesOutside, curves->GetNumberOfPoints());
+    }
+  }
+  // A point exactly on the sphere is inside: row 2's samples (20 + c, c / 2, -2) are at squared
+  // distance c^2 + (c / 2 - 2)^2 from the center, exactly 16 at c = 4, so that with radius 4 the
+  // columns 5 to 10 are outside.
+  {
+    vtkBoostedGridBuilder grid(kRows, kColumns, false);
+    fill(grid);
+    grid.SetClipSphere(center, 4.0);
+    vtkNew<vtkPolyData> curves;
+    const vtkIdType count = grid.BuildCurves(curves, 2, 2, 1);
+    EXPECT_EQ(count, 6);
+    EXPECT_EQ(count, outside(curves, center, 4.0));
+  }
+  // Points that overflow when the origin is added are not finite: outside whatever the radius.
+  {
+    vtkBoostedGridBuilder grid(1, 3, false);
+    grid.ClearSamples(0, 0, 3);
+    const double near[3] = { 1.0, 0.0, 0.0 }, far[3] = { 1e308, 0.0, 0.0 };
+    grid.SetPoint(0, 0, near);
+    grid.SetPoint(0, 1, far);
+    grid.SetPoint(0, 2, near);
+    const double origin[3] = { 1e308, 0.0, 0.0 };
+    grid.SetOrigin(origin);
+    const double zero[3] = { 0.0, 0.0, 0.0 };
+    grid.SetClipSphere(zero, std::numeric_limits<double>::max());
+    vtkNew<vtkPolyData> curves;
+    EXPECT_EQ(grid.BuildCurves(curves, 0, 0, 1), 1);
+    EXPECT_EQ(curves->GetNumberOfPoints(), 3);
+  }
+}
+} // namespace
