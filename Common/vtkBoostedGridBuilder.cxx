@@ -2,6 +2,7 @@
 
 #include "vtkBoostedBlockLoop.h"
 #include "vtkBoostedPolylineRuns.h"
+#include "vtkBoostedSphereClip.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
@@ -485,13 +486,13 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
   auto writeArrays = [&](const Segment& s, vtkIdType first, size_t n, auto columnOf) {
     const int r = s.Row;
     auto sample = [&](size_t j) { return static_cast<size_t>(this->Index(r, columnOf(j))); };
-    vtkIdType outsideHere = 0;
     // withClip: std::true_type or std::false_type (a loop of each, without a test per point).
-    auto writePoints = [&](auto* to, auto withClip) { // double or float
+    // Returns the points outside the clip sphere.
+    auto writePoints = [&](auto* to, auto withClip) -> vtkIdType { // double or float
       using Value = std::remove_pointer_t<decltype(to)>;
       // Local copies: the stores through `to` could alias members and captured references.
       const cga::Vec3 origin{ this->Origin[0], this->Origin[1], this->Origin[2] }, center = clipCenter;
-      const double radius2 = clipRadius2, largest = std::numeric_limits<double>::max();
+      const double radius2 = clipRadius2;
       const double* from = this->Points.get();
       vtkIdType count = 0;
       for (size_t j = 0; j < n; ++j)
@@ -503,32 +504,17 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
         to[3 * j + 2] = static_cast<Value>(p.z);
         if (decltype(withClip)::value)
         {
-          // vtkBoostedSphereClip's test, without branches (VTK_DOUBLE_MAX is 1e299).
-          const bool inside = (std::abs(p.x) <= largest) & (std::abs(p.y) <= largest) &
-            (std::abs(p.z) <= largest) & (cga::norm2(p - center) <= radius2);
-          count += !inside;
+          count += !vtkBoostedSphereClip::Inside(p, center, radius2);
         }
       }
-      outsideHere = count;
+      return count;
     };
     auto writePointsTo = [&](auto* to) {
-      if (clip)
-      {
-        writePoints(to, std::true_type{});
-      }
-      else
-      {
-        writePoints(to, std::false_type{});
-      }
+      return clip ? writePoints(to, std::true_type{}) : writePoints(to, std::false_type{});
     };
-    if (doublePoints)
-    {
-      writePointsTo(doublePoints->GetPointer(3 * first));
-    }
-    else
-    {
-      writePointsTo(floatPoints->GetPointer(3 * first));
-    }
+    const vtkIdType outsideHere = doublePoints
+      ? writePointsTo(doublePoints->GetPointer(3 * first))
+      : writePointsTo(floatPoints->GetPointer(3 * first));
     if (withSurfaceAttributes)
     {
       // The normals of columns [runFirst, runFirst + NormalsPerRun), made as the pass reaches them.

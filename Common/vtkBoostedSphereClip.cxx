@@ -51,7 +51,7 @@ void vtkBoostedSphereClip::Clip(
     for (vtkIdType i = first; i < last; ++i)
     {
       const cga::Vec3 p = point(i);
-      inside[i] = cga::isFinite(p) && cga::norm2(p - c) <= radius * radius;
+      inside[i] = Inside(p, c, radius * radius);
       chunkInside += inside[i];
     }
     insideCount += chunkInside;

@@ -15,6 +15,10 @@
 #define vtkBoostedSphereClip_h
 
 #include "BoostedSurfacesCommonModule.h" // for export macro
+#include "cga/Vec3.h"                    // for Inside
+
+#include <cmath>  // for Inside
+#include <limits> // for Inside
 
 class vtkPolyData;
 
@@ -22,6 +26,17 @@ class BOOSTEDSURFACESCOMMON_EXPORT vtkBoostedSphereClip
 {
 public:
   static void Clip(vtkPolyData* input, const double center[3], double radius, vtkPolyData* output);
+
+  /// Whether p is kept: finite and |p - center|^2 <= radius2 (the radius squared). Clip's test,
+  /// also made by vtkBoostedGridBuilder as it writes its points; without branches, so that a loop
+  /// over points stays vectorized (the finite test against the largest double: VTK_DOUBLE_MAX is
+  /// 1e299).
+  static bool Inside(const cga::Vec3& p, const cga::Vec3& center, double radius2)
+  {
+    constexpr double largest = std::numeric_limits<double>::max();
+    return (std::abs(p.x) <= largest) & (std::abs(p.y) <= largest) & (std::abs(p.z) <= largest) &
+      (cga::norm2(p - center) <= radius2);
+  }
 };
 
 #endif
