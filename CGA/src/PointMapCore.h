@@ -490,9 +490,10 @@ BOOSTED_FORCE_INLINE void keepSandwichInRange(const ValueOf<T>& m, T* k, int cou
 }
 
 /// <K X ~K>_1 for a full even K (detail::pack order) as two sparse products: the odd element
-/// K X, then only the grade-1 part of (K X) ~K.
+/// K X, then only the grade-1 part of (K X) ~K. Always inlined: for callers compiled for several
+/// instruction sets (BOOSTED_LANE_CLONES), where an out-of-line copy would run the baseline's.
 template <typename T>
-void sandwichEven(const T* k, const T* x, T* r)
+BOOSTED_FORCE_INLINE void sandwichEvenInlined(const T* k, const T* x, T* r)
 {
   T reversed[kEven], odd[kOdd];
   for (int s = 0; s < kEven; ++s)
@@ -501,6 +502,13 @@ void sandwichEven(const T* k, const T* x, T* r)
   }
   detail::applyProduct<detail::kEvenTimesVector>(k, x, odd);
   detail::applyProduct<detail::kOddTimesEvenToVector>(odd, reversed, r);
+}
+
+/// sandwichEvenInlined, where the compiler chooses whether to inline.
+template <typename T>
+void sandwichEven(const T* k, const T* x, T* r)
+{
+  sandwichEvenInlined(k, x, r);
 }
 
 /// <K no ~K>_1 for a full even K: sandwichEven of the origin, with only the terms of K X that
