@@ -34,6 +34,7 @@
 #include <cmath>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -403,16 +404,21 @@ int vtkConformalOrbitSource::RequestData(
       farSeeds += farSeed[r];
     }
     driver.SampleColumns([&](int firstColumn, int lastColumn, int firstRow, int lastRow) {
-      // One map per column, then each row's run of columns in order (the grid is row-major: a
-      // column at a time would store one point per row, each in another cache line).
-      std::vector<cga::PointMap> maps;
-      std::vector<char> finiteMap;
-      maps.reserve(static_cast<size_t>(lastColumn - firstColumn));
-      long long overflowedHere = 0;
+      // One map per column (their matrices side by side, eight columns at a time), then each
+      // row's run of columns in order (the grid is row-major: a column at a time would store one
+      // point per row, each in another cache line).
+      std::vector<cga::Even> versors;
+      versors.reserve(static_cast<size_t>(lastColumn - firstColumn));
       for (int c = firstColumn; c < lastColumn; ++c)
       {
-        maps.emplace_back(orbit.versor(ts[c]));
-        const std::array<double, 25>& entries = maps.back().matrix();
+        versors.push_back(orbit.versor(ts[c]));
+      }
+      const cga::PointMaps runMaps(versors.data(), versors.size());
+      std::vector<char> finiteMap;
+      long long overflowedHere = 0;
+      for (size_t k = 0; k < versors.size(); ++k)
+      {
+        const std::array<double, 25> entries = runMaps.map(k).matrix();
         finiteMap.push_back(
           std::all_of(entries.begin(), entries.end(), [](double v) { return std::isfinite(v); }));
         if (!finiteMap.back())
@@ -422,32 +428,31 @@ int vtkConformalOrbitSource::RequestData(
       }
       // Column c's map; the columns next to the run are made when a dropped sample asks.
       std::unique_ptr<cga::PointMap> before, after;
-      auto mapAt = [&](int c) -> const cga::PointMap* {
+      auto mapAt = [&](int c) -> std::optional<cga::PointMap> {
         if (c < 0 || c >= columns)
         {
-          return nullptr;
+          return std::nullopt;
         }
         if (c >= firstColumn && c < lastColumn)
         {
-          return &maps[static_cast<size_t>(c - firstColumn)];
+          return runMaps.map(static_cast<size_t>(c - firstColumn));
         }
         std::unique_ptr<cga::PointMap>& made = c < firstColumn ? before : after;
         if (!made)
         {
           made.reset(new cga::PointMap(orbit.versor(ts[c])));
         }
-        return made.get();
+        return *made;
       };
       // Whether seed r's image at column c is inside the clip sphere.
       auto insideAt = [&](int r, int c) {
-        const cga::PointMap* neighbour = mapAt(c);
+        const std::optional<cga::PointMap> neighbour = mapAt(c);
         cga::Vec3 p;
         return neighbour && neighbour->apply(seeds[r] - center, p) &&
           cga::norm(p + center - clipCenter) <= this->ClipRadius;
       };
       long long lost = 0;
-      // The run's maps side by side (eight columns at a time), each row's images at once.
-      const cga::PointMaps runMaps(maps.data(), maps.size());
+      // Each row's images of the run at once.
       cga::Vec3 images[vtkBoostedGridDriver::ColumnsPerRun];
       bool imaged[vtkBoostedGridDriver::ColumnsPerRun];
       for (int r = firstRow; r <= lastRow; ++r)

@@ -179,6 +179,64 @@ TEST(FastPaths, PointMapHoldsEachBasisVectorsSandwichBitForBit)
   }
 }
 
+TEST(FastPaths, PointMapsOfVersorsAreEachVersorsPointMapBitForBit)
+{
+  // PointMaps made from versors (eight maps side by side) hold PointMap(versor) for each, to the
+  // bit (NaN where it has NaN), and apply them as PointMaps made from those maps do; 0 to 21
+  // versors of sizes 1e-300 to 1e300, one with NaN and one with infinity.
+  Random random(38);
+  const double sizes[] = { 1.0, 1e-300, 1e300, 1e-5, 1e150 };
+  for (std::size_t count : { 0, 1, 7, 8, 9, 16, 21 })
+  {
+    std::vector<Even> versors;
+    std::vector<PointMap> maps;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      Even k = random.even(sizes[i % 5]);
+      if (i == 4)
+      {
+        k.bivector[Bivector::E2NI] = std::numeric_limits<double>::quiet_NaN();
+      }
+      if (i == 6)
+      {
+        k.quadvector[0] = std::numeric_limits<double>::infinity();
+      }
+      versors.push_back(k);
+      maps.emplace_back(k);
+    }
+    const PointMaps fromVersors(versors.data(), versors.size());
+    const PointMaps fromMaps(maps.data(), maps.size());
+    ASSERT_EQ(fromVersors.size(), count);
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      const std::array<double, 25> got = fromVersors.map(i).matrix();
+      const std::array<double, 25>& expected = maps[i].matrix();
+      for (std::size_t e = 0; e < 25; ++e)
+      {
+        if (std::isnan(expected[e]))
+        {
+          EXPECT_TRUE(std::isnan(got[e])) << "map " << i << " entry " << e;
+          continue;
+        }
+        EXPECT_EQ(0, std::memcmp(&got[e], &expected[e], sizeof got[e])) << "map " << i << " entry " << e;
+      }
+    }
+    for (int trial = 0; trial < 5; ++trial)
+    {
+      const Vec3 p = random.vec3(2.0);
+      std::vector<Vec3> a(count + 1, Vec3{ 42, 42, 42 }), b(count + 1, Vec3{ 42, 42, 42 });
+      std::unique_ptr<bool[]> mappedA(new bool[count + 1]), mappedB(new bool[count + 1]);
+      fromVersors.apply(p, a.data(), mappedA.get());
+      fromMaps.apply(p, b.data(), mappedB.get());
+      for (std::size_t i = 0; i < count; ++i)
+      {
+        ASSERT_EQ(mappedA[i], mappedB[i]) << "map " << i;
+        EXPECT_EQ(0, std::memcmp(&a[i], &b[i], sizeof a[i])) << "map " << i;
+      }
+    }
+  }
+}
+
 TEST(FastPaths, SandwichFailsCleanlyAtInfinityAndOnNaN)
 {
   // K = 1 + no e1 sends -e1 to infinity (docs/conventions.md section 2: -v/|v|^2).

@@ -40,6 +40,40 @@ bool sandwichPoint(const Even& k, Vec3 p, Vec3& out)
 
 namespace
 {
+// Each lane's versor's sandwich of basis vector j (lane l: versors[min(l, count - 1)]), in
+// sandwichGrade1's operations and order, stored as entries (i, j) of eight maps side by side
+// (PointMaps' layout: entry e of lane l at [8 e + l]).
+BOOSTED_LANE_CLONES
+void groupImages(const Even* versors, std::size_t count, double* entries)
+{
+  using detail::Eight;
+  constexpr int n = ConformalVector::Count;
+  Eight lanes[Even::kCount];
+  for (int l = 0; l < 8; ++l)
+  {
+    const detail::EvenArray packed = detail::pack(versors[std::min<std::size_t>(l, count - 1)]);
+    for (std::size_t s = 0; s < packed.size(); ++s)
+    {
+      lanes[s][l] = packed[s];
+    }
+  }
+  for (int j = 0; j < n; ++j)
+  {
+    Eight basis[n];
+    for (int i = 0; i < n; ++i)
+    {
+      const double v = i == j ? 1.0 : 0.0;
+      basis[i] = Eight{ v, v, v, v, v, v, v, v };
+    }
+    Eight images[n];
+    core::sandwichEvenInlined(lanes, basis, images);
+    for (int i = 0; i < n; ++i)
+    {
+      std::memcpy(entries + 8 * (i * n + j), &images[i], sizeof images[i]);
+    }
+  }
+}
+
 // The five basis vectors' sandwiches side by side (lane j: the image of basis vector j, column j
 // of the row-major matrix), in sandwichGrade1's operations and order: the same entries, bit for
 // bit, at about a fifth of five calls' time (an orbit with one seed builds a map per sample).
@@ -111,6 +145,26 @@ PointMaps::PointMaps(const PointMap* maps, std::size_t count)
       this->Entries[25 * 8 * (i / 8) + 8 * e + i % 8] = m[e];
     }
   }
+}
+
+PointMaps::PointMaps(const Even* versors, std::size_t count)
+  : Count(count)
+  , Entries(25 * 8 * ((count + 7) / 8))
+{
+  for (std::size_t first = 0; first < count; first += 8)
+  {
+    groupImages(versors + first, count - first, this->Entries.data() + 25 * first);
+  }
+}
+
+PointMap PointMaps::map(std::size_t i) const
+{
+  PointMap m;
+  for (std::size_t e = 0; e < 25; ++e)
+  {
+    m.Matrix[e] = this->Entries[25 * 8 * (i / 8) + 8 * e + i % 8];
+  }
+  return m;
 }
 
 // PointMap::apply(p, out)'s operations in its order, on eight maps at a time (ConformalLanes.h).

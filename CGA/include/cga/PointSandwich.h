@@ -41,6 +41,8 @@ public:
   const std::array<double, 25>& matrix() const { return Matrix; }
 
 private:
+  friend class PointMaps;
+  PointMap() = default;
   std::array<double, 25> Matrix{};
 };
 
@@ -52,8 +54,12 @@ class PointMaps
 {
 public:
   PointMaps(const PointMap* maps, std::size_t count);
+  /// The maps of `count` versors, PointMap(versors[i]) to the bit, eight made side by side.
+  PointMaps(const Even* versors, std::size_t count);
   std::size_t size() const { return Count; }
   void apply(Vec3 p, Vec3* out, bool* mapped) const;
+  /// Map i (i < size()) on its own.
+  PointMap map(std::size_t i) const;
 
 private:
   std::size_t Count;
