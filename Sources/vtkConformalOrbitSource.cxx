@@ -418,9 +418,7 @@ int vtkConformalOrbitSource::RequestData(
       long long overflowedHere = 0;
       for (size_t k = 0; k < versors.size(); ++k)
       {
-        const std::array<double, 25> entries = runMaps.map(k).matrix();
-        finiteMap.push_back(
-          std::all_of(entries.begin(), entries.end(), [](double v) { return std::isfinite(v); }));
+        finiteMap.push_back(runMaps.isFinite(k));
         if (!finiteMap.back())
         {
           overflowedHere += lastRow - firstRow + 1; // t B itself overflows: no image to give

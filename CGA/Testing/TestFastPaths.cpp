@@ -6,6 +6,8 @@
 #include "cga/PointPairs.h"
 #include "cga/PointSandwich.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <memory>
@@ -182,8 +184,9 @@ TEST(FastPaths, PointMapHoldsEachBasisVectorsSandwichBitForBit)
 TEST(FastPaths, PointMapsOfVersorsAreEachVersorsPointMapBitForBit)
 {
   // PointMaps made from versors (eight maps side by side) hold PointMap(versor) for each, to the
-  // bit (NaN where it has NaN), and apply them as PointMaps made from those maps do; 0 to 21
-  // versors of sizes 1e-300 to 1e300, one with NaN and one with infinity.
+  // bit (NaN where it has NaN), say which have only finite entries, and apply them as PointMaps
+  // made from those maps do; 0 to 21 versors of sizes 1e-300 to 1e300, one with NaN and one with
+  // infinity.
   Random random(38);
   const double sizes[] = { 1.0, 1e-300, 1e300, 1e-5, 1e150 };
   for (std::size_t count : { 0, 1, 7, 8, 9, 16, 21 })
@@ -211,6 +214,10 @@ TEST(FastPaths, PointMapsOfVersorsAreEachVersorsPointMapBitForBit)
     {
       const std::array<double, 25> got = fromVersors.map(i).matrix();
       const std::array<double, 25>& expected = maps[i].matrix();
+      const bool finite =
+        std::all_of(expected.begin(), expected.end(), [](double v) { return std::isfinite(v); });
+      EXPECT_EQ(fromVersors.isFinite(i), finite) << "map " << i;
+      EXPECT_EQ(fromMaps.isFinite(i), finite) << "map " << i;
       for (std::size_t e = 0; e < 25; ++e)
       {
         if (std::isnan(expected[e]))

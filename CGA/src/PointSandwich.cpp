@@ -8,6 +8,7 @@
 #include "PointMapCore.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 namespace cga
@@ -42,9 +43,10 @@ namespace
 {
 // Each lane's versor's sandwich of basis vector j (lane l: versors[min(l, count - 1)]), in
 // sandwichGrade1's operations and order, stored as entries (i, j) of eight maps side by side
-// (PointMaps' layout: entry e of lane l at [8 e + l]).
+// (PointMaps' layout: entry e of lane l at [8 e + l]); finite[l] whether all of lane l's are
+// finite (l < min(count, 8)).
 BOOSTED_LANE_CLONES
-void groupImages(const Even* versors, std::size_t count, double* entries)
+void groupImages(const Even* versors, std::size_t count, double* entries, char* finite)
 {
   using detail::Eight;
   constexpr int n = ConformalVector::Count;
@@ -57,6 +59,7 @@ void groupImages(const Even* versors, std::size_t count, double* entries)
       lanes[s][l] = packed[s];
     }
   }
+  detail::EightMask allFinite = Eight{} == Eight{};
   for (int j = 0; j < n; ++j)
   {
     Eight basis[n];
@@ -70,7 +73,12 @@ void groupImages(const Even* versors, std::size_t count, double* entries)
     for (int i = 0; i < n; ++i)
     {
       std::memcpy(entries + 8 * (i * n + j), &images[i], sizeof images[i]);
+      allFinite &= detail::finiteLanes(images[i]);
     }
+  }
+  for (std::size_t l = 0; l < std::min<std::size_t>(count, 8); ++l)
+  {
+    finite[l] = allFinite[l] != 0;
   }
 }
 
@@ -135,7 +143,13 @@ ConformalVector PointMap::apply(const ConformalVector& x) const
 PointMaps::PointMaps(const PointMap* maps, std::size_t count)
   : Count(count)
   , Entries(25 * 8 * ((count + 7) / 8))
+  , Finite(count)
 {
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const std::array<double, 25>& m = maps[i].matrix();
+    this->Finite[i] = std::all_of(m.begin(), m.end(), [](double v) { return std::isfinite(v); });
+  }
   // A partial group repeats its last map.
   for (std::size_t i = 0; i < 8 * ((count + 7) / 8); ++i)
   {
@@ -150,10 +164,12 @@ PointMaps::PointMaps(const PointMap* maps, std::size_t count)
 PointMaps::PointMaps(const Even* versors, std::size_t count)
   : Count(count)
   , Entries(25 * 8 * ((count + 7) / 8))
+  , Finite(count)
 {
   for (std::size_t first = 0; first < count; first += 8)
   {
-    groupImages(versors + first, count - first, this->Entries.data() + 25 * first);
+    groupImages(
+      versors + first, count - first, this->Entries.data() + 25 * first, this->Finite.data() + first);
   }
 }
 

@@ -10,13 +10,14 @@
 // (ReducedSinCos.* tests them against sincosl, which reduces exactly).
 //
 // The reduced angle's sine and cosine: where long double has a 64-bit significand (x87), their
-// Taylor polynomials to r^21/21! and r^22/22! (Horner in z = r^2), 22 ns against sincosl's 59 on
-// the README's machine (glibc's kernels, 35 % of an orbit update with one seed, run the same
-// 80-bit arithmetic through tables and longer polynomials). For |r| <= π/4 the first omitted terms
-// are below 2^-72 and 2^-70 of the results, the coefficients (1/n! rounded to 64 bits) err by at
-// most 2^-65 of terms no larger than a sixth of the result, and Horner's roundings stay in the
-// tails: within one unit in the last place of sincosl's results (over 10^7 angles; ReducedSinCos.*
-// checks it on 200,000). Elsewhere sincosl, whose precision the polynomials do not reach.
+// Taylor polynomials to r^21/21! and r^22/22! (Horner in z = r^2; the terms from r^7 and r^8 on,
+// below 2^-11 of the brackets they enter, in double), 13 ns against sincosl's 59 on the README's
+// machine (glibc's kernels, 35 % of an orbit update with one seed, run the 80-bit arithmetic
+// through tables and longer polynomials). For |r| <= π/4 the first omitted terms are below 2^-72
+// and 2^-70 of the results; the coefficients' rounding (2^-65 in 64 bits, 2^-53 in double) and
+// Horner's roundings enter the results below 2^-67, and z's rounding to double below 2^-70: within
+// one unit in the last place of sincosl's results (over 8·10^6 angles; ReducedSinCos.* checks it
+// on 200,000). Elsewhere sincosl, whose precision the polynomials do not reach.
 //
 // Internal linkage only.
 #pragma once
@@ -36,10 +37,10 @@ namespace
 {
 #if LDBL_MANT_DIG == 64
 // c[0] + z (c[1] + z (... + z c[N - 1])).
-template <int N>
-inline long double horner(long double z, const long double (&c)[N])
+template <typename T, int N>
+inline T horner(T z, const T (&c)[N])
 {
-  long double p = c[N - 1];
+  T p = c[N - 1];
   for (int i = N - 2; i >= 0; --i)
   {
     p = c[i] + z * p;
@@ -47,15 +48,17 @@ inline long double horner(long double z, const long double (&c)[N])
   return p;
 }
 
-// (-1)^k / (2k + 3)! and (-1)^k / (2k + 4)!, k = 0 ... 9, rounded to 64 bits.
-constexpr long double kSineTail[] = { -0x1.5555555555555556p-3L, 0x1.1111111111111112p-7L,
-  -0x1.a01a01a01a01a01ap-13L, 0x1.71de3a556c7338fap-19L, -0x1.ae64567f544e38fep-26L,
-  0x1.6124613a86d097cap-33L, -0x1.ae7f3e733b81f11ep-41L, 0x1.952c77030ad4a6b2p-49L,
-  -0x1.2f49b4681415724cp-57L, 0x1.71b8ef6dcf5718bep-66L };
-constexpr long double kCosineTail[] = { 0x1.5555555555555556p-5L, -0x1.6c16c16c16c16c16p-10L,
-  0x1.a01a01a01a01a01ap-16L, -0x1.27e4fb7789f5c72ep-22L, 0x1.1eed8eff8d897b54p-29L,
-  -0x1.93974a8c07c9d20cp-37L, 0x1.ae7f3e733b81f11ep-45L, -0x1.6827863b97d977bcp-53L,
-  0x1.e542ba402022507ap-62L, -0x1.0ce396db7f852946p-70L };
+// The polynomials' coefficients -1/3!, 1/5!, -1/7!, ... (sine) and 1/4!, -1/6!, 1/8!, ...
+// (cosine) to 1/21! and 1/22!: the first two of each in 64 bits, the rest in double, the
+// nearest values.
+constexpr long double kSineLeading[] = { -0x1.5555555555555556p-3L, 0x1.1111111111111112p-7L };
+constexpr double kSineRest[] = { -0x1.a01a01a01a01ap-13, 0x1.71de3a556c734p-19,
+  -0x1.ae64567f544e4p-26, 0x1.6124613a86d09p-33, -0x1.ae7f3e733b81fp-41, 0x1.952c77030ad4ap-49,
+  -0x1.2f49b46814157p-57, 0x1.71b8ef6dcf572p-66 };
+constexpr long double kCosineLeading[] = { 0x1.5555555555555556p-5L, -0x1.6c16c16c16c16c16p-10L };
+constexpr double kCosineRest[] = { 0x1.a01a01a01a01ap-16, -0x1.27e4fb7789f5cp-22,
+  0x1.1eed8eff8d898p-29, -0x1.93974a8c07c9dp-37, 0x1.ae7f3e733b81fp-45, -0x1.6827863b97d97p-53,
+  0x1.e542ba4020225p-62, -0x1.0ce396db7f853p-70 };
 #endif
 
 // sin r and cos r for |r| <= π/4 (up to the reduction's rounding).
@@ -63,10 +66,16 @@ inline void sinCosOfReduced(long double r, long double& s, long double& c)
 {
 #if LDBL_MANT_DIG == 64
   const long double z = r * r;
-  // sin r = r + r z (-1/3! + z (1/5! - ...)), and cos r = 1 - (z/2 - z^2 (1/4! - z (1/6! - ...))):
-  // the leading terms added last, so that the tails' roundings shrink with them.
-  s = z == 0.0L ? r : r + r * z * horner(z, kSineTail); // r itself where z underflows (-0 stays)
-  c = 1.0L - (0.5L * z - z * z * horner(z, kCosineTail));
+  // sin r = r + r z (-1/3! + z (1/5! + z R(z))), cos r = 1 - (z/2 - z^2 (1/4! + z (-1/6! +
+  // z C(z)))): the leading terms added last, so that the tails' roundings shrink with them, and
+  // R and C, below 2^-11 of their brackets, in double (SSE instead of x87: the kernels' time
+  // 21.5 -> 12.8 ns).
+  const long double sineRest = horner(static_cast<double>(z), kSineRest);
+  const long double cosineRest = horner(static_cast<double>(z), kCosineRest);
+  const long double sineTail = kSineLeading[0] + z * (kSineLeading[1] + z * sineRest);
+  const long double cosineTail = kCosineLeading[0] + z * (kCosineLeading[1] + z * cosineRest);
+  s = z == 0.0L ? r : r + r * z * sineTail; // r itself where z underflows (-0 stays)
+  c = 1.0L - (0.5L * z - z * z * cosineTail);
 #else
   ::sincosl(r, &s, &c);
 #endif

@@ -60,10 +60,13 @@ public:
   void apply(Vec3 p, Vec3* out, bool* mapped) const;
   /// Map i (i < size()) on its own.
   PointMap map(std::size_t i) const;
+  /// Whether every entry of map i is finite.
+  bool isFinite(std::size_t i) const { return Finite[i] != 0; }
 
 private:
   std::size_t Count;
   std::vector<double> Entries; // per group of eight maps: entry e of lane l at [25 * 8 g + 8 e + l]
+  std::vector<char> Finite;    // per map
 };
 
 /// The linear map X -> B X - X B of a bivector B on conformal vectors (a vector again: -2 X.B),
