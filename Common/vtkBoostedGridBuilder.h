@@ -30,8 +30,9 @@
  *
  * A sample's point, normal and values are undefined until ClearSamples makes it unset (NaN point
  * and normal, zero values): vtkBoostedGridDriver clears each sample on the thread that computes
- * it, right before, so that no pass over the whole grid runs before the sampling and the grid's
- * memory is first touched by the threads that use it. Building reads only cleared samples: the
+ * it, right before (or the source clears what it does not set: SampleColumns), so that no pass
+ * over the whole grid runs before the sampling and the grid's memory is first touched by the
+ * threads that use it. Building reads only cleared samples: the
  * rows it builds, and their neighbours for the normals.
  */
 #ifndef vtkBoostedGridBuilder_h

@@ -129,14 +129,9 @@ bool vtkBoostedGridDriver::SampleGrid(const std::function<void(int, int)>& sampl
 
 bool vtkBoostedGridDriver::SampleColumns(const std::function<void(int, int, int, int)>& sample)
 {
-  vtkBoostedGridBuilder* grid = this->Builder.get();
   const int firstRow = this->SampleFirst, lastRow = this->SampleLast;
   return this->Sample(0, this->Columns, lastRow - firstRow + 1,
-    [&sample, grid, firstRow, lastRow](vtkIdType first, vtkIdType last) {
-      for (int r = firstRow; r <= lastRow; ++r)
-      {
-        grid->ClearSamples(r, static_cast<int>(first), static_cast<int>(last));
-      }
+    [&sample, firstRow, lastRow](vtkIdType first, vtkIdType last) {
       for (vtkIdType c = first; c < last; c += ColumnsPerRun)
       {
         sample(static_cast<int>(c), static_cast<int>(std::min<vtkIdType>(last, c + ColumnsPerRun)),

@@ -12,7 +12,8 @@
  *    also samples one halo row on each side, which the normals at the band's edge need.
  * 2. SampleRows, SampleGrid, SampleColumns or SampleRuns: the source computes its samples, in
  *    vtkBoostedBlockLoop's blocks (progress, abort, threads), each sample cleared first
- *    (vtkBoostedGridBuilder::ClearSamples) on the thread that computes it.
+ *    (vtkBoostedGridBuilder::ClearSamples) on the thread that computes it (SampleColumns: cleared
+ *    or set by the source itself).
  * 3. Build: quads or polylines (vtkBoostedGridBuilder), cut exactly at the clip sphere
  *    (vtkBoostedSphereClip): every finite sample is kept until the cut, so the output ends on the
  *    sphere (to round-off), not at the last whole grid cell inside it. An aborted update stays
@@ -79,7 +80,9 @@ public:
   /// sample(firstColumn, lastColumn, firstRow, lastRow) over runs of at most ColumnsPerRun
   /// columns [firstColumn, lastColumn) that together cover every column, each over the rows this
   /// piece needs, so that a source makes a run's maps once and then writes each row's run in
-  /// order.
+  /// order. Unlike the others, no sample is cleared first: sample sets or clears
+  /// (vtkBoostedGridBuilder::ClearSamples) every sample of its run, which saves a pass of stores
+  /// over the points when nearly all are set.
   bool SampleColumns(
     const std::function<void(int firstColumn, int lastColumn, int firstRow, int lastRow)>& sample);
   /// SampleColumns' largest run: its maps stay in the L1 cache (64 of the orbits' 5 x 5 maps,

@@ -453,10 +453,12 @@ int vtkConformalOrbitSource::RequestData(
       // Each row's images of the run at once.
       cga::Vec3 images[vtkBoostedGridDriver::ColumnsPerRun];
       bool imaged[vtkBoostedGridDriver::ColumnsPerRun];
+      // Every sample of the run is set or cleared here (SampleColumns clears none first).
       for (int r = firstRow; r <= lastRow; ++r)
       {
         if (farSeed[r])
         {
+          grid.ClearSamples(r, firstColumn, lastColumn);
           continue;
         }
         const cga::Vec3 seed = seeds[r] - center;
@@ -464,17 +466,15 @@ int vtkConformalOrbitSource::RequestData(
         for (int c = firstColumn; c < lastColumn; ++c)
         {
           const size_t k = static_cast<size_t>(c - firstColumn);
-          if (!finiteMap[k])
-          {
-            continue;
-          }
-          if (imaged[k]) // false: at infinity; left NaN and dropped
+          if (finiteMap[k] && imaged[k])
           {
             const cga::Vec3 q = images[k] + center;
             const double xyz[3] = { q.x, q.y, q.z };
             grid.SetPoint(r, c, xyz);
+            continue;
           }
-          else if (insideAt(r, c - 1) || insideAt(r, c + 1))
+          grid.ClearSamples(r, c, c + 1); // dropped: exp(t B) overflows, or the image is at infinity
+          if (finiteMap[k] && (insideAt(r, c - 1) || insideAt(r, c + 1)))
           {
             ++lost;
           }
