@@ -414,12 +414,10 @@ int vtkConformalOrbitSource::RequestData(
         versors.push_back(orbit.versor(ts[c]));
       }
       const cga::PointMaps runMaps(versors.data(), versors.size());
-      std::vector<char> finiteMap;
       long long overflowedHere = 0;
       for (size_t k = 0; k < versors.size(); ++k)
       {
-        finiteMap.push_back(runMaps.isFinite(k));
-        if (!finiteMap.back())
+        if (!runMaps.isFinite(k))
         {
           overflowedHere += lastRow - firstRow + 1; // t B itself overflows: no image to give
         }
@@ -466,7 +464,7 @@ int vtkConformalOrbitSource::RequestData(
         for (int c = firstColumn; c < lastColumn; ++c)
         {
           const size_t k = static_cast<size_t>(c - firstColumn);
-          if (finiteMap[k] && imaged[k])
+          if (runMaps.isFinite(k) && imaged[k])
           {
             const cga::Vec3 q = images[k] + center;
             const double xyz[3] = { q.x, q.y, q.z };
@@ -474,7 +472,7 @@ int vtkConformalOrbitSource::RequestData(
             continue;
           }
           grid.ClearSamples(r, c, c + 1); // dropped: exp(t B) overflows, or the image is at infinity
-          if (finiteMap[k] && (insideAt(r, c - 1) || insideAt(r, c + 1)))
+          if (runMaps.isFinite(k) && (insideAt(r, c - 1) || insideAt(r, c + 1)))
           {
             ++lost;
           }

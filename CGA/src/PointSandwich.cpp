@@ -81,43 +81,18 @@ void groupImages(const Even* versors, std::size_t count, double* entries, char* 
     finite[l] = allFinite[l] != 0;
   }
 }
-
-// The five basis vectors' sandwiches side by side (lane j: the image of basis vector j, column j
-// of the row-major matrix), in sandwichGrade1's operations and order: the same entries, bit for
-// bit, at about a fifth of five calls' time (an orbit with one seed builds a map per sample).
-BOOSTED_LANE_CLONES
-void basisImages(const Even& k, double* matrix)
-{
-  using detail::Eight;
-  constexpr int n = ConformalVector::Count;
-  const detail::EvenArray packed = detail::pack(k);
-  Eight lanes[Even::kCount];
-  for (std::size_t s = 0; s < packed.size(); ++s)
-  {
-    const double v = packed[s]; // each lane the component itself (a sum with 0 would lose -0)
-    lanes[s] = Eight{ v, v, v, v, v, v, v, v };
-  }
-  Eight basis[n];
-  for (int i = 0; i < n; ++i)
-  {
-    basis[i] = Eight{};
-    basis[i][i] = 1.0;
-  }
-  Eight images[n];
-  core::sandwichEvenInlined(lanes, basis, images);
-  for (int i = 0; i < n; ++i)
-  {
-    for (int j = 0; j < n; ++j)
-    {
-      matrix[i * n + j] = images[i][j];
-    }
-  }
-}
 } // namespace
 
 PointMap::PointMap(const Even& k)
 {
-  basisImages(k, this->Matrix.data());
+  // One versor in every lane: lane 0 holds its map.
+  double entries[25 * 8];
+  char finite[1];
+  groupImages(&k, 1, entries, finite);
+  for (std::size_t e = 0; e < 25; ++e)
+  {
+    this->Matrix[e] = entries[8 * e];
+  }
 }
 
 ConformalVector applyMatrix(const std::array<double, 25>& matrix, const ConformalVector& x)
