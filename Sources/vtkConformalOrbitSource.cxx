@@ -386,8 +386,9 @@ int vtkConformalOrbitSource::RequestData(
   if (!seeds.empty() && driver.Prepare(problem, static_cast<long long>(seeds.size()), columns, closed, false))
   {
     vtkBoostedGridBuilder& grid = driver.Grid();
-    // exp(t B) is the same for every seed: its closed form (extended precision) once per t, as
-    // a 5 x 5 point map (cga::PointMap) that each seed then costs a matrix-vector product.
+    // exp(t B) is the same for every seed: its closed form once per t (eight times side by side,
+    // cga::Orbit::versors), as a 5 x 5 point map (cga::PointMaps) that each seed then costs a
+    // matrix-vector product.
     std::atomic<long long> overflowed{ 0 }; // samples whose exp(t B) is not finite
     // Samples whose image is at infinity or beyond the largest double, next to a sample inside
     // the clip sphere: the orbit is not cut on the sphere there (the cut needs a finite sample
@@ -407,12 +408,8 @@ int vtkConformalOrbitSource::RequestData(
       // One map per column (their matrices side by side, eight columns at a time), then each
       // row's run of columns in order (the grid is row-major: a column at a time would store one
       // point per row, each in another cache line).
-      std::vector<cga::Even> versors;
-      versors.reserve(static_cast<size_t>(lastColumn - firstColumn));
-      for (int c = firstColumn; c < lastColumn; ++c)
-      {
-        versors.push_back(orbit.versor(ts[c]));
-      }
+      std::vector<cga::Even> versors(static_cast<size_t>(lastColumn - firstColumn));
+      orbit.versors(ts.data() + firstColumn, versors.size(), versors.data());
       const cga::PointMaps runMaps(versors.data(), versors.size());
       long long overflowedHere = 0;
       for (size_t k = 0; k < versors.size(); ++k)

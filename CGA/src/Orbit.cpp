@@ -5,11 +5,14 @@
 #include "cga/Exponential.h"
 #include "cga/PointSandwich.h"
 
+#include "LaneClones.h"
+#include "PointPairKernelDispatch.h"
 #include "ReducedSinCos.h"
 #include "SandwichScaling.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace cga
@@ -119,7 +122,7 @@ void planeFactors(Real square, Real rate, Real t, Real& c, Real& sHat)
 Even withinRange(const Even& k)
 {
   // Even::maxAbs's decision (no scaling where a component is NaN) without its chain of
-  // NaN-propagating selects (a tenth of Orbit::versor's time): the largest |component| and,
+  // NaN-propagating selects (a tenth of the extended form's time): the largest |component| and,
   // apart, whether one is NaN.
   double largest = std::fabs(k.scalar);
   bool notANumber = std::isnan(k.scalar);
@@ -141,6 +144,63 @@ Even withinRange(const Even& k)
 Real larger(Real a, Real b)
 {
   return std::isnan(a) ? b : (std::isnan(b) || b <= a ? a : b);
+}
+
+// The closed form's factors and coefficients (extendedVersor's first branch) at kLanes times, in
+// double: per part the angle x = t r as xh + xl (t times the rate's high part, with its rounding
+// error by a fused multiply-add, plus t times the low part: within 2^-104 |x|), cos and sin (or
+// cosh and sinh) of xh by the kernel's vector functions, then of xh + xl to first order in xl
+// (|xl| <= 2^-52 |x|: the second order is below 2^-104 x^2).
+struct LaneParts
+{
+  double rateHigh[2], rateLow[2];
+  OrbitPartKind kind[2]; // Zero: a zero rate, factors 1 and t
+  double square[2], difference;
+};
+
+BOOSTED_LANE_CLONES
+void laneCoefficients(const LaneParts& parts, kernel::SinCosBlock sinCos, const double* times,
+  double* scalar, double* coefW, double* coefB, double* coefWB)
+{
+  using detail::Eight;
+  static_assert(sizeof(Eight) == kernel::kLanes * sizeof(double), "one Eight per block");
+  Eight t;
+  std::memcpy(&t, times, sizeof t);
+  Eight c[2], sHat[2];
+  for (int i = 0; i < 2; ++i)
+  {
+    if (parts.kind[i] == OrbitPartKind::Zero)
+    {
+      c[i] = Eight{} + 1.0;
+      sHat[i] = t;
+      continue;
+    }
+    alignas(64) double high[kernel::kLanes], low[kernel::kLanes], even[kernel::kLanes],
+      odd[kernel::kLanes];
+    for (int l = 0; l < kernel::kLanes; ++l)
+    {
+      high[l] = times[l] * parts.rateHigh[i];
+      low[l] = __builtin_fma(times[l], parts.rateHigh[i], -high[l]) + times[l] * parts.rateLow[i];
+    }
+    const bool hyperbolic = parts.kind[i] == OrbitPartKind::Hyperbolic;
+    sinCos(hyperbolic, high, even, odd);
+    Eight xl, ev, od;
+    std::memcpy(&xl, low, sizeof xl);
+    std::memcpy(&ev, even, sizeof ev);
+    std::memcpy(&od, odd, sizeof od);
+    // cos(xh + xl) = cos xh - xl sin xh, cosh(xh + xl) = cosh xh + xl sinh xh; the odd ones
+    // sin xh + xl cos xh and sinh xh + xl cosh xh.
+    c[i] = hyperbolic ? ev + xl * od : ev - xl * od;
+    sHat[i] = (od + xl * ev) / parts.rateHigh[i];
+  }
+  const Eight s = c[0] * c[1];
+  const Eight w = 0.5 * sHat[0] * sHat[1];
+  const Eight b = (parts.square[0] * sHat[0] * c[1] - parts.square[1] * sHat[1] * c[0]) / parts.difference;
+  const Eight wb = 0.5 * (c[0] * sHat[1] - c[1] * sHat[0]) / parts.difference;
+  std::memcpy(scalar, &s, sizeof s);
+  std::memcpy(coefW, &w, sizeof w);
+  std::memcpy(coefB, &b, sizeof b);
+  std::memcpy(coefWB, &wb, sizeof wb);
 }
 
 Real sine(Real x)
@@ -180,6 +240,7 @@ Orbit::Orbit(const Bivector& b)
   }
   this->KnownParts = known;
   this->findPeriod();
+  this->prepareLanes();
 }
 
 Orbit::Orbit(const Bivector& first, const Bivector& second)
@@ -197,6 +258,7 @@ Orbit::Orbit(const Bivector& first, const Bivector& second)
   }
   this->KnownParts = true;
   this->findPeriod();
+  this->prepareLanes();
 }
 
 void Orbit::setPart(int i, const Bivector& blade, long double square, bool zero)
@@ -284,7 +346,111 @@ void Orbit::findPeriod()
   }
 }
 
+void Orbit::prepareLanes()
+{
+  const Real l1 = this->Squares[0], l2 = this->Squares[1];
+  const Real d = l1 - l2;
+  // The first branch of extendedVersor (symmetric in the two parts: given parts may come in
+  // either order) with the squares at least a quarter of the larger apart: the coefficients'
+  // division by l1 - l2 then amplifies the factors' rounding at most about four times (closer
+  // squares keep the extended branches' 11 more bits).
+  // The squares must also not be small against B's coefficients (a nearly null B, whose W B is
+  // large against l1 - l2, as a drift's): the coefficient of <W B>_2 would amplify the factors'
+  // rounding by |W B| / (|B| |l1 - l2|).
+  const Real scale = static_cast<Real>(this->B.maxAbs());
+  this->LaneForm = this->Problem.empty() && !this->Identity && d != 0.0L &&
+    std::fabs(d) >= 0.25L * larger(std::fabs(l1), std::fabs(l2)) &&
+    std::fabs(d) >= 0.25L * scale * scale;
+  for (int i = 0; i < 2; ++i)
+  {
+    const Real rate = this->Parts[i].rate;
+    this->RateHigh[i] = static_cast<double>(rate);
+    this->RateLow[i] = static_cast<double>(rate - static_cast<Real>(this->RateHigh[i]));
+    this->LaneKind[i] = rate == 0.0L ? OrbitPartKind::Zero
+      : this->Squares[i] < 0.0L      ? OrbitPartKind::Elliptic
+                                     : OrbitPartKind::Hyperbolic;
+    this->LaneSquares[i] = static_cast<double>(this->Squares[i]);
+  }
+  this->LaneSquareDifference = static_cast<double>(d);
+}
+
+bool Orbit::inLanes(double t) const
+{
+  // Small angles too: there the coefficients' roundings stay a few units of 2^-53 of the versor
+  // (measured against the extended form's power series) and of its part that moves points.
+  if (!this->LaneForm || !std::isfinite(t))
+  {
+    return false;
+  }
+  for (int i = 0; i < 2; ++i)
+  {
+    const double x = std::fabs(t) * this->RateHigh[i];
+    // Hyperbolic: below the scaling threshold (beyond it the factors are divided by cosh).
+    // Circular: t r far from overflowing.
+    const double limit = this->LaneKind[i] == OrbitPartKind::Hyperbolic
+      ? kExpScalingThreshold
+      : 0x1p60;
+    if (this->LaneKind[i] != OrbitPartKind::Zero && !(x <= limit))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 Even Orbit::versor(double t) const
+{
+  Even k;
+  this->versors(&t, 1, &k);
+  return k;
+}
+
+void Orbit::versors(const double* times, std::size_t count, Even* out) const
+{
+  constexpr std::size_t L = kernel::kLanes;
+  const LaneParts parts{ { this->RateHigh[0], this->RateHigh[1] },
+    { this->RateLow[0], this->RateLow[1] }, { this->LaneKind[0], this->LaneKind[1] },
+    { this->LaneSquares[0], this->LaneSquares[1] }, this->LaneSquareDifference };
+  const kernel::SinCosBlock sinCos = this->LaneForm ? kernel::activeSinCosBlock() : nullptr;
+  // A bound on a lane's largest component: at most 2^63 (finite), withinRange would return the
+  // versor unchanged, so it is not called (a tenth of the update with one seed).
+  const double largestW = this->W.maxAbs(), largestB = this->B.maxAbs(),
+               largestWB = this->WB.maxAbs();
+  for (std::size_t first = 0; first < count; first += L)
+  {
+    const std::size_t n = std::min(L, count - first);
+    alignas(64) double t[L] = {}, scalar[L], coefW[L], coefB[L], coefWB[L];
+    bool lane[L] = {};
+    bool any = false;
+    for (std::size_t l = 0; l < n; ++l)
+    {
+      lane[l] = this->inLanes(times[first + l]);
+      t[l] = lane[l] ? times[first + l] : 0.0; // the other lanes' arithmetic stays finite
+      any = any || lane[l];
+    }
+    if (any)
+    {
+      laneCoefficients(parts, sinCos, t, scalar, coefW, coefB, coefWB);
+    }
+    for (std::size_t l = 0; l < n; ++l)
+    {
+      if (!lane[l])
+      {
+        out[first + l] = this->extendedVersor(times[first + l]);
+        continue;
+      }
+      Even k;
+      k.scalar = scalar[l];
+      k.quadvector = this->W * coefW[l];
+      k.bivector = this->B * coefB[l] + this->WB * coefWB[l];
+      const double bound = std::fabs(scalar[l]) + std::fabs(coefW[l]) * largestW +
+        std::fabs(coefB[l]) * largestB + std::fabs(coefWB[l]) * largestWB;
+      out[first + l] = bound <= 0x1p63 ? k : withinRange(k);
+    }
+  }
+}
+
+Even Orbit::extendedVersor(double t) const
 {
   if (!this->Problem.empty() || !std::isfinite(t))
   {

@@ -87,6 +87,10 @@ using MapBlockJets = void (*)(const FieldArgs& args,
 /// bivectors, component-major (bivectors[c * kLanes + l]): the kernel's generator loop for the
 /// generator tree's near field (GeneratorTree.cpp), which sums parts of the generators.
 using AddFieldBlock = void (*)(const FieldArgs& args, const double* xyz, double* bivectors);
+/// cos and sin of kLanes angles (hyperbolic: cosh and sinh), the elementary functions that
+/// map() calls (LaneMath.h) on every lane: cosines[l] and sines[l] of angles[l]. The conformal
+/// orbit's closed form at eight times at once (Orbit::versors).
+using SinCosBlock = void (*)(bool hyperbolic, const double* angles, double* cosines, double* sines);
 /// Directions per lane of MapBlockDirectional.
 constexpr int kDirections = 2;
 
@@ -131,6 +135,7 @@ void mapBlockJacobian(const FieldArgs&, const double*, double*, double*, std::ui
 void mapBlockDirectional(
   const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
 void addFieldBlock(const FieldArgs&, const double*, double*);
+void sinCosBlock(bool, const double*, double*, double*);
 int mapDisplacedBlock(
   const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
 }
@@ -143,6 +148,7 @@ void mapBlockJacobian(const FieldArgs&, const double*, double*, double*, std::ui
 void mapBlockDirectional(
   const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
 void addFieldBlock(const FieldArgs&, const double*, double*);
+void sinCosBlock(bool, const double*, double*, double*);
 int mapDisplacedBlock(
   const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
 }
@@ -160,6 +166,7 @@ void mapBlockJets(const FieldArgs&, const double*, const double*, double*, std::
 void mapBlockDirectional(
   const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
 void addFieldBlock(const FieldArgs&, const double*, double*);
+void sinCosBlock(bool, const double*, double*, double*);
 int mapDisplacedBlock(
   const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
 }

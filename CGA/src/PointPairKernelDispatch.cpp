@@ -21,6 +21,7 @@ struct Candidate
   MapBlockJets blockJets; // null: none (mapJetsByExponential's lane-by-lane loop)
   MapBlockDirectional blockDirectional;
   AddFieldBlock addField;
+  SinCosBlock sinCos;
   MapDisplacedBlock displacedBlock;
   MapDisplacedWideBlock displacedWideBlock; // null: none
   bool (*supported)();
@@ -47,14 +48,14 @@ bool hasAvx512()
 // Narrowest first.
 const Candidate kCandidates[] = {
   { "baseline", &baseline::mapBlock, &baseline::mapBlockBy, &baseline::mapBlockJacobian, nullptr,
-    &baseline::mapBlockDirectional, &baseline::addFieldBlock, &baseline::mapDisplacedBlock,
+    &baseline::mapBlockDirectional, &baseline::addFieldBlock, &baseline::sinCosBlock, &baseline::mapDisplacedBlock,
     nullptr, &always },
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
   { "avx2", &avx2::mapBlock, &avx2::mapBlockBy, &avx2::mapBlockJacobian, nullptr,
-    &avx2::mapBlockDirectional, &avx2::addFieldBlock, &avx2::mapDisplacedBlock, nullptr,
+    &avx2::mapBlockDirectional, &avx2::addFieldBlock, &avx2::sinCosBlock, &avx2::mapDisplacedBlock, nullptr,
     &hasAvx2 },
   { "avx512", &avx512::mapBlock, &avx512::mapBlockBy, &avx512::mapBlockJacobian, &avx512::mapBlockJets,
-    &avx512::mapBlockDirectional, &avx512::addFieldBlock, &avx512::mapDisplacedBlock,
+    &avx512::mapBlockDirectional, &avx512::addFieldBlock, &avx512::sinCosBlock, &avx512::mapDisplacedBlock,
     &avx512wide::mapDisplacedBlock, &hasAvx512 },
 #endif
 };
@@ -137,6 +138,11 @@ MapDisplacedWideBlock activeMapDisplacedWideBlock()
 AddFieldBlock activeAddFieldBlock()
 {
   return kCandidates[choice().load(std::memory_order_relaxed)].addField;
+}
+
+SinCosBlock activeSinCosBlock()
+{
+  return kCandidates[choice().load(std::memory_order_relaxed)].sinCos;
 }
 
 void activeFieldBivector(const FieldArgs& args, const double* p, double scale, double* b)

@@ -17,6 +17,7 @@ MapBlockJacobian activeMapBlockJacobian();
 MapBlockJets activeMapBlockJets();
 MapBlockDirectional activeMapBlockDirectional();
 AddFieldBlock activeAddFieldBlock();
+SinCosBlock activeSinCosBlock();
 /// b = scale B(p) of one point p (3 doubles) by the active kernel's generator loop: the bits of
 /// core::fieldBivector for double (its fused multiply-adds are correctly rounded), but on the
 /// FMA instruction where the CPU has one, not a call to libm's fma per term as the pointwise

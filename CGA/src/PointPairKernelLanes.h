@@ -475,6 +475,23 @@ void addFieldBlock(const FieldArgs& args, const double* xyz, double* bivectors)
     toLanes(sum + b[c], bivectors + c * L);
   }
 }
+void sinCosBlock(bool hyperbolic, const double* angles, double* cosines, double* sines)
+{
+  LaneVector x, c, s;
+  fromLanes(angles, x);
+  if (hyperbolic)
+  {
+    c = laneCosh(x);
+    s = laneSinh(x);
+  }
+  else
+  {
+    laneSinCos(x, s, c);
+  }
+  toLanes(c, cosines);
+  toLanes(s, sines);
+}
+
 void mapBlockBy(const FieldArgs& args, double* bivectors, const double* xyz, double* image,
   std::uint8_t* mapped)
 {

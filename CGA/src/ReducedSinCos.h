@@ -1,7 +1,8 @@
 // Internal: sin and cos of a long double angle, its argument reduced by π/2 here (Cody and Waite:
 // π/2 in three parts) for |x| <= 2^30, glibc's sincosl for the rest. glibc reduces every 80-bit
 // argument beyond π/4 with its Payne–Hanek kernel (__kernel_rem_pio2), which was 10 % of the
-// orbit source's update (Orbit::versor's angles t r); SLEEF has no long double functions.
+// orbit source's update (the angles t r of Orbit's extended form); SLEEF has no long double
+// functions.
 //
 // Error: P1 and P2 hold 33 bits of π/2 each, so n P1 and n P2 are exact for |n| <= 2^31, and
 // x - n P1 is exact (Sterbenz); P3 leaves π/2's error below 1.5e-41 relative. The reduced
@@ -104,7 +105,7 @@ inline void reducedSinCos(long double x, long double& s, long double& c)
 #if LDBL_MANT_DIG == 64
   // n mod 4 from the shifted sum's significand (the x87 format's first 8 bytes), whose integer is
   // 1.5 2^63 + n: the conversion to an integer switches the x87 rounding mode twice (fldcw), which
-  // cost a quarter of Orbit::versor.
+  // cost a quarter of Orbit's extended form.
   std::uint64_t significand;
   std::memcpy(&significand, &shifted, sizeof significand);
   const int quadrant = static_cast<int>(significand & 3);
