@@ -104,13 +104,16 @@ TEST(Orbit, PartsAreTheInvariantDecomposition)
     ASSERT_TRUE(orbit.problem().empty());
     EXPECT_TRUE(orbit.hasParts());
     // The squares from the extended-precision invariants equal the double decomposition's.
-    EXPECT_NEAR(orbit.part(0).square, split.firstSquare, 1e-12 * std::max(1.0, std::fabs(split.firstSquare)));
-    EXPECT_NEAR(orbit.part(1).square, split.secondSquare, 1e-12 * std::max(1.0, std::fabs(split.secondSquare)));
+    EXPECT_NEAR(orbit.part(0).square, split.firstSquare,
+      1e-12 * std::max(1.0, std::fabs(split.firstSquare)));
+    EXPECT_NEAR(orbit.part(1).square, split.secondSquare,
+      1e-12 * std::max(1.0, std::fabs(split.secondSquare)));
     EXPECT_LE(relativeDifference(orbit.part(0).blade + orbit.part(1).blade, b), 1e-12);
     for (int i = 0; i < 2; ++i)
     {
       const Even square = orbit.part(i).blade * orbit.part(i).blade;
-      EXPECT_NEAR(square.scalar, orbit.part(i).square, 1e-10 * std::max(1.0, std::fabs(orbit.part(i).square)));
+      EXPECT_NEAR(square.scalar, orbit.part(i).square,
+        1e-10 * std::max(1.0, std::fabs(orbit.part(i).square)));
     }
   }
 }
@@ -135,7 +138,9 @@ TEST(Orbit, ClosedFormMatchesTheMatrixExponentialAndTheSeries)
         EXPECT_LE(actionError(orbit, b, t), 1e-12) << "scale " << scale << " t " << t;
         if (std::fabs(t) * scale <= 2.0)
         {
-          EXPECT_LE(relativeDifference(toMultivector(orbit.versor(t)), expSeries(toMultivector(t * b))), 1e-12)
+          EXPECT_LE(
+            relativeDifference(toMultivector(orbit.versor(t)), expSeries(toMultivector(t * b))),
+            1e-12)
             << "scale " << scale << " t " << t;
         }
       }
@@ -151,7 +156,8 @@ TEST(Orbit, ClosedFormStaysExactForLongTimes)
   Random random(73);
   for (int n = 0; n < 40; ++n)
   {
-    const Bivector b = dyadic(rotations(random, random.uniform(0.2, 1.0), random.uniform(0.2, 1.0)));
+    const Bivector b =
+      dyadic(rotations(random, random.uniform(0.2, 1.0), random.uniform(0.2, 1.0)));
     const Orbit orbit(b);
     ASSERT_EQ(orbit.part(0).kind, OrbitPartKind::Elliptic);
     ASSERT_EQ(orbit.part(1).kind, OrbitPartKind::Elliptic);
@@ -167,7 +173,8 @@ TEST(Orbit, ClosedFormStaysExactForLongTimes)
 TEST(Orbit, PeriodOfRationalRatesIsFoundAndClosesTheOrbit)
 {
   Random random(74);
-  const int ratios[][2] = { { 1, 2 }, { 2, 3 }, { 3, 5 }, { 5, 8 }, { 7, 4 }, { 13, 21 }, { 1, 1 } };
+  const int ratios[][2] = { { 1, 2 }, { 2, 3 }, { 3, 5 }, { 5, 8 }, { 7, 4 }, { 13, 21 },
+    { 1, 1 } };
   for (const auto& ratio : ratios)
   {
     const double unit = random.uniform(0.3, 1.5);
@@ -237,7 +244,8 @@ TEST(Orbit, DegenerateBivectors)
   ASSERT_TRUE(boost.point({ 0, 1, 0 }, 200.0, early));
   ASSERT_TRUE(boost.point({ 0, 1, 0 }, 1e4, late));
   EXPECT_TRUE(isFinite(late));
-  EXPECT_LT(std::min(cgatest::distance(late, { 1, 0, 0 }), cgatest::distance(late, { -1, 0, 0 })), 1e-12);
+  EXPECT_LT(
+    std::min(cgatest::distance(late, { 1, 0, 0 }), cgatest::distance(late, { -1, 0, 0 })), 1e-12);
   EXPECT_LT(cgatest::distance(early, late), 1e-12);
 
   // Equal invariants: an isoclinic double rotation has no unique split; it is evaluated without
@@ -248,11 +256,12 @@ TEST(Orbit, DegenerateBivectors)
   for (int n = 0; n < 20; ++n)
   {
     const double rate = std::round(random.uniform(0.2, 1.2) * 16.0) / 16.0;
-    const Vec3 shift{ std::round(random.uniform(-8, 8)) / 8.0, std::round(random.uniform(-8, 8)) / 8.0,
-      std::round(random.uniform(-8, 8)) / 8.0 };
+    const Vec3 shift{ std::round(random.uniform(-8, 8)) / 8.0,
+      std::round(random.uniform(-8, 8)) / 8.0, std::round(random.uniform(-8, 8)) / 8.0 };
     const Multivector t = translator(shift);
     const Bivector isoclinic = toBivector(
-      (t * (rate * (basis2(blade::e1, blade::e2) + basis2(blade::e3, blade::ep))) * t.reverse()).grade(2));
+      (t * (rate * (basis2(blade::e1, blade::e2) + basis2(blade::e3, blade::ep))) * t.reverse())
+        .grade(2));
     const Orbit orbit(isoclinic);
     EXPECT_FALSE(orbit.hasParts());
     EXPECT_EQ(orbit.part(0).kind, OrbitPartKind::Elliptic);
@@ -291,8 +300,9 @@ std::vector<Bivector> everyBranch(Random& random)
 // hyperbolic angles, long times, and bad ones.
 std::vector<double> everyTime()
 {
-  std::vector<double> times = { 0.0, -0.0, 1e-3, -0.7, 1.9, std::numeric_limits<double>::quiet_NaN(),
-    40.0, -55.5, 1e4 + 0.25, 1e6, -3e9, 1e300, std::numeric_limits<double>::infinity() };
+  std::vector<double> times = { 0.0, -0.0, 1e-3, -0.7, 1.9,
+    std::numeric_limits<double>::quiet_NaN(), 40.0, -55.5, 1e4 + 0.25, 1e6, -3e9, 1e300,
+    std::numeric_limits<double>::infinity() };
   for (int i = 0; i < 24; ++i)
   {
     times.push_back(0.37 * i - 2.0);

@@ -151,16 +151,9 @@ Real larger(Real a, Real b)
 // error by a fused multiply-add, plus t times the low part: within 2^-104 |x|), cos and sin (or
 // cosh and sinh) of xh by the kernel's vector functions, then of xh + xl to first order in xl
 // (|xl| <= 2^-52 |x|: the second order is below 2^-104 x^2).
-struct LaneParts
-{
-  double rateHigh[2], rateLow[2];
-  OrbitPartKind kind[2]; // Zero: a zero rate, factors 1 and t
-  double square[2], difference;
-};
-
 BOOSTED_LANE_CLONES
-void laneCoefficients(const LaneParts& parts, kernel::SinCosBlock sinCos, const double* times,
-  double* scalar, double* coefW, double* coefB, double* coefWB)
+void laneCoefficients(const detail::OrbitLanes& lanes, kernel::SinCosBlock sinCos,
+  const double* times, double* scalar, double* coefW, double* coefB, double* coefWB)
 {
   using detail::Eight;
   static_assert(sizeof(Eight) == kernel::kLanes * sizeof(double), "one Eight per block");
@@ -169,7 +162,7 @@ void laneCoefficients(const LaneParts& parts, kernel::SinCosBlock sinCos, const 
   Eight c[2], sHat[2];
   for (int i = 0; i < 2; ++i)
   {
-    if (parts.kind[i] == OrbitPartKind::Zero)
+    if (lanes.kind[i] == OrbitPartKind::Zero)
     {
       c[i] = Eight{} + 1.0;
       sHat[i] = t;
@@ -179,10 +172,10 @@ void laneCoefficients(const LaneParts& parts, kernel::SinCosBlock sinCos, const 
       odd[kernel::kLanes];
     for (int l = 0; l < kernel::kLanes; ++l)
     {
-      high[l] = times[l] * parts.rateHigh[i];
-      low[l] = __builtin_fma(times[l], parts.rateHigh[i], -high[l]) + times[l] * parts.rateLow[i];
+      high[l] = times[l] * lanes.rateHigh[i];
+      low[l] = __builtin_fma(times[l], lanes.rateHigh[i], -high[l]) + times[l] * lanes.rateLow[i];
     }
-    const bool hyperbolic = parts.kind[i] == OrbitPartKind::Hyperbolic;
+    const bool hyperbolic = lanes.kind[i] == OrbitPartKind::Hyperbolic;
     sinCos(hyperbolic, high, even, odd);
     Eight xl, ev, od;
     std::memcpy(&xl, low, sizeof xl);
@@ -191,12 +184,13 @@ void laneCoefficients(const LaneParts& parts, kernel::SinCosBlock sinCos, const 
     // cos(xh + xl) = cos xh - xl sin xh, cosh(xh + xl) = cosh xh + xl sinh xh; the odd ones
     // sin xh + xl cos xh and sinh xh + xl cosh xh.
     c[i] = hyperbolic ? ev + xl * od : ev - xl * od;
-    sHat[i] = (od + xl * ev) / parts.rateHigh[i];
+    sHat[i] = (od + xl * ev) / lanes.rateHigh[i];
   }
   const Eight s = c[0] * c[1];
   const Eight w = 0.5 * sHat[0] * sHat[1];
-  const Eight b = (parts.square[0] * sHat[0] * c[1] - parts.square[1] * sHat[1] * c[0]) / parts.difference;
-  const Eight wb = 0.5 * (c[0] * sHat[1] - c[1] * sHat[0]) / parts.difference;
+  const Eight b =
+    (lanes.square[0] * sHat[0] * c[1] - lanes.square[1] * sHat[1] * c[0]) / lanes.difference;
+  const Eight wb = 0.5 * (c[0] * sHat[1] - c[1] * sHat[0]) / lanes.difference;
   std::memcpy(scalar, &s, sizeof s);
   std::memcpy(coefW, &w, sizeof w);
   std::memcpy(coefB, &b, sizeof b);
@@ -358,39 +352,42 @@ void Orbit::prepareLanes()
   // large against l1 - l2, as a drift's): the coefficient of <W B>_2 would amplify the factors'
   // rounding by |W B| / (|B| |l1 - l2|).
   const Real scale = static_cast<Real>(this->B.maxAbs());
-  this->LaneForm = this->Problem.empty() && !this->Identity && d != 0.0L &&
+  detail::OrbitLanes& lanes = this->Lanes;
+  lanes.form = this->Problem.empty() && !this->Identity && d != 0.0L &&
     std::fabs(d) >= 0.25L * larger(std::fabs(l1), std::fabs(l2)) &&
     std::fabs(d) >= 0.25L * scale * scale;
   for (int i = 0; i < 2; ++i)
   {
     const Real rate = this->Parts[i].rate;
-    this->RateHigh[i] = static_cast<double>(rate);
-    this->RateLow[i] = static_cast<double>(rate - static_cast<Real>(this->RateHigh[i]));
-    this->LaneKind[i] = rate == 0.0L ? OrbitPartKind::Zero
-      : this->Squares[i] < 0.0L      ? OrbitPartKind::Elliptic
-                                     : OrbitPartKind::Hyperbolic;
-    this->LaneSquares[i] = static_cast<double>(this->Squares[i]);
+    lanes.rateHigh[i] = static_cast<double>(rate);
+    lanes.rateLow[i] = static_cast<double>(rate - static_cast<Real>(lanes.rateHigh[i]));
+    lanes.kind[i] = rate == 0.0L ? OrbitPartKind::Zero
+      : this->Squares[i] < 0.0L   ? OrbitPartKind::Elliptic
+                                  : OrbitPartKind::Hyperbolic;
+    lanes.square[i] = static_cast<double>(this->Squares[i]);
   }
-  this->LaneSquareDifference = static_cast<double>(d);
+  lanes.difference = static_cast<double>(d);
+  lanes.largestW = this->W.maxAbs();
+  lanes.largestB = this->B.maxAbs();
+  lanes.largestWB = this->WB.maxAbs();
 }
 
 bool Orbit::inLanes(double t) const
 {
   // Small angles too: there the coefficients' roundings stay a few units of 2^-53 of the versor
   // (measured against the extended form's power series) and of its part that moves points.
-  if (!this->LaneForm || !std::isfinite(t))
+  if (!this->Lanes.form || !std::isfinite(t))
   {
     return false;
   }
   for (int i = 0; i < 2; ++i)
   {
-    const double x = std::fabs(t) * this->RateHigh[i];
+    const double x = std::fabs(t) * this->Lanes.rateHigh[i];
     // Hyperbolic: below the scaling threshold (beyond it the factors are divided by cosh).
     // Circular: t r far from overflowing.
-    const double limit = this->LaneKind[i] == OrbitPartKind::Hyperbolic
-      ? kExpScalingThreshold
-      : 0x1p60;
-    if (this->LaneKind[i] != OrbitPartKind::Zero && !(x <= limit))
+    const OrbitPartKind kind = this->Lanes.kind[i];
+    const double limit = kind == OrbitPartKind::Hyperbolic ? kExpScalingThreshold : 0x1p60;
+    if (kind != OrbitPartKind::Zero && !(x <= limit))
     {
       return false;
     }
@@ -408,14 +405,8 @@ Even Orbit::versor(double t) const
 void Orbit::versors(const double* times, std::size_t count, Even* out) const
 {
   constexpr std::size_t L = kernel::kLanes;
-  const LaneParts parts{ { this->RateHigh[0], this->RateHigh[1] },
-    { this->RateLow[0], this->RateLow[1] }, { this->LaneKind[0], this->LaneKind[1] },
-    { this->LaneSquares[0], this->LaneSquares[1] }, this->LaneSquareDifference };
-  const kernel::SinCosBlock sinCos = this->LaneForm ? kernel::activeSinCosBlock() : nullptr;
-  // A bound on a lane's largest component: at most 2^63 (finite), withinRange would return the
-  // versor unchanged, so it is not called (a tenth of the update with one seed).
-  const double largestW = this->W.maxAbs(), largestB = this->B.maxAbs(),
-               largestWB = this->WB.maxAbs();
+  const detail::OrbitLanes& lanes = this->Lanes;
+  const kernel::SinCosBlock sinCos = lanes.form ? kernel::activeSinCosBlock() : nullptr;
   for (std::size_t first = 0; first < count; first += L)
   {
     const std::size_t n = std::min(L, count - first);
@@ -430,7 +421,7 @@ void Orbit::versors(const double* times, std::size_t count, Even* out) const
     }
     if (any)
     {
-      laneCoefficients(parts, sinCos, t, scalar, coefW, coefB, coefWB);
+      laneCoefficients(lanes, sinCos, t, scalar, coefW, coefB, coefWB);
     }
     for (std::size_t l = 0; l < n; ++l)
     {
@@ -443,8 +434,10 @@ void Orbit::versors(const double* times, std::size_t count, Even* out) const
       k.scalar = scalar[l];
       k.quadvector = this->W * coefW[l];
       k.bivector = this->B * coefB[l] + this->WB * coefWB[l];
-      const double bound = std::fabs(scalar[l]) + std::fabs(coefW[l]) * largestW +
-        std::fabs(coefB[l]) * largestB + std::fabs(coefWB[l]) * largestWB;
+      // A bound on the largest component: at most 2^63 (finite), withinRange would return the
+      // versor unchanged, so it is not called (a tenth of the update with one seed).
+      const double bound = std::fabs(scalar[l]) + std::fabs(coefW[l]) * lanes.largestW +
+        std::fabs(coefB[l]) * lanes.largestB + std::fabs(coefWB[l]) * lanes.largestWB;
       out[first + l] = bound <= 0x1p63 ? k : withinRange(k);
     }
   }

@@ -48,15 +48,16 @@ bool hasAvx512()
 // Narrowest first.
 const Candidate kCandidates[] = {
   { "baseline", &baseline::mapBlock, &baseline::mapBlockBy, &baseline::mapBlockJacobian, nullptr,
-    &baseline::mapBlockDirectional, &baseline::addFieldBlock, &baseline::sinCosBlock, &baseline::mapDisplacedBlock,
-    nullptr, &always },
+    &baseline::mapBlockDirectional, &baseline::addFieldBlock, &baseline::sinCosBlock,
+    &baseline::mapDisplacedBlock, nullptr, &always },
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
   { "avx2", &avx2::mapBlock, &avx2::mapBlockBy, &avx2::mapBlockJacobian, nullptr,
-    &avx2::mapBlockDirectional, &avx2::addFieldBlock, &avx2::sinCosBlock, &avx2::mapDisplacedBlock, nullptr,
-    &hasAvx2 },
-  { "avx512", &avx512::mapBlock, &avx512::mapBlockBy, &avx512::mapBlockJacobian, &avx512::mapBlockJets,
-    &avx512::mapBlockDirectional, &avx512::addFieldBlock, &avx512::sinCosBlock, &avx512::mapDisplacedBlock,
-    &avx512wide::mapDisplacedBlock, &hasAvx512 },
+    &avx2::mapBlockDirectional, &avx2::addFieldBlock, &avx2::sinCosBlock,
+    &avx2::mapDisplacedBlock, nullptr, &hasAvx2 },
+  { "avx512", &avx512::mapBlock, &avx512::mapBlockBy, &avx512::mapBlockJacobian,
+    &avx512::mapBlockJets, &avx512::mapBlockDirectional, &avx512::addFieldBlock,
+    &avx512::sinCosBlock, &avx512::mapDisplacedBlock, &avx512wide::mapDisplacedBlock,
+    &hasAvx512 },
 #endif
 };
 constexpr int kCandidateCount = sizeof(kCandidates) / sizeof(kCandidates[0]);

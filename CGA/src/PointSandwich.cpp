@@ -41,17 +41,34 @@ bool sandwichPoint(const Even& k, Vec3 p, Vec3& out)
 
 namespace
 {
+// PointMaps' layout: the maps in groups of kLanes, entry e of lane l of group g at
+// [kGroupEntries g + kLanes e + l].
+constexpr std::size_t kLanes = sizeof(detail::Eight) / sizeof(double);
+constexpr std::size_t kEntries = ConformalVector::Count * ConformalVector::Count;
+constexpr std::size_t kGroupEntries = kEntries * kLanes;
+
+std::size_t groups(std::size_t count)
+{
+  return (count + kLanes - 1) / kLanes;
+}
+
+// Where entry e of map i is.
+std::size_t entryIndex(std::size_t i, std::size_t e)
+{
+  return kGroupEntries * (i / kLanes) + kLanes * e + i % kLanes;
+}
+
 // Each lane's versor's sandwich of basis vector j (lane l: versors[min(l, count - 1)]), in
 // sandwichGrade1's operations and order, stored as entries (i, j) of eight maps side by side
-// (PointMaps' layout: entry e of lane l at [8 e + l]); finite[l] whether all of lane l's are
-// finite (l < min(count, 8)).
+// (PointMaps' layout: entry e of lane l at [kLanes e + l]); finite[l] whether all of lane l's
+// are finite (l < min(count, kLanes)).
 BOOSTED_LANE_CLONES
 void groupImages(const Even* versors, std::size_t count, double* entries, char* finite)
 {
   using detail::Eight;
   constexpr int n = ConformalVector::Count;
   Eight lanes[Even::kCount];
-  for (int l = 0; l < 8; ++l)
+  for (std::size_t l = 0; l < kLanes; ++l)
   {
     const detail::EvenArray packed = detail::pack(versors[std::min<std::size_t>(l, count - 1)]);
     for (std::size_t s = 0; s < packed.size(); ++s)
@@ -72,11 +89,11 @@ void groupImages(const Even* versors, std::size_t count, double* entries, char* 
     core::sandwichEvenInlined(lanes, basis, images);
     for (int i = 0; i < n; ++i)
     {
-      std::memcpy(entries + 8 * (i * n + j), &images[i], sizeof images[i]);
+      std::memcpy(entries + kLanes * (i * n + j), &images[i], sizeof images[i]);
       allFinite &= detail::finiteLanes(images[i]);
     }
   }
-  for (std::size_t l = 0; l < std::min<std::size_t>(count, 8); ++l)
+  for (std::size_t l = 0; l < std::min(count, kLanes); ++l)
   {
     finite[l] = allFinite[l] != 0;
   }
@@ -86,12 +103,12 @@ void groupImages(const Even* versors, std::size_t count, double* entries, char* 
 PointMap::PointMap(const Even& k)
 {
   // One versor in every lane: lane 0 holds its map.
-  double entries[25 * 8];
+  double entries[kGroupEntries];
   char finite[1];
   groupImages(&k, 1, entries, finite);
-  for (std::size_t e = 0; e < 25; ++e)
+  for (std::size_t e = 0; e < kEntries; ++e)
   {
-    this->Matrix[e] = entries[8 * e];
+    this->Matrix[e] = entries[entryIndex(0, e)];
   }
 }
 
@@ -117,7 +134,7 @@ ConformalVector PointMap::apply(const ConformalVector& x) const
 
 PointMaps::PointMaps(const PointMap* maps, std::size_t count)
   : Count(count)
-  , Entries(25 * 8 * ((count + 7) / 8))
+  , Entries(kGroupEntries * groups(count))
   , Finite(count)
 {
   for (std::size_t i = 0; i < count; ++i)
@@ -126,34 +143,34 @@ PointMaps::PointMaps(const PointMap* maps, std::size_t count)
     this->Finite[i] = std::all_of(m.begin(), m.end(), [](double v) { return std::isfinite(v); });
   }
   // A partial group repeats its last map.
-  for (std::size_t i = 0; i < 8 * ((count + 7) / 8); ++i)
+  for (std::size_t i = 0; i < kLanes * groups(count); ++i)
   {
     const std::array<double, 25>& m = maps[std::min(i, count - 1)].matrix();
-    for (std::size_t e = 0; e < 25; ++e)
+    for (std::size_t e = 0; e < kEntries; ++e)
     {
-      this->Entries[25 * 8 * (i / 8) + 8 * e + i % 8] = m[e];
+      this->Entries[entryIndex(i, e)] = m[e];
     }
   }
 }
 
 PointMaps::PointMaps(const Even* versors, std::size_t count)
   : Count(count)
-  , Entries(25 * 8 * ((count + 7) / 8))
+  , Entries(kGroupEntries * groups(count))
   , Finite(count)
 {
-  for (std::size_t first = 0; first < count; first += 8)
+  for (std::size_t first = 0; first < count; first += kLanes)
   {
-    groupImages(
-      versors + first, count - first, this->Entries.data() + 25 * first, this->Finite.data() + first);
+    groupImages(versors + first, count - first, this->Entries.data() + entryIndex(first, 0),
+      this->Finite.data() + first);
   }
 }
 
 PointMap PointMaps::map(std::size_t i) const
 {
   PointMap m;
-  for (std::size_t e = 0; e < 25; ++e)
+  for (std::size_t e = 0; e < kEntries; ++e)
   {
-    m.Matrix[e] = this->Entries[25 * 8 * (i / 8) + 8 * e + i % 8];
+    m.Matrix[e] = this->Entries[entryIndex(i, e)];
   }
   return m;
 }
@@ -164,19 +181,19 @@ void PointMaps::apply(Vec3 p, Vec3* out, bool* mapped) const
 {
   using detail::Eight;
   const ConformalVector x = ConformalVector::point(p);
-  for (std::size_t first = 0; first < this->Count; first += 8)
+  for (std::size_t first = 0; first < this->Count; first += kLanes)
   {
-    const double* entries = this->Entries.data() + 25 * first;
+    const double* entries = this->Entries.data() + entryIndex(first, 0);
     auto entry = [entries](int i, int j) {
       Eight m;
-      std::memcpy(&m, entries + 8 * (i * ConformalVector::Count + j), sizeof m);
+      std::memcpy(&m, entries + kLanes * (i * ConformalVector::Count + j), sizeof m);
       return m;
     };
     Eight r[ConformalVector::Count];
     detail::conformalProduct(entry, x.c.data(), r);
     Eight image[3];
     const auto ok = detail::normalizedLanes(r, image);
-    const int lanes = static_cast<int>(std::min<std::size_t>(8, this->Count - first));
+    const int lanes = static_cast<int>(std::min(kLanes, this->Count - first));
     for (int l = 0; l < lanes; ++l)
     {
       const std::size_t i = first + static_cast<std::size_t>(l);

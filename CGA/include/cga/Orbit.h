@@ -51,6 +51,23 @@ struct OrbitPart
   long double rate = 0.0L;
 };
 
+namespace detail
+{
+/// What Orbit::versors needs of B at every call (Orbit.cpp), made once: whether B takes the
+/// lanes' closed form; per part its rate as a sum high + low of two doubles, whether its factors
+/// are circular (cos, sin), hyperbolic (cosh, sinh) or those of a zero rate (1, t) and its
+/// square; the squares' difference; and the largest coefficients of W, B and <W B>_2, which
+/// bound a versor's largest component.
+struct OrbitLanes
+{
+  bool form = false;
+  double rateHigh[2] = { 0.0, 0.0 }, rateLow[2] = { 0.0, 0.0 };
+  OrbitPartKind kind[2] = { OrbitPartKind::Zero, OrbitPartKind::Zero };
+  double square[2] = { 0.0, 0.0 }, difference = 0.0;
+  double largestW = 0.0, largestB = 0.0, largestWB = 0.0;
+};
+} // namespace detail
+
 class Orbit
 {
 public:
@@ -124,12 +141,6 @@ private:
   double Period = 0.0;
   int Windings[2] = { 0, 0 };
   std::string Problem;
-  /// The lanes' closed form (Orbit::versors): whether B takes it, and per part its rate as a sum
-  /// high + low of two doubles and whether its factors are circular (cos, sin), hyperbolic (cosh,
-  /// sinh) or those of a zero rate (1, t).
-  bool LaneForm = false;
-  double RateHigh[2] = { 0.0, 0.0 }, RateLow[2] = { 0.0, 0.0 };
-  OrbitPartKind LaneKind[2] = { OrbitPartKind::Zero, OrbitPartKind::Zero };
-  double LaneSquares[2] = { 0.0, 0.0 }, LaneSquareDifference = 0.0;
+  detail::OrbitLanes Lanes;
 };
 } // namespace cga
