@@ -290,7 +290,8 @@ bool sameBits(Vec3 a, Vec3 b)
 // a time, bit for bit (member by member): trialFamily's families at 1, 1e-120, 1e-78 (where the
 // area element's square is subnormal without the rescaling) and 1e120 (first derivatives
 // rescaled: the lane takes surfaceCurvature itself), trialSamples and second derivatives of 1e200
-// (rescaled) and 0, in runs of every length at every offset.
+// (the radius beyond the lanes' range), 2^120 and 2^300 (where surfaceCurvature rescales them:
+// the lane takes it too) and 0, in runs of every length at every offset.
 TEST(BoostedCircleDerivatives, CurvaturesAreTheOneSampleCodeBitForBit)
 {
   cgatest::Random random(1308);
@@ -304,6 +305,8 @@ TEST(BoostedCircleDerivatives, CurvaturesAreTheOneSampleCodeBitForBit)
       std::vector<BoostedCircle::CircleSample> samples = trialSamples(random, family);
       samples[7].second = 1e200 * samples[7].second;
       samples[9].second = Vec3{};
+      samples[12].second = 0x1p120 * samples[12].second;
+      samples[13].second = 0x1p300 * samples[13].second;
       forEveryRun(samples.size(), [&](std::size_t offset, std::size_t count) {
         const Vec3 untouched{ 42.0, 42.0, 42.0 };
         std::vector<Vec3> points(count + 1, untouched);

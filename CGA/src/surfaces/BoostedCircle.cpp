@@ -391,7 +391,9 @@ void BoostedCircleRow::curvatures(const BoostedCircle::CircleSample* samples, st
     FirstFormLanes f;
     firstFormLanes(d.du, d.dv, f);
     // The second derivatives: finite, and their largest component 0 or in [2^-100, 2^100]
-    // (scaleExponent 0: no rescaling).
+    // (scaleExponent 0: no rescaling). Outside, surfaceCurvature rescales them by a power of two,
+    // which is exact: its bits could differ from these only where a product here is subnormal,
+    // but the lane takes surfaceCurvature itself.
     Eight second = Eight{};
     EightMask finiteSecond = Eight{} == Eight{}; // all ones
     for (const Eight* v : { d.duu, d.duv, d.dvv })
