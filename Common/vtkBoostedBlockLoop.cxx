@@ -39,6 +39,19 @@ std::vector<vtkIdType> vtkBoostedBlockLoop::ChunkBounds(
   return bounds;
 }
 
+std::vector<vtkIdType> vtkBoostedBlockLoop::ShareBounds(
+  vtkIdType first, vtkIdType last, int threads)
+{
+  // The first (last - first) % threads shares take one item more.
+  const vtkIdType items = last - first, each = items / threads, more = items % threads;
+  std::vector<vtkIdType> bounds{ first };
+  for (vtkIdType s = 1; s <= threads; ++s)
+  {
+    bounds.push_back(first + each * s + std::min(s, more));
+  }
+  return bounds;
+}
+
 void vtkBoostedBlockLoop::RunBlock(vtkIdType begin, vtkIdType end, vtkIdType samplesPerItem,
   const std::function<void(vtkIdType, vtkIdType)>& work)
 {
@@ -52,17 +65,34 @@ void vtkBoostedBlockLoop::RunBlock(vtkIdType begin, vtkIdType end, vtkIdType sam
     return;
   }
   // One job per thread of the project's pool (vtkBoostedThreadPool: threads kept from one block
-  // and one update to the next), which claims the chunks in turn from a shared counter.
-  const std::vector<vtkIdType> bounds = ChunkBounds(begin, end, samplesPerItem, threads);
-  const vtkIdType chunks = static_cast<vtkIdType>(bounds.size()) - 1;
-  std::atomic<vtkIdType> nextChunk{ 0 };
+  // and one update to the next). Pool thread i claims share i's chunks first, then the next
+  // shares' from their counters, as their owners do, so that a held-up thread holds up little.
+  const std::vector<vtkIdType> shares = ShareBounds(begin, end, threads);
+  std::vector<std::vector<vtkIdType>> bounds(static_cast<size_t>(threads));
+  for (int s = 0; s < threads; ++s)
+  {
+    bounds[s] = ChunkBounds(shares[s], shares[s + 1], samplesPerItem, 1);
+  }
+  struct alignas(64) Counter // one cache line each: the owners claim without sharing one
+  {
+    std::atomic<vtkIdType> Next{ 0 };
+  };
+  std::vector<Counter> nextChunk(static_cast<size_t>(threads));
   std::atomic<bool> outOfMemory{ false };
-  vtkBoostedThreadPool::Run(threads, [&work, &bounds, chunks, &nextChunk, &outOfMemory]() {
+  vtkBoostedThreadPool::Run(threads, [&work, &bounds, &nextChunk, &outOfMemory, threads]() {
     try
     {
-      for (vtkIdType chunk = nextChunk++; chunk < chunks && !outOfMemory; chunk = nextChunk++)
+      const int own = vtkBoostedThreadPool::ThreadIndex() % threads;
+      for (int k = 0; k < threads && !outOfMemory; ++k)
       {
-        work(bounds[chunk], bounds[chunk + 1]);
+        const int s = (own + k) % threads;
+        const std::vector<vtkIdType>& b = bounds[s];
+        const vtkIdType chunks = static_cast<vtkIdType>(b.size()) - 1;
+        for (vtkIdType chunk = nextChunk[s].Next++; chunk < chunks && !outOfMemory;
+             chunk = nextChunk[s].Next++)
+        {
+          work(b[chunk], b[chunk + 1]);
+        }
       }
     }
     catch (const std::bad_alloc&)

@@ -20,6 +20,8 @@ namespace
 {
 // True on the pool's threads: a Run inside a job runs on the job's thread.
 thread_local bool onPoolThread = false;
+// The pool thread's index (ThreadIndex), 0 on any other thread.
+thread_local int poolThreadIndex = 0;
 
 class Pool
 {
@@ -81,6 +83,7 @@ private:
   void Work(int index, std::uint64_t seen)
   {
     onPoolThread = true;
+    poolThreadIndex = index;
     std::unique_lock<std::mutex> lock(this->Mutex);
     for (;;)
     {
@@ -174,6 +177,11 @@ void vtkBoostedThreadPool::Run(int threads, const std::function<void()>& job)
   {
     job();
   }
+}
+
+int vtkBoostedThreadPool::ThreadIndex()
+{
+  return poolThreadIndex;
 }
 
 int vtkBoostedThreadPool::Threads()

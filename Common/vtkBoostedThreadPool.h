@@ -28,6 +28,10 @@ public:
 
   /// The pool's threads so far: the most that one Run has used (0 before the first).
   static int Threads();
+
+  /// The index of the pool thread that calls it, in [0, Threads()), 0 on any other thread. Pool
+  /// thread i stays the same thread from one Run to the next.
+  static int ThreadIndex();
 };
 
 #endif

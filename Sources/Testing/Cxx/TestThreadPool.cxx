@@ -3,8 +3,9 @@
 // the asked threads while the calling thread waits, a Run nested in a job or in a vtkSMPTools
 // parallel region and a Run while another thread runs the pool done on the calling thread, an
 // exception thrown again on the calling thread once every thread has returned, and a child
-// process made by fork() served by threads of its own; the block loop's one block (RunBlock) covers
-// every item once on those threads.
+// process made by fork() served by threads of its own; each pool thread keeps its index; the block
+// loop's one block (RunBlock) covers every item once on those threads, each starting with its own
+// share.
 #include "vtkBoostedBlockLoop.h"
 #include "vtkBoostedSurfaceSource.h"
 #include "vtkBoostedThreadPool.h"
@@ -15,6 +16,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <map>
 #include <mutex>
 #include <new>
 #include <set>
@@ -95,6 +97,71 @@ TEST(ThreadPool, TheBlockLoopKeepsItsThreadsFromOneUpdateToTheNext)
   EXPECT_EQ(threads.size(), 2u) << "60 blocks, two threads";
   EXPECT_EQ(threads.count(std::this_thread::get_id()), 0u);
   EXPECT_GE(vtkBoostedThreadPool::Threads(), 2);
+}
+
+// ThreadIndex: 0 on the calling thread; on the pool's threads their indices 0 ... n - 1, each
+// the same thread's from one Run to the next.
+TEST(ThreadPool, EachPoolThreadKeepsItsIndex)
+{
+  EXPECT_EQ(vtkBoostedThreadPool::ThreadIndex(), 0);
+  std::map<int, std::thread::id> threadOf;
+  for (int run = 0; run < 20; ++run)
+  {
+    std::mutex mutex;
+    std::map<int, std::thread::id> seen;
+    vtkBoostedThreadPool::Run(2, [&] {
+      const std::lock_guard<std::mutex> lock(mutex);
+      seen[vtkBoostedThreadPool::ThreadIndex()] = std::this_thread::get_id();
+    });
+    ASSERT_EQ(seen.size(), 2u) << "run " << run;
+    ASSERT_EQ(seen.begin()->first, 0);
+    ASSERT_EQ(seen.rbegin()->first, 1);
+    if (run == 0)
+    {
+      threadOf = seen;
+    }
+    EXPECT_EQ(seen, threadOf) << "run " << run;
+  }
+  EXPECT_EQ(vtkBoostedThreadPool::ThreadIndex(), 0);
+}
+
+// RunBlock on two threads: pool thread i starts with the first chunk of share i (ShareBounds),
+// whichever thread wakes first. The first chunk each thread runs waits until both have started
+// (or 10 s), so that neither can have finished its share and taken the other's first chunk.
+TEST(ThreadPool, EachThreadStartsWithItsOwnShareOfTheBlock)
+{
+  vtkSMPTools::SetBackend("STDThread");
+  vtkSMPTools::Initialize(2);
+  for (const vtkIdType count : { 2, 3, 4096, 65537, 300001 })
+  {
+    const std::vector<vtkIdType> shares = vtkBoostedBlockLoop::ShareBounds(5, 5 + count, 2);
+    std::mutex mutex;
+    std::map<int, vtkIdType> firstItem; // pool thread index -> first item of its first chunk
+    std::atomic<int> started{ 0 };
+    std::atomic<vtkIdType> covered{ 0 };
+    vtkBoostedBlockLoop::RunBlock(5, 5 + count, 1, [&](vtkIdType first, vtkIdType last) {
+      covered += last - first;
+      thread_local int lastCount = -1;
+      if (lastCount != static_cast<int>(count))
+      {
+        lastCount = static_cast<int>(count);
+        {
+          const std::lock_guard<std::mutex> lock(mutex);
+          firstItem[vtkBoostedThreadPool::ThreadIndex()] = first;
+        }
+        ++started;
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+        while (started < 2 && std::chrono::steady_clock::now() < deadline)
+        {
+          std::this_thread::yield();
+        }
+      }
+    });
+    EXPECT_EQ(covered.load(), count);
+    ASSERT_EQ(firstItem.size(), 2u) << count;
+    EXPECT_EQ(firstItem[0], shares[0]) << count;
+    EXPECT_EQ(firstItem[1], shares[1]) << count;
+  }
 }
 
 TEST(ThreadPool, OneBlockCoversEveryItemOnceOnTheKeptThreads)

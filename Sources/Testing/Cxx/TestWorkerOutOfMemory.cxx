@@ -132,7 +132,33 @@ TEST(WorkerOutOfMemory, TheBlockLoopsChunksCoverTheBlockLargestFirst)
   }
 }
 
-// On more than one thread the threads claim the chunks in turn from a shared counter (one job
+// The shares of a block (vtkBoostedBlockLoop::ShareBounds): they cover it once, in order, one per
+// thread, their sizes at most one item apart, for blocks smaller than the thread count too.
+TEST(WorkerOutOfMemory, TheBlockLoopsSharesCoverTheBlockEvenly)
+{
+  for (const vtkIdType first : { 0, 17 })
+  {
+    for (const vtkIdType size : { 0, 1, 2, 3, 7, 1048576, 3000001 })
+    {
+      for (const int threads : { 1, 2, 3, 4 })
+      {
+        const std::vector<vtkIdType> bounds =
+          vtkBoostedBlockLoop::ShareBounds(first, first + size, threads);
+        ASSERT_EQ(bounds.size(), static_cast<std::size_t>(threads) + 1);
+        EXPECT_EQ(bounds.front(), first);
+        EXPECT_EQ(bounds.back(), first + size);
+        for (int s = 0; s < threads; ++s)
+        {
+          const vtkIdType share = bounds[s + 1] - bounds[s];
+          EXPECT_GE(share, size / threads) << size << " on " << threads;
+          EXPECT_LE(share, (size + threads - 1) / threads) << size << " on " << threads;
+        }
+      }
+    }
+  }
+}
+
+// On more than one thread the threads claim the chunks of their shares, then the others' (one job
 // per thread, not one per chunk): every item of every block runs exactly once, whichever thread
 // claims it, on one and two STDThread threads and on the Sequential backend, for a range of
 // several blocks that starts and ends off a block's bound, and the work of two threads is
