@@ -1,5 +1,6 @@
 // The batch kernel, PointPairField::mapPoints, on the 1,000,000 points of the shared mesh:
-// Kernel/<rule>/M:<generators>/threads:<n> (runOnThreads: guided chunks, 8192 to 1024 points);
+// Kernel/<rule>/M:<generators>/threads:<n> (runOnThreads: a share per thread, guided chunks of
+// 8192 to 1024 points);
 // and on the same sheet at N = 10^4 ... 10^7 points, M = 16:
 // KernelSize/Exact/M:16/N:<points>/threads:<n>; the images with their Jacobians
 // (mapPointsWithJacobians, the derivative's cost per point):

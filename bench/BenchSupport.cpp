@@ -204,43 +204,62 @@ void runOnThreads(int threads,
                   std::size_t count,
                   const std::function<void(std::size_t, std::size_t)>& work)
 {
-  // Chunks handed out one by one, as vtkSMPTools does: the cost per point varies over the mesh
-  // (near a generator the exponential takes its transcendental branch), so fixed halves would
-  // leave one thread idle. Guided, as vtkBoostedBlockLoop: a quarter of what is left per thread,
-  // at most 8192 points and at least 1024 (whole blocks of the kernel's 8 lanes), so that at the
-  // end a thread waits for the other for about one small chunk.
-  std::atomic<std::size_t> next{ 0 };
-  const std::size_t share = 4 * static_cast<std::size_t>(std::max(1, threads));
-  auto take = [&](std::size_t& first, std::size_t& last) {
-    std::size_t begin = next.load();
+  // As vtkBoostedBlockLoop: one share of the points per thread (whole blocks of the kernel's 8
+  // lanes), thread t taking share t's chunks first (the calling thread share 0), then what is
+  // left of the others, so that each core mostly rewrites the output it wrote the iteration
+  // before. Chunks are handed out one by one, as vtkSMPTools does: the cost per point varies over
+  // the mesh (near a generator the exponential takes its transcendental branch), so fixed halves
+  // would leave one thread idle. Guided: a quarter of what is left of the share, at most 8192
+  // points and at least 1024, so that at the end a thread waits for the other for about one
+  // small chunk.
+  const std::size_t shares = static_cast<std::size_t>(std::max(1, threads));
+  const std::size_t blocks = (count + 7) / 8;
+  struct alignas(64) Share
+  {
+    std::size_t begin = 0, end = 0;
+    std::atomic<std::size_t> next{ 0 };
+  };
+  std::vector<Share> share(shares);
+  for (std::size_t s = 0; s < shares; ++s)
+  {
+    share[s].begin = std::min(count, 8 * (blocks * s / shares));
+    share[s].end = std::min(count, 8 * (blocks * (s + 1) / shares));
+    share[s].next = share[s].begin;
+  }
+  auto take = [&](Share& from, std::size_t& first, std::size_t& last) {
+    std::size_t begin = from.next.load();
     std::size_t size = 0;
     do
     {
-      if (begin >= count)
+      if (begin >= from.end)
       {
         return false;
       }
-      const std::size_t left = count - begin;
-      size = std::max<std::size_t>(1024, std::min<std::size_t>(8192, left / share)) / 8 * 8;
+      const std::size_t left = from.end - begin;
+      size = std::max<std::size_t>(1024, std::min<std::size_t>(8192, left / 4)) / 8 * 8;
       size = std::min(left, size);
-    } while (!next.compare_exchange_weak(begin, begin + size));
+    } while (!from.next.compare_exchange_weak(begin, begin + size));
     first = begin;
     last = begin + size;
     return true;
   };
-  auto worker = [&]() {
+  auto worker = [&](std::size_t own) {
     std::size_t first = 0, last = 0;
-    while (take(first, last))
+    for (std::size_t k = 0; k < shares; ++k)
     {
-      work(first, last);
+      Share& from = share[(own + k) % shares];
+      while (take(from, first, last))
+      {
+        work(first, last);
+      }
     }
   };
   std::vector<std::thread> others;
-  for (int t = 1; t < threads; ++t)
+  for (std::size_t t = 1; t < shares; ++t)
   {
-    others.emplace_back(worker);
+    others.emplace_back(worker, t);
   }
-  worker();
+  worker(0);
   for (std::thread& thread : others)
   {
     thread.join();
