@@ -109,9 +109,8 @@ void vtkBoostedBlockLoop::RunBlock(vtkIdType begin, vtkIdType end, vtkIdType sam
 bool vtkBoostedBlockLoop::For(vtkAlgorithm* algorithm, vtkIdType begin, vtkIdType end,
   vtkIdType samplesPerItem, const std::function<void(vtkIdType, vtkIdType)>& work)
 {
-  // Blocks (ItemsPerBlock) with the abort check before and the progress after each; a block's
-  // chunks (ChunkBounds) are taken in turn by the threads, largest first, so that at a block's
-  // end a thread waits for the others for about one of the last, small chunks.
+  // Blocks (ItemsPerBlock) with the abort check before and the progress after each; each block
+  // run by RunBlock (each thread its share's chunks first, largest first, then the others').
   const vtkIdType itemsPerBlock = ItemsPerBlock(samplesPerItem);
   for (vtkIdType first = begin; first < end; first += itemsPerBlock)
   {
