@@ -5,7 +5,7 @@
 // exception thrown again on the calling thread once every thread has returned, and a child
 // process made by fork() served by threads of its own; each pool thread keeps its index; the block
 // loop's one block (RunBlock) covers every item once on those threads, each starting with its own
-// share.
+// share and taking the others' when done.
 #include "vtkBoostedBlockLoop.h"
 #include "vtkBoostedSurfaceSource.h"
 #include "vtkBoostedThreadPool.h"
@@ -162,6 +162,30 @@ TEST(ThreadPool, EachThreadStartsWithItsOwnShareOfTheBlock)
     EXPECT_EQ(firstItem[0], shares[0]) << count;
     EXPECT_EQ(firstItem[1], shares[1]) << count;
   }
+}
+
+// A held-up thread holds up little: with pool thread 1 sleeping 2 ms in every chunk it takes,
+// thread 0 finishes its own share and then takes most of share 1's chunks.
+TEST(ThreadPool, AThreadDoneWithItsShareTakesTheOthers)
+{
+  vtkSMPTools::SetBackend("STDThread");
+  vtkSMPTools::Initialize(2);
+  const vtkIdType count = 1 << 19;
+  const std::vector<vtkIdType> shares = vtkBoostedBlockLoop::ShareBounds(0, count, 2);
+  std::atomic<vtkIdType> covered{ 0 }, secondShareByThreadZero{ 0 };
+  vtkBoostedBlockLoop::RunBlock(0, count, 1, [&](vtkIdType first, vtkIdType last) {
+    covered += last - first;
+    if (vtkBoostedThreadPool::ThreadIndex() == 1)
+    {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    else if (first >= shares[1])
+    {
+      secondShareByThreadZero += last - first;
+    }
+  });
+  EXPECT_EQ(covered.load(), count);
+  EXPECT_GT(secondShareByThreadZero.load(), (shares[2] - shares[1]) / 2);
 }
 
 TEST(ThreadPool, OneBlockCoversEveryItemOnceOnTheKeptThreads)
