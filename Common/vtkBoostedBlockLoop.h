@@ -12,8 +12,9 @@
  * down to MinimumChunkSamples, then what is left of the other shares, so that at a block's end a
  * thread waits for the others for about one small chunk. Pool thread i is the same thread at
  * every block and update, so each core mostly rewrites what it wrote the time before (the
- * orbits' update on two threads took 0.85 times as long as with one counter for the block). The number of threads is vtkSMPTools': one on
- * the Sequential backend, GetEstimatedNumberOfThreads() on STDThread. With 8 x 65,536 samples per
+ * orbits' update on two threads took 0.85 times as long as with one counter for the block). The
+ * number of threads is vtkSMPTools': one on the Sequential backend,
+ * GetEstimatedNumberOfThreads() on STDThread. With 8 x 65,536 samples per
  * thread an update of 10^6 points on two threads is one block. Between blocks, on the calling
  * thread only: the abort check (before each block) and the progress (after each block, the
  * fraction of items done). Each item must write only its own slots, so the result does not
