@@ -364,7 +364,8 @@ void vtkBoostedGridBuilder::ComputeNormals(
 }
 
 vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkPolyData* output,
-  int firstRow, int lastRow, int precision, bool withSurfaceAttributes, vtkIdType& outside) const
+  int firstRow, int lastRow, int precision, bool withSurfaceAttributes, vtkIdType& outside,
+  std::vector<vtkIdType>* wholeRows) const
 {
   // Each sample's point id (-1: no point) for the samples of every segment, written by the
   // writing pass below.
@@ -432,6 +433,25 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
   });
   const std::vector<vtkIdType> offsets = PrefixSums(counts);
   const vtkIdType total = offsets.back();
+  // The whole rows' first ids (segments run row by row, each row's from its first column).
+  if (wholeRows)
+  {
+    wholeRows->assign(static_cast<size_t>(std::max(0, lastRow - firstRow + 1)), -1);
+    for (size_t i = 0; i < segments.size(); ++i)
+    {
+      const Segment& s = segments[i];
+      vtkIdType& first = (*wholeRows)[static_cast<size_t>(s.Row - firstRow)];
+      const bool full = counts[i] == s.LastColumn - s.FirstColumn;
+      if (s.FirstColumn == 0)
+      {
+        first = full ? offsets[i] : -1;
+      }
+      else if (!full)
+      {
+        first = -1;
+      }
+    }
+  }
 
   vtkNew<vtkPoints> points;
   points->SetDataType(precision == vtkAlgorithm::SINGLE_PRECISION ? VTK_FLOAT : VTK_DOUBLE);
@@ -588,10 +608,13 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
     {
       // Every sample usable, each its own point (the common case): column FirstColumn + j is
       // point first + j, and the arrays' loops run over consecutive samples.
-      long long* segmentIds = ids.get() + this->Index(r, s.FirstColumn);
-      for (int j = 0; j < length; ++j)
+      if (!(wholeRows && (*wholeRows)[static_cast<size_t>(r - firstRow)] >= 0))
       {
-        segmentIds[j] = first + j;
+        long long* segmentIds = ids.get() + this->Index(r, s.FirstColumn);
+        for (int j = 0; j < length; ++j)
+        {
+          segmentIds[j] = first + j;
+        }
       }
       const int firstColumn = s.FirstColumn;
       outsideCounts[i] = writeArrays(s, first, static_cast<size_t>(length),
@@ -815,24 +838,21 @@ vtkIdType vtkBoostedGridBuilder::BuildCurves(
   vtkPolyData* output, int firstRow, int lastRow, int outputPointsPrecision) const
 {
   vtkIdType outside = 0;
-  const vtkBoostedLargeArrays::Buffer<long long> ids =
-    this->WritePoints(output, firstRow, lastRow, outputPointsPrecision, false, outside);
   // With periodic columns the last column repeats the first: each row is a closed polyline of
   // grid indices.
   const int distinct = this->PeriodicColumns ? this->Columns - 1 : this->Columns;
-  const int rows = lastRow - firstRow + 1;
   // A row whose samples are all usable is one polyline (closed with periodic columns), written
-  // in place below; the others are split into runs by the one walker first.
-  std::vector<char> whole(std::max(rows, 0), 0);
-  forEach(whole.size(), distinct, [&](size_t i) {
-    const int r = firstRow + static_cast<int>(i);
-    bool all = distinct >= 3;
-    for (int c = 0; c < distinct && all; ++c)
-    {
-      all = ids[this->Index(r, c)] >= 0;
-    }
-    whole[i] = all;
-  });
+  // in place below from its first point id (its points are consecutive; the map `ids` is not
+  // written for it); the others are split into runs by the one walker first. Rows of fewer than
+  // three distinct columns are all split.
+  std::vector<vtkIdType> wholeFirst;
+  const vtkBoostedLargeArrays::Buffer<long long> ids = this->WritePoints(output, firstRow,
+    lastRow, outputPointsPrecision, false, outside, distinct >= 3 ? &wholeFirst : nullptr);
+  std::vector<char> whole(static_cast<size_t>(std::max(0, lastRow - firstRow + 1)), 0);
+  for (size_t i = 0; i < wholeFirst.size(); ++i)
+  {
+    whole[i] = wholeFirst[i] >= 0;
+  }
   const vtkIdType wholeSize = this->PeriodicColumns ? distinct + 1 : distinct;
   std::vector<vtkSmartPointer<vtkCellArray>> split(whole.size());
   std::vector<vtkIdType> cellCounts(whole.size()), sizes(whole.size());
@@ -864,17 +884,17 @@ vtkIdType vtkBoostedGridBuilder::BuildCurves(
     sizes[i] = split[i]->GetNumberOfConnectivityIds();
   }
   output->SetLines(CellsInOrder(cellCounts, sizes, distinct, [&](size_t i, CellWriter& writer) {
-    const int r = firstRow + static_cast<int>(i);
     if (whole[i])
     {
+      const vtkIdType first = wholeFirst[i];
       writer.Start();
-      for (int c = 0; c < distinct; ++c)
+      for (vtkIdType c = 0; c < distinct; ++c)
       {
-        writer.Add(ids[this->Index(r, c)]);
+        writer.Add(first + c);
       }
       if (this->PeriodicColumns)
       {
-        writer.Add(ids[this->Index(r, 0)]);
+        writer.Add(first);
       }
       return;
     }

@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace
@@ -167,6 +168,86 @@ TEST(GridBuilder, WholeAndCutRunsWriteEveryUsableSampleOnce)
     }
   }
   EXPECT_EQ(cells, usableCells);
+}
+
+// Rows longer than one of the pass's segments (16,384 columns): a whole row is one polyline of
+// consecutive points (closed with periodic columns), and a row with one unusable sample in its
+// second segment or its first is cut there, in rows before and after whole ones.
+TEST(GridBuilder, LongRowsAreOnePolylineOrCutWhereASampleIsUnusable)
+{
+  constexpr int rows = 4, columns = 40001;
+  // Unusable: row 1 at column 20000 (its second segment), row 2 at column 5 (its first).
+  auto usableHere = [](int r, int c) { return !((r == 1 && c == 20000) || (r == 2 && c == 5)); };
+  for (const bool periodic : { false, true })
+  {
+    vtkBoostedGridBuilder grid(rows, columns, periodic);
+    for (int r = 0; r < rows; ++r)
+    {
+      grid.ClearSamples(r, 0, columns);
+      for (int c = 0; c < columns; ++c)
+      {
+        // Periodic: the last column repeats the first (the builds leave it out of curves).
+        const int sample = periodic && c == columns - 1 ? 0 : c;
+        const double p[3] = { static_cast<double>(sample), static_cast<double>(r), 0.0 };
+        if (usableHere(r, sample))
+        {
+          grid.SetPoint(r, c, p);
+        }
+      }
+    }
+    vtkNew<vtkPolyData> curves;
+    EXPECT_EQ(grid.BuildCurves(curves, 0, rows - 1, 1), 0);
+    const int distinct = periodic ? columns - 1 : columns;
+    ASSERT_EQ(curves->GetNumberOfPoints(), static_cast<vtkIdType>(rows) * distinct - 2);
+    // The polylines in order, each as the (row, column) of its points.
+    std::vector<std::vector<std::pair<int, int>>> lines;
+    vtkCellArray* cells = curves->GetLines();
+    vtkIdType count;
+    const vtkIdType* ids;
+    for (cells->InitTraversal(); cells->GetNextCell(count, ids);)
+    {
+      lines.emplace_back();
+      for (vtkIdType k = 0; k < count; ++k)
+      {
+        double p[3];
+        curves->GetPoint(ids[k], p);
+        lines.back().emplace_back(static_cast<int>(p[1]), static_cast<int>(p[0]));
+      }
+    }
+    // The expected polylines: whole rows 0 and 3 (closed when periodic); row 1 cut at 20000 and
+    // row 2 at 5 (a periodic row's run through the seam joins its last and first runs).
+    std::vector<std::vector<std::pair<int, int>>> expected;
+    auto run = [&](int r, int from, int to) { // columns [from, to) of row r, mod distinct
+      std::vector<std::pair<int, int>> line;
+      for (int c = from; c < to; ++c)
+      {
+        line.emplace_back(r, c % distinct);
+      }
+      return line;
+    };
+    for (int r = 0; r < rows; ++r)
+    {
+      const int cut = r == 1 ? 20000 : r == 2 ? 5 : -1;
+      if (cut < 0)
+      {
+        expected.push_back(run(r, 0, periodic ? distinct + 1 : distinct));
+      }
+      else if (periodic)
+      {
+        expected.push_back(run(r, cut + 1, distinct + cut));
+      }
+      else
+      {
+        expected.push_back(run(r, 0, cut));
+        expected.push_back(run(r, cut + 1, distinct));
+      }
+    }
+    ASSERT_EQ(lines.size(), expected.size()) << (periodic ? "periodic" : "open");
+    for (size_t i = 0; i < lines.size(); ++i)
+    {
+      EXPECT_EQ(lines[i], expected[i]) << "polyline " << i << (periodic ? " periodic" : " open");
+    }
+  }
 }
 
 TEST(GridBuilder, BuildsCountThePointsOutsideTheClipSphere)
