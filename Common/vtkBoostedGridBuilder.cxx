@@ -452,7 +452,13 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
   });
   const std::vector<vtkIdType> offsets = PrefixSums(counts);
   const vtkIdType total = offsets.back();
-  // The whole rows' first ids (segments run row by row, each row's from its first column).
+  // The whole rows' first ids (segments run row by row, each row's from its first column); none
+  // with merged points, whose ids are not a row's consecutive ones.
+  if (wholeRows && merge)
+  {
+    wholeRows->clear();
+    wholeRows = nullptr;
+  }
   if (wholeRows)
   {
     wholeRows->assign(static_cast<size_t>(std::max(0, lastRow - firstRow + 1)), -1);
@@ -697,12 +703,21 @@ vtkIdType vtkBoostedGridBuilder::BuildSurface(
   vtkPolyData* output, int firstRow, int lastRow, int outputPointsPrecision) const
 {
   vtkIdType outside = 0;
-  const vtkBoostedLargeArrays::Buffer<long long> ids =
-    this->WritePoints(output, firstRow, lastRow, outputPointsPrecision, true, outside);
+  // The whole rows' first point ids (their points are consecutive and the map `ids` is not
+  // written for them; none with merged points): idOf reads either.
+  std::vector<vtkIdType> wholeFirst;
+  const vtkBoostedLargeArrays::Buffer<long long> ids = this->WritePoints(
+    output, firstRow, lastRow, outputPointsPrecision, true, outside, &wholeFirst);
+  auto wholeRowFirst = [&](int r) {
+    return wholeFirst.empty() ? vtkIdType(-1) : wholeFirst[static_cast<size_t>(r - firstRow)];
+  };
+  auto idOf = [&](int r, int c) {
+    const vtkIdType first = wholeRowFirst(r);
+    return first >= 0 ? first + c : static_cast<vtkIdType>(ids[this->Index(r, c)]);
+  };
   // The cell of the quad between rows r, r + 1 and columns c, c + 1: its size (0: no cell).
   auto quadCell = [&](int r, int c, vtkIdType cell[4]) -> vtkIdType {
-    const vtkIdType quad[4] = { ids[this->Index(r, c)], ids[this->Index(r, c + 1)],
-      ids[this->Index(r + 1, c + 1)], ids[this->Index(r + 1, c)] };
+    const vtkIdType quad[4] = { idOf(r, c), idOf(r, c + 1), idOf(r + 1, c + 1), idOf(r + 1, c) };
     if (quad[0] < 0 || quad[1] < 0 || quad[2] < 0 || quad[3] < 0)
     {
       return 0;
@@ -729,17 +744,42 @@ vtkIdType vtkBoostedGridBuilder::BuildSurface(
                    [this](const Segment& s) { return !this->SameBlock(s.Row, s.Row + 1); }),
     segments.end());
   const vtkIdType columnsPerSegment = ColumnsPerItem(segments);
+  // Between two whole rows every quad is a cell of four distinct consecutive ids.
+  auto betweenWholeRows = [&](const Segment& s) {
+    return wholeRowFirst(s.Row) >= 0 && wholeRowFirst(s.Row + 1) >= 0;
+  };
   std::vector<vtkIdType> cellCounts(segments.size(), 0), sizes(segments.size(), 0);
   forEach(segments.size(), columnsPerSegment, [&](size_t i) {
-    vtkIdType cell[4];
-    for (int c = segments[i].FirstColumn; c < segments[i].LastColumn; ++c)
+    const Segment& s = segments[i];
+    if (betweenWholeRows(s))
     {
-      const vtkIdType size = quadCell(segments[i].Row, c, cell);
+      cellCounts[i] = s.LastColumn - s.FirstColumn;
+      sizes[i] = 4 * cellCounts[i];
+      return;
+    }
+    vtkIdType cell[4];
+    for (int c = s.FirstColumn; c < s.LastColumn; ++c)
+    {
+      const vtkIdType size = quadCell(s.Row, c, cell);
       cellCounts[i] += size > 0;
       sizes[i] += size;
     }
   });
   output->SetPolys(CellsInOrder(cellCounts, sizes, columnsPerSegment, [&](size_t i, CellWriter& writer) {
+    const Segment& s = segments[i];
+    if (betweenWholeRows(s))
+    {
+      const vtkIdType below = wholeRowFirst(s.Row), above = wholeRowFirst(s.Row + 1);
+      for (vtkIdType c = s.FirstColumn; c < s.LastColumn; ++c)
+      {
+        writer.Start();
+        writer.Add(below + c);
+        writer.Add(below + c + 1);
+        writer.Add(above + c + 1);
+        writer.Add(above + c);
+      }
+      return;
+    }
     vtkIdType cell[4];
     for (int c = segments[i].FirstColumn; c < segments[i].LastColumn; ++c)
     {

@@ -247,6 +247,38 @@ TEST(GridBuilder, LongRowsAreOnePolylineOrCutWhereASampleIsUnusable)
     {
       EXPECT_EQ(lines[i], expected[i]) << "polyline " << i << (periodic ? " periodic" : " open");
     }
+    if (periodic)
+    {
+      continue;
+    }
+    // The surface: one quad per grid cell whose four samples are usable, its corners those
+    // samples in order, between whole rows and next to cut ones.
+    vtkNew<vtkPolyData> surface;
+    EXPECT_EQ(grid.BuildSurface(surface, 0, rows - 1, 1), 0);
+    ASSERT_EQ(surface->GetNumberOfPoints(), static_cast<vtkIdType>(rows) * columns - 2);
+    vtkIdType quads = 0;
+    cells = surface->GetPolys();
+    for (cells->InitTraversal(); cells->GetNextCell(count, ids); ++quads)
+    {
+      ASSERT_EQ(count, 4);
+      std::pair<int, int> corners[4];
+      for (int k = 0; k < 4; ++k)
+      {
+        double p[3];
+        surface->GetPoint(ids[k], p);
+        corners[k] = { static_cast<int>(p[1]), static_cast<int>(p[0]) };
+      }
+      const auto [r, c] = corners[0];
+      const std::pair<int, int> expectedCorners[4] = { { r, c }, { r, c + 1 }, { r + 1, c + 1 },
+        { r + 1, c } };
+      for (int k = 0; k < 4; ++k)
+      {
+        EXPECT_EQ(corners[k], expectedCorners[k]) << "quad " << quads;
+      }
+    }
+    // Each unusable sample removes the four cells around it (row 1's at column 20,000, row 2's
+    // at column 5).
+    EXPECT_EQ(quads, static_cast<vtkIdType>(rows - 1) * (columns - 1) - 2 * 2 - 2 * 2);
   }
 }
 
