@@ -454,15 +454,10 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
   const vtkIdType total = offsets.back();
   // The whole rows' first ids (segments run row by row, each row's from its first column); none
   // with merged points, whose ids are not a row's consecutive ones.
-  if (wholeRows && merge)
-  {
-    wholeRows->clear();
-    wholeRows = nullptr;
-  }
   if (wholeRows)
   {
     wholeRows->assign(static_cast<size_t>(std::max(0, lastRow - firstRow + 1)), -1);
-    for (size_t i = 0; i < segments.size(); ++i)
+    for (size_t i = 0; i < (merge ? 0 : segments.size()); ++i)
     {
       const Segment& s = segments[i];
       vtkIdType& first = (*wholeRows)[static_cast<size_t>(s.Row - firstRow)];
@@ -708,9 +703,7 @@ vtkIdType vtkBoostedGridBuilder::BuildSurface(
   std::vector<vtkIdType> wholeFirst;
   const vtkBoostedLargeArrays::Buffer<long long> ids = this->WritePoints(
     output, firstRow, lastRow, outputPointsPrecision, true, outside, &wholeFirst);
-  auto wholeRowFirst = [&](int r) {
-    return wholeFirst.empty() ? vtkIdType(-1) : wholeFirst[static_cast<size_t>(r - firstRow)];
-  };
+  auto wholeRowFirst = [&](int r) { return wholeFirst[static_cast<size_t>(r - firstRow)]; };
   auto idOf = [&](int r, int c) {
     const vtkIdType first = wholeRowFirst(r);
     return first >= 0 ? first + c : static_cast<vtkIdType>(ids[this->Index(r, c)]);
@@ -907,19 +900,15 @@ vtkIdType vtkBoostedGridBuilder::BuildCurves(
   std::vector<vtkIdType> wholeFirst;
   const vtkBoostedLargeArrays::Buffer<long long> ids = this->WritePoints(output, firstRow,
     lastRow, outputPointsPrecision, false, outside, distinct >= 3 ? &wholeFirst : nullptr);
-  std::vector<char> whole(static_cast<size_t>(std::max(0, lastRow - firstRow + 1)), 0);
-  for (size_t i = 0; i < wholeFirst.size(); ++i)
-  {
-    whole[i] = wholeFirst[i] >= 0;
-  }
+  wholeFirst.resize(static_cast<size_t>(std::max(0, lastRow - firstRow + 1)), -1); // none: -1
   const vtkIdType wholeSize = this->PeriodicColumns ? distinct + 1 : distinct;
-  std::vector<vtkSmartPointer<vtkCellArray>> split(whole.size());
-  std::vector<vtkIdType> cellCounts(whole.size()), sizes(whole.size());
+  std::vector<vtkSmartPointer<vtkCellArray>> split(wholeFirst.size());
+  std::vector<vtkIdType> cellCounts(wholeFirst.size()), sizes(wholeFirst.size());
   vtkBoostedPolylineRuns runs;
   std::vector<vtkIdType> row(this->PeriodicColumns ? distinct + 1 : distinct);
-  for (size_t i = 0; i < whole.size(); ++i)
+  for (size_t i = 0; i < wholeFirst.size(); ++i)
   {
-    if (whole[i])
+    if (wholeFirst[i] >= 0)
     {
       cellCounts[i] = 1;
       sizes[i] = wholeSize;
@@ -943,7 +932,7 @@ vtkIdType vtkBoostedGridBuilder::BuildCurves(
     sizes[i] = split[i]->GetNumberOfConnectivityIds();
   }
   output->SetLines(CellsInOrder(cellCounts, sizes, distinct, [&](size_t i, CellWriter& writer) {
-    if (whole[i])
+    if (wholeFirst[i] >= 0)
     {
       const vtkIdType first = wholeFirst[i];
       writer.Start();

@@ -165,7 +165,7 @@ private:
   /// Writes the usable points of rows [firstRow, lastRow] and returns the map grid index -> point
   /// id (-1: no point), defined for those rows' samples.
   /// `outside`: the points written outside the clip sphere (0 without one).
-  /// `wholeRows` (when given; left empty with MergeSeam's merged surfaces): for each of those rows
+  /// `wholeRows` (when given; all -1 with MergeSeam's merged surfaces): for each of those rows
   /// the id of its first point where every sample of the row is a point of its own (the row's
   /// points are then consecutive and the map is not written for its samples), -1 elsewhere.
   vtkBoostedLargeArrays::Buffer<long long> WritePoints(vtkPolyData* output, int firstRow,
