@@ -253,17 +253,8 @@ void vtkBoostedGridBuilder::AddColumnParameter(
   this->Parameters.push_back({ name, false, valuePerColumn });
 }
 
-void vtkBoostedGridBuilder::ComputeNormal(int row, int column, double normal[3]) const
+void vtkBoostedGridBuilder::DifferenceNormal(int row, int column, double normal[3]) const
 {
-  if (this->SampleNormals)
-  {
-    const double* given = &this->SampleNormals[3 * static_cast<size_t>(this->Index(row, column))];
-    if (std::isfinite(given[0]) && std::isfinite(given[1]) && std::isfinite(given[2]))
-    {
-      std::copy_n(given, 3, normal);
-      return;
-    }
-  }
   // Central differences where both neighbours are usable, one-sided otherwise. Periodic columns
   // skip the repeated seam column so that both copies of a seam point get the same normal.
   // Each difference as a unit vector (cga::normalized, scaled where its square would underflow
@@ -335,8 +326,7 @@ void vtkBoostedGridBuilder::ComputeNormals(
 {
   if (this->SampleNormals)
   {
-    // The given normals copied in one loop (ComputeNormal's copy, without a call per sample);
-    // ComputeNormal for the samples without one.
+    // The given normals copied in one loop; DifferenceNormal for the samples without one.
     const double* given =
       &this->SampleNormals[3 * static_cast<size_t>(this->Index(row, firstColumn))];
     for (int c = firstColumn; c < lastColumn; ++c, given += 3)
@@ -348,13 +338,13 @@ void vtkBoostedGridBuilder::ComputeNormals(
       }
       else
       {
-        this->ComputeNormal(row, c, normal);
+        this->DifferenceNormal(row, c, normal);
       }
     }
     return;
   }
   // The samples whose four neighbours exist in the row's block without a seam's wrap (columns 1
-  // to Columns - 2 of an inner row) eight at a time, where ComputeNormal would take the plain
+  // to Columns - 2 of an inner row) eight at a time, where DifferenceNormal would take the plain
   // central differences (cga::crossedDifferenceNormals: the same bits); the others one at a time.
   int first = lastColumn, last = lastColumn;
   if (row > 0 && row + 1 < this->Rows && this->SameBlock(row - 1, row) &&
@@ -377,7 +367,7 @@ void vtkBoostedGridBuilder::ComputeNormals(
   {
     if (c < first || c >= last || !plain[c - first])
     {
-      this->ComputeNormal(row, c, normals + 3 * (c - firstColumn));
+      this->DifferenceNormal(row, c, normals + 3 * (c - firstColumn));
     }
   }
 }

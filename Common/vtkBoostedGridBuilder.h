@@ -157,9 +157,12 @@ private:
     const double* p = &this->Points[3 * static_cast<size_t>(this->Index(row, column))];
     return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
   }
-  void ComputeNormal(int row, int column, double normal[3]) const;
-  /// ComputeNormal's normals of row `row`'s columns [firstColumn, lastColumn), at most
-  /// NormalsPerRun of them, into normals (3 per column), the inner samples many at a time.
+  /// The grid's normal at a sample from the differences of its usable neighbours (the row's
+  /// fallback normal where they give none).
+  void DifferenceNormal(int row, int column, double normal[3]) const;
+  /// The normals of row `row`'s columns [firstColumn, lastColumn), at most NormalsPerRun of
+  /// them, into normals (3 per column): a sample's given normal where finite (SetSampleNormal),
+  /// DifferenceNormal's elsewhere, the inner samples many at a time.
   static constexpr int NormalsPerRun = 64;
   void ComputeNormals(int row, int firstColumn, int lastColumn, double* normals) const;
   /// Writes the usable points of rows [firstRow, lastRow] and returns the map grid index -> point
