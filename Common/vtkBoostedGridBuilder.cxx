@@ -180,9 +180,10 @@ vtkBoostedGridBuilder::vtkBoostedGridBuilder(int rows, int columns, bool periodi
   : Rows(rows)
   , Columns(columns)
   , PeriodicColumns(periodicColumns)
-  , Points(vtkBoostedLargeArrays::New<double>(3 * static_cast<size_t>(rows) * columns))
   , FallbackNormals(3 * static_cast<size_t>(rows), 0.0)
 {
+  this->PointsMemory = vtkBoostedLargeArrays::New<double>(3 * static_cast<size_t>(rows) * columns);
+  this->Points = this->PointsMemory.get();
 }
 
 void vtkBoostedGridBuilder::ClearSamples(int row, int firstColumn, int lastColumn)
@@ -190,7 +191,7 @@ void vtkBoostedGridBuilder::ClearSamples(int row, int firstColumn, int lastColum
   const size_t first = static_cast<size_t>(this->Index(row, firstColumn));
   const size_t last = static_cast<size_t>(this->Index(row, lastColumn));
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::fill(this->Points.get() + 3 * first, this->Points.get() + 3 * last, nan);
+  std::fill(this->Points + 3 * first, this->Points + 3 * last, nan);
   if (this->SampleNormals)
   {
     std::fill(this->SampleNormals.get() + 3 * first, this->SampleNormals.get() + 3 * last, nan);
@@ -198,7 +199,7 @@ void vtkBoostedGridBuilder::ClearSamples(int row, int firstColumn, int lastColum
   for (SampleArray& values : this->SampleArrays)
   {
     const size_t components = static_cast<size_t>(values.Components);
-    std::fill(values.Values.get() + components * first, values.Values.get() + components * last, 0.0);
+    std::fill(values.Values + components * first, values.Values + components * last, 0.0);
   }
 }
 
@@ -213,7 +214,7 @@ void vtkBoostedGridBuilder::SetOrigin(const double origin[3])
 {
   for (int i = 0; i < 3; ++i)
   {
-    this->Origin[i] = origin[i];
+    this->Origin[i] = origin[i] == 0.0 ? -0.0 : origin[i]; // -0 adds nothing (see Origin)
   }
 }
 
@@ -235,9 +236,10 @@ void vtkBoostedGridBuilder::EnableSampleNormals()
 int vtkBoostedGridBuilder::AddSampleArray(const std::string& name, int components)
 {
   // Cleared by ClearSamples.
-  this->SampleArrays.push_back({ name, components,
-    vtkBoostedLargeArrays::New<double>(
-      static_cast<size_t>(components) * this->Rows * this->Columns) });
+  vtkBoostedLargeArrays::Buffer<double> memory = vtkBoostedLargeArrays::New<double>(
+    static_cast<size_t>(components) * this->Rows * this->Columns);
+  double* values = memory.get();
+  this->SampleArrays.push_back({ name, components, values, std::move(memory) });
   return static_cast<int>(this->SampleArrays.size()) - 1;
 }
 
@@ -356,7 +358,7 @@ void vtkBoostedGridBuilder::ComputeNormals(
   bool plain[NormalsPerRun];
   if (last > first)
   {
-    const double* p = this->Points.get();
+    const double* p = this->Points;
     cga::crossedDifferenceNormals(p + 3 * static_cast<size_t>(this->Index(row, first - 1)),
       p + 3 * static_cast<size_t>(this->Index(row, first + 1)),
       p + 3 * static_cast<size_t>(this->Index(row - 1, first)),
@@ -432,13 +434,49 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
       }
     }
   };
+  // Each segment's points, and those of them outside the clip sphere (vtkBoostedSphereClip's
+  // test on the point written, before any cast to float), counted in one pass over the samples.
   const vtkIdType columnsPerSegment = ColumnsPerItem(segments);
-  std::vector<vtkIdType> counts(segments.size(), 0);
+  std::vector<vtkIdType> counts(segments.size(), 0), outsideCounts(segments.size(), 0);
+  const cga::Vec3 origin{ this->Origin[0], this->Origin[1], this->Origin[2] };
+  const cga::Vec3 clipCenter{ this->ClipCenter[0], this->ClipCenter[1], this->ClipCenter[2] };
+  const double clipRadius2 = this->ClipRadius * this->ClipRadius;
+  // By value: captured by reference, they were loaded again for every sample.
+  const auto inside = [origin, clipCenter, clipRadius2](const double* p) {
+    return vtkBoostedSphereClip::Inside(
+      { origin.x + p[0], origin.y + p[1], origin.z + p[2] }, clipCenter, clipRadius2);
+  };
   forEach(segments.size(), columnsPerSegment, [&](size_t i) {
     const Segment& s = segments[i];
-    vtkIdType count = 0;
-    walk(s, [&](int) { return count++; }, [](int, long long) {});
+    vtkIdType count = 0, insideHere = 0;
+    if (!merge)
+    {
+      // Every usable sample is a point (walk's loop without its merging, branch-free); only a
+      // finite point can be inside.
+      const double* p = &this->Points[3 * static_cast<size_t>(this->Index(s.Row, s.FirstColumn))];
+      const double* end = p + 3 * static_cast<size_t>(s.LastColumn - s.FirstColumn);
+      for (const double* q = p; q < end; q += 3)
+      {
+        count += std::isfinite(q[0]) & std::isfinite(q[1]) & std::isfinite(q[2]);
+      }
+      for (const double* q = p; this->HasClipSphere && q < end; q += 3)
+      {
+        insideHere += inside(q);
+      }
+    }
+    else
+    {
+      walk(
+        s,
+        [&](int c) {
+          insideHere += this->HasClipSphere &&
+            inside(&this->Points[3 * static_cast<size_t>(this->Index(s.Row, c))]);
+          return count++;
+        },
+        [](int, long long) {});
+    }
     counts[i] = count;
+    outsideCounts[i] = this->HasClipSphere ? count - insideHere : 0;
   });
   const std::vector<vtkIdType> offsets = PrefixSums(counts);
   const vtkIdType total = offsets.back();
@@ -463,9 +501,28 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
     }
   }
 
+  // The whole grid, every sample its own point in grid order, in double precision: the points
+  // are the samples themselves (the origin adds nothing) and the sample arrays' values are the
+  // grid's, so their buffers become the output's arrays instead of copies (a copy read and wrote
+  // every point again: a fifth of an orbit update). Once: a later build copies them.
+  const bool adopt = this->PointsMemory && !merge && firstRow == 0 && lastRow == this->Rows - 1 &&
+    columns == this->Columns && total == static_cast<vtkIdType>(this->Rows) * this->Columns &&
+    precision != vtkAlgorithm::SINGLE_PRECISION && this->Origin[0] == 0.0 &&
+    this->Origin[1] == 0.0 && this->Origin[2] == 0.0;
+  const auto adoptInto = [this, total](vtkDataArray* array, auto& memory) {
+    vtkBoostedLargeArrays::Adopt(array, memory.release(), array->GetNumberOfComponents() * total);
+    this->AdoptedArrays.emplace_back(array);
+  };
   vtkNew<vtkPoints> points;
   points->SetDataType(precision == vtkAlgorithm::SINGLE_PRECISION ? VTK_FLOAT : VTK_DOUBLE);
-  vtkBoostedLargeArrays::SetNumberOfTuples(points->GetData(), total);
+  if (adopt)
+  {
+    adoptInto(points->GetData(), this->PointsMemory);
+  }
+  else
+  {
+    vtkBoostedLargeArrays::SetNumberOfTuples(points->GetData(), total);
+  }
   vtkNew<vtkFloatArray> normals;
   normals->SetName("Normals");
   normals->SetNumberOfComponents(3);
@@ -496,7 +553,14 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
     auto array = vtkSmartPointer<vtkDoubleArray>::New();
     array->SetName(values.Name.c_str());
     array->SetNumberOfComponents(values.Components);
-    vtkBoostedLargeArrays::SetNumberOfTuples(array, total);
+    if (adopt)
+    {
+      adoptInto(array, values.Memory);
+    }
+    else
+    {
+      vtkBoostedLargeArrays::SetNumberOfTuples(array, total);
+    }
     sampleArrays.push_back(array);
   }
   auto* doublePoints = vtkDoubleArray::FastDownCast(points->GetData());
@@ -506,45 +570,31 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
   // (point offsets[i] + j is column columnOf(j)), then each array in a pass of its own (one
   // output stream at a time: writing every array's values point by point, six to ten streams at
   // once, was 21 % of a Hopf fibration update).
-  // The points each segment writes outside the clip sphere.
-  std::vector<vtkIdType> outsideCounts(segments.size(), 0);
-  const bool clip = this->HasClipSphere;
-  const cga::Vec3 clipCenter{ this->ClipCenter[0], this->ClipCenter[1], this->ClipCenter[2] };
-  const double clipRadius2 = this->ClipRadius * this->ClipRadius;
-  // writeArrays(segment, first point, n, columnOf): the segment's n points' values; returns how
-  // many of them are outside the clip sphere.
+  // writeArrays(segment, first point, n, columnOf): the segment's n points' values.
   auto writeArrays = [&](const Segment& s, vtkIdType first, size_t n, auto columnOf) {
     const int r = s.Row;
     auto sample = [&](size_t j) { return static_cast<size_t>(this->Index(r, columnOf(j))); };
-    // withClip: std::true_type or std::false_type (a loop of each, without a test per point).
-    // Returns the points outside the clip sphere.
-    auto writePoints = [&](auto* to, auto withClip) -> vtkIdType { // double or float
+    auto writePoints = [&](auto* to) { // double or float
       using Value = std::remove_pointer_t<decltype(to)>;
-      // Local copies: the stores through `to` could alias members and captured references.
-      const cga::Vec3 origin{ this->Origin[0], this->Origin[1], this->Origin[2] }, center = clipCenter;
-      const double radius2 = clipRadius2;
-      const double* from = this->Points.get();
-      vtkIdType count = 0;
+      // A local copy: the stores through `to` could alias members and captured references.
+      const cga::Vec3 at = origin;
+      const double* from = this->Points;
       for (size_t j = 0; j < n; ++j)
       {
         const double* relative = from + 3 * sample(j);
-        const cga::Vec3 p{ origin.x + relative[0], origin.y + relative[1], origin.z + relative[2] };
-        to[3 * j] = static_cast<Value>(p.x);
-        to[3 * j + 1] = static_cast<Value>(p.y);
-        to[3 * j + 2] = static_cast<Value>(p.z);
-        if (decltype(withClip)::value)
-        {
-          count += !vtkBoostedSphereClip::Inside(p, center, radius2);
-        }
+        to[3 * j] = static_cast<Value>(at.x + relative[0]);
+        to[3 * j + 1] = static_cast<Value>(at.y + relative[1]);
+        to[3 * j + 2] = static_cast<Value>(at.z + relative[2]);
       }
-      return count;
     };
-    auto writePointsTo = [&](auto* to) {
-      return clip ? writePoints(to, std::true_type{}) : writePoints(to, std::false_type{});
-    };
-    const vtkIdType outsideHere = doublePoints
-      ? writePointsTo(doublePoints->GetPointer(3 * first))
-      : writePointsTo(floatPoints->GetPointer(3 * first));
+    if (doublePoints && !adopt) // adopted points are in place
+    {
+      writePoints(doublePoints->GetPointer(3 * first));
+    }
+    else if (floatPoints)
+    {
+      writePoints(floatPoints->GetPointer(3 * first));
+    }
     if (withSurfaceAttributes)
     {
       // The normals of columns [runFirst, runFirst + NormalsPerRun), made as the pass reaches them.
@@ -593,7 +643,7 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
     {
       std::fill_n(integerParameters[k]->GetPointer(first), n, this->IntegerParameters[k].second[r]);
     }
-    for (size_t k = 0; k < sampleArrays.size(); ++k)
+    for (size_t k = 0; k < (adopt ? 0 : sampleArrays.size()); ++k)
     {
       const SampleArray& values = this->SampleArrays[k];
       const size_t components = static_cast<size_t>(values.Components);
@@ -607,7 +657,6 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
         }
       }
     }
-    return outsideHere;
   };
   forEach(segments.size(), columnsPerSegment, [&](size_t i) {
     const Segment& s = segments[i];
@@ -627,7 +676,7 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
         }
       }
       const int firstColumn = s.FirstColumn;
-      outsideCounts[i] = writeArrays(s, first, static_cast<size_t>(length),
+      writeArrays(s, first, static_cast<size_t>(length),
         [firstColumn](size_t j) { return firstColumn + static_cast<int>(j); });
       return;
     }
@@ -643,8 +692,7 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
         return id;
       },
       [&](int c, long long id) { ids[this->Index(r, c)] = id; });
-    outsideCounts[i] =
-      writeArrays(s, first, newColumns.size(), [&newColumns](size_t j) { return newColumns[j]; });
+    writeArrays(s, first, newColumns.size(), [&newColumns](size_t j) { return newColumns[j]; });
   });
   if (merge)
   {
@@ -881,7 +929,8 @@ vtkIdType vtkBoostedGridBuilder::BuildCurves(
 {
   vtkIdType outside = 0;
   // With periodic columns the last column repeats the first: each row is a closed polyline of
-  // grid indices.
+  // grid indices (as with closed rows, whose columns are all distinct).
+  const bool closed = this->PeriodicColumns || this->ClosedRows;
   const int distinct = this->PeriodicColumns ? this->Columns - 1 : this->Columns;
   // A row whose samples are all usable is one polyline (closed with periodic columns), written
   // in place below from its first point id (its points are consecutive; the map `ids` is not
@@ -891,11 +940,11 @@ vtkIdType vtkBoostedGridBuilder::BuildCurves(
   const vtkBoostedLargeArrays::Buffer<long long> ids = this->WritePoints(output, firstRow,
     lastRow, outputPointsPrecision, false, outside, distinct >= 3 ? &wholeFirst : nullptr);
   wholeFirst.resize(static_cast<size_t>(std::max(0, lastRow - firstRow + 1)), -1); // none: -1
-  const vtkIdType wholeSize = this->PeriodicColumns ? distinct + 1 : distinct;
+  const vtkIdType wholeSize = closed ? distinct + 1 : distinct;
   std::vector<vtkSmartPointer<vtkCellArray>> split(wholeFirst.size());
   std::vector<vtkIdType> cellCounts(wholeFirst.size()), sizes(wholeFirst.size());
   vtkBoostedPolylineRuns runs;
-  std::vector<vtkIdType> row(this->PeriodicColumns ? distinct + 1 : distinct);
+  std::vector<vtkIdType> row(closed ? distinct + 1 : distinct);
   for (size_t i = 0; i < wholeFirst.size(); ++i)
   {
     if (wholeFirst[i] >= 0)
@@ -909,7 +958,7 @@ vtkIdType vtkBoostedGridBuilder::BuildCurves(
     {
       row[c] = this->Index(r, c);
     }
-    if (this->PeriodicColumns)
+    if (closed)
     {
       row[distinct] = row[0];
     }
@@ -930,7 +979,7 @@ vtkIdType vtkBoostedGridBuilder::BuildCurves(
       {
         writer.Add(first + c);
       }
-      if (this->PeriodicColumns)
+      if (closed)
       {
         writer.Add(first);
       }

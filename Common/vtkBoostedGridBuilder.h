@@ -10,7 +10,9 @@
  * unusable sample are left out, so the surface is cut there rather than stretched to infinity.
  * Only the points that are used are written. The cut at a clip sphere is vtkBoostedSphereClip's,
  * applied to this class's output (vtkBoostedGridDriver does both, and skips the cut when this
- * class counted no point outside the sphere as it wrote them: SetClipSphere).
+ * class counted no point outside the sphere: SetClipSphere). A grid built whole (all its rows),
+ * in double precision, with every sample usable and nothing merged, is not copied: its points
+ * and sample arrays become the output's (the first such build; a later one copies).
  *
  * Merged seams (SetMergeSeam): the grid's closed directions share their points instead of
  * repeating them, so that a closed surface comes out closed and manifold (watertight exports):
@@ -40,6 +42,7 @@
 
 #include "BoostedSurfacesCommonModule.h" // for export macro
 #include "vtkBoostedLargeArrays.h"       // for the sample buffers
+#include "vtkSmartPointer.h"             // for the arrays handed to an output
 #include "vtkType.h"                     // for vtkIdType
 
 #include <cmath>
@@ -48,6 +51,7 @@
 #include <utility>
 #include <vector>
 
+class vtkDataArray;
 class vtkPolyData;
 
 class BOOSTEDSURFACESCOMMON_EXPORT vtkBoostedGridBuilder
@@ -108,11 +112,16 @@ public:
   vtkIdType BuildCurves(
     vtkPolyData* output, int firstRow, int lastRow, int outputPointsPrecision) const;
 
-  /// vtkBoostedSphereClip's sphere: building counts the points outside it as it writes them
-  /// (vtkBoostedSphereClip's test on the written doubles, a point that is not finite outside), so
+  /// vtkBoostedSphereClip's sphere: building counts the points outside it as it counts the points
+  /// (vtkBoostedSphereClip's test on the doubles written, a point that is not finite outside), so
   /// that a caller whose points are all inside hands them on without the clip's own pass over
   /// them (a pass that reads every point back from memory: 9 % of an orbit update).
   void SetClipSphere(const double center[3], double radius);
+
+  /// Curves only (BuildCurves): each row is a closed polyline, its last column joined to its
+  /// first as with periodic columns, but without a repeated column (every column is distinct).
+  /// Default off.
+  void SetClosedRows(bool closedRows) { this->ClosedRows = closedRows; }
 
   /// Merge the seam, closed strips and poles (see the class description). Default off.
   void SetMergeSeam(bool mergeSeam) { this->MergeSeam = mergeSeam; }
@@ -147,7 +156,8 @@ private:
   {
     std::string Name;
     int Components;
-    vtkBoostedLargeArrays::Buffer<double> Values; // Components x rows x columns
+    double* Values; // Components x rows x columns: Memory's, or an output array's (AdoptedArrays)
+    mutable vtkBoostedLargeArrays::Buffer<double> Memory; // empty once handed to an output
   };
 
   int Index(int row, int column) const { return row * this->Columns + column; }
@@ -183,13 +193,20 @@ private:
   int Rows;
   int Columns;
   bool PeriodicColumns;
+  bool ClosedRows = false;
   bool MergeSeam = false;
-  double Origin[3] = { 0.0, 0.0, 0.0 };
+  // A zero origin is kept as -0, which adds nothing (+0 would turn -0 into +0): the copied
+  // points are the samples' bits, as the handed-over ones (WritePoints).
+  double Origin[3] = { -0.0, -0.0, -0.0 };
   bool HasClipSphere = false;
   double ClipCenter[3] = { 0.0, 0.0, 0.0 };
   double ClipRadius = 0.0;
-  // 3 x rows x columns, relative to Origin; NaN: not set.
-  vtkBoostedLargeArrays::Buffer<double> Points;
+  // 3 x rows x columns, relative to Origin; NaN: not set. PointsMemory's, until a build hands
+  // the memory to its output's points (WritePoints), then the output array's, which
+  // AdoptedArrays keeps for the builder's later reads.
+  double* Points = nullptr;
+  mutable vtkBoostedLargeArrays::Buffer<double> PointsMemory;
+  mutable std::vector<vtkSmartPointer<vtkDataArray>> AdoptedArrays;
   std::vector<double> FallbackNormals;
   // 3 x rows x columns when enabled; NaN: not given.
   vtkBoostedLargeArrays::Buffer<double> SampleNormals;

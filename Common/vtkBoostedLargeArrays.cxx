@@ -325,8 +325,11 @@ void vtkBoostedLargeArrays::SetNumberOfTuples(vtkDataArray* array, vtkIdType tup
   {
     throw std::bad_alloc();
   }
-  void* memory = Allocate(static_cast<std::size_t>(values) * valueSize);
-  // The array owns it from here and frees it with Release.
+  Adopt(array, Allocate(static_cast<std::size_t>(values) * valueSize), values);
+}
+
+void vtkBoostedLargeArrays::Adopt(vtkDataArray* array, void* memory, vtkIdType values)
+{
   array->SetVoidArray(memory, values, 0, vtkAbstractArray::VTK_DATA_ARRAY_USER_DEFINED);
   array->SetArrayFreeFunction(&vtkBoostedLargeArrays::Release);
 }

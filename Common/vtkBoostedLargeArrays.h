@@ -73,6 +73,11 @@ public:
   /// usual arrays); throws std::bad_alloc instead of VTK's abort when there is none.
   static void SetNumberOfTuples(vtkDataArray* array, vtkIdType tuples);
 
+  /// Makes `memory` (from Allocate, `values` values of the array's type) the values of `array`,
+  /// which owns it from then on and frees it with Release. For an array of VTK's usual
+  /// contiguous layout (HasStandardMemoryLayout) whose components are set.
+  static void Adopt(vtkDataArray* array, void* memory, vtkIdType values);
+
   struct Free
   {
     void operator()(void* memory) const { Release(memory); }

@@ -383,9 +383,14 @@ int vtkConformalOrbitSource::RequestData(
   vtkBoostedGridDriver driver(
     this, outInfo, this->ClipCenter, this->ClipRadius, this->OutputPointsPrecision);
   driver.SetBytesPerSample(bytesPerSample);
-  if (!seeds.empty() && driver.Prepare(problem, static_cast<long long>(seeds.size()), columns, closed, false))
+  // A closed orbit's last sample (t0 again) is its first: the grid leaves it out and closes its
+  // rows instead, so that its points are the output's own (vtkBoostedGridBuilder::WritePoints).
+  const int gridColumns = closed ? columns - 1 : columns;
+  if (!seeds.empty() &&
+    driver.Prepare(problem, static_cast<long long>(seeds.size()), gridColumns, false, false))
   {
     vtkBoostedGridBuilder& grid = driver.Grid();
+    grid.SetClosedRows(closed);
     // exp(t B) is the same for every seed: its closed form once per t (eight times side by side,
     // cga::Orbit::versors), as a 5 x 5 point map (cga::PointMaps) that each seed then costs a
     // matrix-vector product.

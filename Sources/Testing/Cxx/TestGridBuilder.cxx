@@ -15,7 +15,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -343,5 +345,158 @@ TEST(GridBuilder, BuildsCountThePointsOutsideTheClipSphere)
     EXPECT_EQ(grid.BuildCurves(curves, 0, 0, 1), 1);
     EXPECT_EQ(curves->GetNumberOfPoints(), 3);
   }
+}
+
+// A grid whose samples are all usable, built whole in double precision, hands its own samples
+// and sample arrays to the output instead of copying them: the output holds the samples' bits
+// (a zero origin adds nothing: -0 stays -0), as the copies of a piece, of single precision and
+// of a grid with an unusable sample do, and a later build of the same grid still reads them
+// after the first output is gone.
+TEST(GridBuilder, WholeGridsGiveTheSamplesBitsAndStayReadableAfterTheirFirstOutput)
+{
+  constexpr int rows = 3, columns = 7;
+  // Sample (r, c); -0 coordinates in row 1, (12, 0, 0) outside the clip sphere below.
+  auto sampleAt = [](int r, int c, double p[3]) {
+    p[0] = r == 1 ? -0.0 : 2.0 * c;
+    p[1] = r == 1 ? 0.5 * c : -0.0;
+    p[2] = 0.1 * r;
+  };
+  auto sameBits = [](double a, double b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+  };
+  const double center[3] = { 0.0, 0.0, 0.0 };
+  for (const bool dropOne : { false, true })
+  {
+    for (const int precision : { 1, 0 }) // vtkAlgorithm's DOUBLE_PRECISION, SINGLE_PRECISION
+    {
+      vtkBoostedGridBuilder grid(rows, columns, false);
+      const int pair = grid.AddSampleArray("pair", 2);
+      grid.SetClipSphere(center, 11.0);
+      for (int r = 0; r < rows; ++r)
+      {
+        grid.ClearSamples(r, 0, columns);
+        for (int c = 0; c < columns; ++c)
+        {
+          double p[3];
+          sampleAt(r, c, p);
+          if (!(dropOne && r == 2 && c == 3))
+          {
+            grid.SetPoint(r, c, p);
+          }
+          double* values = grid.SampleValues(pair, r, c);
+          values[0] = r - 0.0;
+          values[1] = -0.25 * c;
+        }
+      }
+      // The points of rows [firstRow, lastRow] in order, their values, and the count outside.
+      auto expectSamples = [&](vtkPolyData* output, int firstRow, int lastRow, vtkIdType outside,
+                             const char* what) {
+        SCOPED_TRACE(std::string(what) + (dropOne ? ", one dropped" : ", whole") +
+          (precision ? ", double" : ", float"));
+        vtkDataArray* values = output->GetPointData()->GetArray("pair");
+        ASSERT_TRUE(values);
+        vtkIdType id = 0, expectedOutside = 0;
+        for (int r = firstRow; r <= lastRow; ++r)
+        {
+          for (int c = 0; c < columns; ++c)
+          {
+            if (dropOne && r == 2 && c == 3)
+            {
+              continue;
+            }
+            ASSERT_LT(id, output->GetNumberOfPoints());
+            double expected[3], p[3];
+            sampleAt(r, c, expected);
+            output->GetPoint(id, p);
+            for (int k = 0; k < 3; ++k)
+            {
+              const double written = precision ? expected[k] : static_cast<float>(expected[k]);
+              EXPECT_TRUE(sameBits(p[k], written)) << r << " " << c << " " << k << ": " << p[k];
+            }
+            expectedOutside += expected[0] * expected[0] + expected[1] * expected[1] +
+                expected[2] * expected[2] > 121.0;
+            EXPECT_EQ(values->GetComponent(id, 0), r);
+            EXPECT_EQ(values->GetComponent(id, 1), -0.25 * c);
+            ++id;
+          }
+        }
+        EXPECT_EQ(id, output->GetNumberOfPoints());
+        EXPECT_EQ(outside, expectedOutside);
+        EXPECT_GT(outside, 0);
+      };
+      {
+        vtkNew<vtkPolyData> first;
+        expectSamples(first, 0, rows - 1, grid.BuildSurface(first, 0, rows - 1, precision),
+          "surface");
+      } // the first output, and the arrays it was given, are gone
+      vtkNew<vtkPolyData> curves;
+      expectSamples(curves, 0, rows - 1, grid.BuildCurves(curves, 0, rows - 1, precision),
+        "curves after the surface");
+      vtkNew<vtkPolyData> piece;
+      expectSamples(piece, 1, 2, grid.BuildCurves(piece, 1, 2, precision), "a piece");
+    }
+  }
+}
+
+// Closed rows (SetClosedRows) give the curves of periodic columns without the repeated column:
+// the same points and polylines, whole or cut.
+TEST(GridBuilder, ClosedRowsAreThePeriodicCurvesWithoutTheRepeatedColumn)
+{
+  constexpr int rows = 3, distinct = 9;
+  vtkBoostedGridBuilder periodic(rows, distinct + 1, true), closed(rows, distinct, false);
+  closed.SetClosedRows(true);
+  for (int r = 0; r < rows; ++r)
+  {
+    periodic.ClearSamples(r, 0, distinct + 1);
+    closed.ClearSamples(r, 0, distinct);
+    for (int c = 0; c <= distinct; ++c)
+    {
+      const int sample = c % distinct;
+      const double angle = 2.0 * 3.141592653589793 * sample / distinct;
+      const double p[3] = { std::cos(angle), std::sin(angle), static_cast<double>(r) };
+      // Row 1 is cut at column 4.
+      if (r == 1 && sample == 4)
+      {
+        continue;
+      }
+      periodic.SetPoint(r, c, p);
+      if (c < distinct)
+      {
+        closed.SetPoint(r, c, p);
+      }
+    }
+  }
+  vtkNew<vtkPolyData> fromPeriodic, fromClosed;
+  periodic.BuildCurves(fromPeriodic, 0, rows - 1, 1);
+  closed.BuildCurves(fromClosed, 0, rows - 1, 1);
+  ASSERT_EQ(fromClosed->GetNumberOfPoints(), rows * distinct - 1);
+  ASSERT_EQ(fromClosed->GetNumberOfPoints(), fromPeriodic->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < fromClosed->GetNumberOfPoints(); ++i)
+  {
+    double a[3], b[3];
+    fromPeriodic->GetPoint(i, a);
+    fromClosed->GetPoint(i, b);
+    EXPECT_TRUE(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) << i;
+  }
+  auto cells = [](vtkPolyData* output) {
+    std::vector<std::vector<vtkIdType>> lines;
+    vtkCellArray* array = output->GetLines();
+    vtkIdType count;
+    const vtkIdType* ids;
+    for (array->InitTraversal(); array->GetNextCell(count, ids);)
+    {
+      lines.emplace_back(ids, ids + count);
+    }
+    return lines;
+  };
+  const auto lines = cells(fromClosed);
+  EXPECT_EQ(lines, cells(fromPeriodic));
+  // Rows 0 and 2 closed (their first point again at the end), row 1 one open run through the
+  // seam.
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0].size(), static_cast<size_t>(distinct + 1));
+  EXPECT_EQ(lines[0].front(), lines[0].back());
+  EXPECT_EQ(lines[1].size(), static_cast<size_t>(distinct - 1));
+  EXPECT_EQ(lines[2].front(), lines[2].back());
 }
 } // namespace
