@@ -453,15 +453,18 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
     {
       // Every usable sample is a point (walk's loop without its merging, branch-free); only a
       // finite point can be inside.
-      const double* p = &this->Points[3 * static_cast<size_t>(this->Index(s.Row, s.FirstColumn))];
-      const double* end = p + 3 * static_cast<size_t>(s.LastColumn - s.FirstColumn);
-      for (const double* q = p; q < end; q += 3)
+      for (int c = s.FirstColumn; c < s.LastColumn; ++c)
       {
-        count += std::isfinite(q[0]) & std::isfinite(q[1]) & std::isfinite(q[2]);
+        count += this->Usable(s.Row, c);
       }
-      for (const double* q = p; this->HasClipSphere && q < end; q += 3)
+      if (this->HasClipSphere)
       {
-        insideHere += inside(q);
+        const double* p = &this->Points[3 * static_cast<size_t>(this->Index(s.Row, s.FirstColumn))];
+        const double* end = p + 3 * static_cast<size_t>(s.LastColumn - s.FirstColumn);
+        for (const double* q = p; q < end; q += 3)
+        {
+          insideHere += inside(q);
+        }
       }
     }
     else

@@ -162,10 +162,11 @@ private:
 
   int Index(int row, int column) const { return row * this->Columns + column; }
   // Inline (not through the shared library's PLT): called several times for every sample.
+  // Without branches, so that a loop counting usable samples stays branch-free.
   bool Usable(int row, int column) const
   {
     const double* p = &this->Points[3 * static_cast<size_t>(this->Index(row, column))];
-    return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+    return std::isfinite(p[0]) & std::isfinite(p[1]) & std::isfinite(p[2]);
   }
   /// The grid's normal at a sample from the differences of its usable neighbours (the row's
   /// fallback normal where they give none).
