@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numeric>
 #include <type_traits>
@@ -184,6 +185,16 @@ vtkBoostedGridBuilder::vtkBoostedGridBuilder(int rows, int columns, bool periodi
 {
   this->PointsMemory = vtkBoostedLargeArrays::New<double>(3 * static_cast<size_t>(rows) * columns);
   this->Points = this->PointsMemory.get();
+  this->States = vtkBoostedLargeArrays::New<unsigned char>(static_cast<size_t>(rows) * columns);
+}
+
+void vtkBoostedGridBuilder::BeginSampling()
+{
+  if (!this->SamplingBegun) // a second call (a source sampling twice) changes nothing
+  {
+    this->StatesCurrent = true;
+    this->SamplingBegun = true;
+  }
 }
 
 void vtkBoostedGridBuilder::ClearSamples(int row, int firstColumn, int lastColumn)
@@ -192,6 +203,7 @@ void vtkBoostedGridBuilder::ClearSamples(int row, int firstColumn, int lastColum
   const size_t last = static_cast<size_t>(this->Index(row, lastColumn));
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::fill(this->Points + 3 * first, this->Points + 3 * last, nan);
+  std::fill(this->States.get() + first, this->States.get() + last, 0);
   if (this->SampleNormals)
   {
     std::fill(this->SampleNormals.get() + 3 * first, this->SampleNormals.get() + 3 * last, nan);
@@ -205,17 +217,25 @@ void vtkBoostedGridBuilder::ClearSamples(int row, int firstColumn, int lastColum
 
 void vtkBoostedGridBuilder::SetClipSphere(const double center[3], double radius)
 {
+  // The same sphere again (vtkBoostedGridDriver's Build) leaves SetPoint's notes current.
+  this->StatesCurrent &= this->HasClipSphere && std::equal(center, center + 3, this->ClipCenter) &&
+    radius == this->ClipRadius;
   this->HasClipSphere = true;
   std::copy_n(center, 3, this->ClipCenter);
   this->ClipRadius = radius;
+  this->ClipRadius2 = radius * radius;
 }
 
 void vtkBoostedGridBuilder::SetOrigin(const double origin[3])
 {
+  double kept[3];
   for (int i = 0; i < 3; ++i)
   {
-    this->Origin[i] = origin[i] == 0.0 ? -0.0 : origin[i]; // -0 adds nothing (see Origin)
+    kept[i] = origin[i] == 0.0 ? -0.0 : origin[i]; // -0 adds nothing (see Origin)
   }
+  // Compared bit for bit: -0 and +0 are the same origin, NaN another.
+  this->StatesCurrent &= std::memcmp(kept, this->Origin, sizeof kept) == 0;
+  std::copy_n(kept, 3, this->Origin);
 }
 
 void vtkBoostedGridBuilder::SetRowFallbackNormal(int row, const double normal[3])
@@ -439,12 +459,12 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
   const vtkIdType columnsPerSegment = ColumnsPerItem(segments);
   std::vector<vtkIdType> counts(segments.size(), 0), outsideCounts(segments.size(), 0);
   const cga::Vec3 origin{ this->Origin[0], this->Origin[1], this->Origin[2] };
-  const cga::Vec3 clipCenter{ this->ClipCenter[0], this->ClipCenter[1], this->ClipCenter[2] };
-  const double clipRadius2 = this->ClipRadius * this->ClipRadius;
+  const double clipCenter[3] = { this->ClipCenter[0], this->ClipCenter[1], this->ClipCenter[2] };
+  const double clipRadius2 = this->ClipRadius2;
   // By value: captured by reference, they were loaded again for every sample.
   const auto inside = [origin, clipCenter, clipRadius2](const double* p) {
     return vtkBoostedSphereClip::Inside(
-      { origin.x + p[0], origin.y + p[1], origin.z + p[2] }, clipCenter, clipRadius2);
+      origin.x + p[0], origin.y + p[1], origin.z + p[2], clipCenter, clipRadius2);
   };
   forEach(segments.size(), columnsPerSegment, [&](size_t i) {
     const Segment& s = segments[i];
@@ -452,18 +472,26 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
     if (!merge)
     {
       // Every usable sample is a point (walk's loop without its merging, branch-free); only a
-      // finite point can be inside.
-      for (int c = s.FirstColumn; c < s.LastColumn; ++c)
+      // finite point can be inside. Counted from SetPoint's notes where current: a read of the
+      // points here, after the sampling wrote all of them, came from memory (a fifth of an
+      // orbit's update).
+      if (this->StatesCurrent)
       {
-        count += this->Usable(s.Row, c);
+        const unsigned char* state = &this->States[this->Index(s.Row, s.FirstColumn)];
+        for (int c = 0; c < s.LastColumn - s.FirstColumn; ++c)
+        {
+          count += state[c] & 1;
+          insideHere += state[c] >> 1;
+        }
       }
-      if (this->HasClipSphere)
+      else
       {
         const double* p = &this->Points[3 * static_cast<size_t>(this->Index(s.Row, s.FirstColumn))];
         const double* end = p + 3 * static_cast<size_t>(s.LastColumn - s.FirstColumn);
         for (const double* q = p; q < end; q += 3)
         {
-          insideHere += inside(q);
+          count += Finite(q);
+          insideHere += this->HasClipSphere && inside(q);
         }
       }
     }

@@ -42,6 +42,7 @@
 
 #include "BoostedSurfacesCommonModule.h" // for export macro
 #include "vtkBoostedLargeArrays.h"       // for the sample buffers
+#include "vtkBoostedSphereClip.h"        // for SetPoint's clip test
 #include "vtkSmartPointer.h"             // for the arrays handed to an output
 #include "vtkType.h"                     // for vtkIdType
 
@@ -67,13 +68,25 @@ public:
   /// point. A source far from the origin samples relative to its construction's center, so that
   /// its samples and their normals keep their precision (eps |origin| in the output).
   void SetOrigin(const double origin[3]);
+  /// Sets a sample's point and notes whether it is usable and inside the clip sphere, so that
+  /// building need not read every point again to count them (see BeginSampling).
   void SetPoint(int row, int column, const double point[3])
   {
-    double* p = &this->Points[3 * static_cast<size_t>(this->Index(row, column))];
+    const size_t i = static_cast<size_t>(this->Index(row, column));
+    double* p = &this->Points[3 * i];
     p[0] = point[0];
     p[1] = point[1];
     p[2] = point[2];
+    const bool inside = this->HasClipSphere &
+      vtkBoostedSphereClip::Inside(this->Origin[0] + point[0], this->Origin[1] + point[1],
+        this->Origin[2] + point[2], this->ClipCenter, this->ClipRadius2);
+    this->States[i] = static_cast<unsigned char>(Finite(point) | (inside << 1));
   }
+  /// Called once the origin and the clip sphere are set, before the first SetPoint (by
+  /// vtkBoostedGridDriver): building then counts the usable points and those inside the clip
+  /// sphere from what SetPoint noted. A later change of the origin or the sphere makes it read
+  /// every point again instead, as without BeginSampling.
+  void BeginSampling();
   /// Used where the grid gives no normal (a degenerate neighbourhood): e.g. the plane of the row's curve.
   void SetRowFallbackNormal(int row, const double normal[3]);
 
@@ -165,8 +178,13 @@ private:
   // Without branches, so that a loop counting usable samples stays branch-free.
   bool Usable(int row, int column) const
   {
-    const double* p = &this->Points[3 * static_cast<size_t>(this->Index(row, column))];
-    return std::isfinite(p[0]) & std::isfinite(p[1]) & std::isfinite(p[2]);
+    return Finite(&this->Points[3 * static_cast<size_t>(this->Index(row, column))]);
+  }
+  // Whether the three values are finite: x - x is 0 for a finite x and NaN for an infinite or
+  // NaN one, so one comparison tests all three.
+  static bool Finite(const double* p)
+  {
+    return (p[0] - p[0]) + (p[1] - p[1]) + (p[2] - p[2]) == 0.0;
   }
   /// The grid's normal at a sample from the differences of its usable neighbours (the row's
   /// fallback normal where they give none).
@@ -202,6 +220,12 @@ private:
   bool HasClipSphere = false;
   double ClipCenter[3] = { 0.0, 0.0, 0.0 };
   double ClipRadius = 0.0;
+  double ClipRadius2 = 0.0; // its square, for Inside
+  // Rows x columns, what SetPoint noted of each sample: bit 0 usable, bit 1 inside the clip
+  // sphere (0: unset). Counted instead of the points while StatesCurrent (BeginSampling).
+  vtkBoostedLargeArrays::Buffer<unsigned char> States;
+  bool SamplingBegun = false;
+  bool StatesCurrent = false;
   // 3 x rows x columns, relative to Origin; NaN: not set. PointsMemory's, until a build hands
   // the memory to its output's points (WritePoints), then the output array's, which
   // AdoptedArrays keeps for the builder's later reads.

@@ -98,6 +98,8 @@ bool vtkBoostedGridDriver::Prepare(const std::string& sourceProblem, long long r
     this->Builder->SetRowsPerBlock(rowsPerStrip);
   }
   this->Builder->SetMergeSeam(this->MergeSeam);
+  // Before the sampling: SetPoint notes which samples are inside.
+  this->Builder->SetClipSphere(this->ClipCenter, this->ClipRadius);
   return true;
 }
 
@@ -164,6 +166,7 @@ bool vtkBoostedGridDriver::Sample(vtkIdType begin, vtkIdType end, vtkIdType samp
   const std::function<void(vtkIdType, vtkIdType)>& work)
 {
   bool completed = false;
+  this->Builder->BeginSampling(); // the origin and the clip sphere are set by now
   // An allocation that fails in a worker is one error (Run) and an empty output, like an abort.
   const bool ran = vtkBoostedMemoryBudget::Run(this->Source,
     [&] { completed = vtkBoostedBlockLoop::For(this->Source, begin, end, samplesPerItem, work); });
@@ -182,7 +185,6 @@ bool vtkBoostedGridDriver::Build(vtkPolyData* output)
     // In double precision; single precision is the last step (a cut computed from floats would
     // round twice).
     vtkNew<vtkPolyData> sampled;
-    this->Builder->SetClipSphere(this->ClipCenter, this->ClipRadius);
     const vtkIdType outside = this->Surface
       ? this->Builder->BuildSurface(
           sampled, this->FirstRow, this->LastRow, vtkAlgorithm::DOUBLE_PRECISION)

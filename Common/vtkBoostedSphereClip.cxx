@@ -15,6 +15,7 @@
 #include "vtkPolyData.h"
 
 #include "cga/SegmentSphere.h"
+#include "cga/Vec3.h"
 
 #include <algorithm>
 #include <atomic>
@@ -51,7 +52,7 @@ void vtkBoostedSphereClip::Clip(
     for (vtkIdType i = first; i < last; ++i)
     {
       const cga::Vec3 p = point(i);
-      inside[i] = Inside(p, c, radius * radius);
+      inside[i] = Inside(p.x, p.y, p.z, center, radius * radius);
       chunkInside += inside[i];
     }
     insideCount += chunkInside;

@@ -15,7 +15,6 @@
 #define vtkBoostedSphereClip_h
 
 #include "BoostedSurfacesCommonModule.h" // for export macro
-#include "cga/Vec3.h"                    // for Inside
 
 #include <cmath>  // for Inside
 #include <limits> // for Inside
@@ -30,12 +29,13 @@ public:
   /// Whether p is kept: finite and |p - center|^2 <= radius2 (the radius squared). Clip's test,
   /// also made by vtkBoostedGridBuilder as it writes its points; without branches, so that a loop
   /// over points stays vectorized (the finite test against the largest double: VTK_DOUBLE_MAX is
-  /// 1e299).
-  static bool Inside(const cga::Vec3& p, const cga::Vec3& center, double radius2)
+  /// 1e299). In plain doubles, so that the builder's header needs no header of the core.
+  static bool Inside(double x, double y, double z, const double center[3], double radius2)
   {
     constexpr double largest = std::numeric_limits<double>::max();
-    return (std::abs(p.x) <= largest) & (std::abs(p.y) <= largest) & (std::abs(p.z) <= largest) &
-      (cga::norm2(p - center) <= radius2);
+    const double dx = x - center[0], dy = y - center[1], dz = z - center[2];
+    return (std::abs(x) <= largest) & (std::abs(y) <= largest) & (std::abs(z) <= largest) &
+      (dx * dx + dy * dy + dz * dz <= radius2);
   }
 };
 

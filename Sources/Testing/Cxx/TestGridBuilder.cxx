@@ -1,7 +1,8 @@
 // vtkBoostedGridBuilder's writing pass, checked from its output alone: every usable sample
 // becomes one point with its own values whether its run of columns is whole (the pass's copy of
 // consecutive samples) or has unusable samples (the walk over them), and the count of points
-// outside the clip sphere that the builds return is the one counted here from the written points.
+// outside the clip sphere that the builds return is the one counted here from the written points,
+// whether the builder counts them from the points or from what SetPoint noted (BeginSampling).
 #include "vtkBoostedGridBuilder.h"
 
 #include "vtkCellArray.h"
@@ -301,20 +302,38 @@ TEST(GridBuilder, BuildsCountThePointsOutsideTheClipSphere)
     return count;
   };
   const double center[3] = { 20.0, 2.0, -2.0 };
-  for (double radius : { 1e-3, 5.0, 12.5, 30.0, 1e300 })
+  // The sphere set after the sampling (the builds read the points), before it (they count
+  // SetPoint's notes), and another sphere before it, changed after (the notes are stale: read).
+  enum Order
   {
-    vtkBoostedGridBuilder grid(kRows, kColumns, false);
-    fill(grid);
-    grid.SetClipSphere(center, radius);
-    vtkNew<vtkPolyData> curves, surface;
-    const vtkIdType curvesOutside = grid.BuildCurves(curves, 0, kRows - 1, 1);
-    EXPECT_EQ(curvesOutside, outside(curves, center, radius)) << radius;
-    const vtkIdType surfaceOutside = grid.BuildSurface(surface, 0, kRows - 1, 1);
-    EXPECT_EQ(surfaceOutside, outside(surface, center, radius)) << radius;
-    if (radius == 12.5)
+    After,
+    Before,
+    Changed
+  };
+  for (Order order : { After, Before, Changed })
+  {
+    for (double radius : { 1e-3, 5.0, 12.5, 30.0, 1e300 })
     {
-      EXPECT_GT(curvesOutside, 0);
-      EXPECT_LT(curvesOutside, curves->GetNumberOfPoints());
+      vtkBoostedGridBuilder grid(kRows, kColumns, false);
+      if (order != After)
+      {
+        const double elsewhere[3] = { -50.0, 0.0, 0.0 };
+        grid.SetClipSphere(order == Before ? center : elsewhere, order == Before ? radius : 1.0);
+        grid.BeginSampling();
+      }
+      fill(grid);
+      grid.SetClipSphere(center, radius);
+      vtkNew<vtkPolyData> curves, surface;
+      const vtkIdType curvesOutside = grid.BuildCurves(curves, 0, kRows - 1, 1);
+      EXPECT_EQ(curvesOutside, outside(curves, center, radius)) << radius << " " << order;
+      const vtkIdType surfaceOutside = grid.BuildSurface(surface, 0, kRows - 1, 1);
+      EXPECT_EQ(surfaceOutside, outside(surface, center, radius)) << radius << " " << order;
+      expectEveryUsableSampleOnce(curves, 0, kRows - 1);
+      if (radius == 12.5)
+      {
+        EXPECT_GT(curvesOutside, 0);
+        EXPECT_LT(curvesOutside, curves->GetNumberOfPoints());
+      }
     }
   }
   // A point exactly on the sphere is inside: row 2's samples (20 + c, c / 2, -2) are at squared
@@ -330,20 +349,28 @@ TEST(GridBuilder, BuildsCountThePointsOutsideTheClipSphere)
     EXPECT_EQ(count, outside(curves, center, 4.0));
   }
   // Points that overflow when the origin is added are not finite: outside whatever the radius.
+  // The origin set after the sampling, before it, and changed after it (the notes of SetPoint,
+  // made with a zero origin, would count none outside).
+  for (Order order : { After, Before, Changed })
   {
     vtkBoostedGridBuilder grid(1, 3, false);
+    const double origin[3] = { 1e308, 0.0, 0.0 }, zero[3] = { 0.0, 0.0, 0.0 };
+    if (order != After)
+    {
+      grid.SetOrigin(order == Before ? origin : zero);
+      grid.SetClipSphere(zero, std::numeric_limits<double>::max());
+      grid.BeginSampling();
+    }
     grid.ClearSamples(0, 0, 3);
     const double near[3] = { 1.0, 0.0, 0.0 }, far[3] = { 1e308, 0.0, 0.0 };
     grid.SetPoint(0, 0, near);
     grid.SetPoint(0, 1, far);
     grid.SetPoint(0, 2, near);
-    const double origin[3] = { 1e308, 0.0, 0.0 };
     grid.SetOrigin(origin);
-    const double zero[3] = { 0.0, 0.0, 0.0 };
     grid.SetClipSphere(zero, std::numeric_limits<double>::max());
     vtkNew<vtkPolyData> curves;
-    EXPECT_EQ(grid.BuildCurves(curves, 0, 0, 1), 1);
-    EXPECT_EQ(curves->GetNumberOfPoints(), 3);
+    EXPECT_EQ(grid.BuildCurves(curves, 0, 0, 1), 1) << order;
+    EXPECT_EQ(curves->GetNumberOfPoints(), 3) << order;
   }
 }
 
