@@ -458,14 +458,6 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
   // test on the point written, before any cast to float), counted in one pass over the samples.
   const vtkIdType columnsPerSegment = ColumnsPerItem(segments);
   std::vector<vtkIdType> counts(segments.size(), 0), outsideCounts(segments.size(), 0);
-  const cga::Vec3 origin{ this->Origin[0], this->Origin[1], this->Origin[2] };
-  const double clipCenter[3] = { this->ClipCenter[0], this->ClipCenter[1], this->ClipCenter[2] };
-  const double clipRadius2 = this->ClipRadius2;
-  // By value: captured by reference, they were loaded again for every sample.
-  const auto inside = [origin, clipCenter, clipRadius2](const double* p) {
-    return vtkBoostedSphereClip::Inside(
-      origin.x + p[0], origin.y + p[1], origin.z + p[2], clipCenter, clipRadius2);
-  };
   forEach(segments.size(), columnsPerSegment, [&](size_t i) {
     const Segment& s = segments[i];
     vtkIdType count = 0, insideHere = 0;
@@ -475,13 +467,16 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
       // finite point can be inside. Counted from SetPoint's notes where current: a read of the
       // points here, after the sampling wrote all of them, came from memory (a fifth of an
       // orbit's update).
+      const auto tally = [&](unsigned char state) {
+        count += state & 1;
+        insideHere += state >> 1;
+      };
       if (this->StatesCurrent)
       {
         const unsigned char* state = &this->States[this->Index(s.Row, s.FirstColumn)];
         for (int c = 0; c < s.LastColumn - s.FirstColumn; ++c)
         {
-          count += state[c] & 1;
-          insideHere += state[c] >> 1;
+          tally(state[c]);
         }
       }
       else
@@ -490,8 +485,7 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
         const double* end = p + 3 * static_cast<size_t>(s.LastColumn - s.FirstColumn);
         for (const double* q = p; q < end; q += 3)
         {
-          count += Finite(q);
-          insideHere += this->HasClipSphere && inside(q);
+          tally(this->State(q));
         }
       }
     }
@@ -500,8 +494,8 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
       walk(
         s,
         [&](int c) {
-          insideHere += this->HasClipSphere &&
-            inside(&this->Points[3 * static_cast<size_t>(this->Index(s.Row, c))]);
+          const size_t sample = static_cast<size_t>(this->Index(s.Row, c));
+          insideHere += this->State(&this->Points[3 * sample]) >> 1;
           return count++;
         },
         [](int, long long) {});
@@ -608,7 +602,7 @@ vtkBoostedLargeArrays::Buffer<long long> vtkBoostedGridBuilder::WritePoints(vtkP
     auto writePoints = [&](auto* to) { // double or float
       using Value = std::remove_pointer_t<decltype(to)>;
       // A local copy: the stores through `to` could alias members and captured references.
-      const cga::Vec3 at = origin;
+      const cga::Vec3 at{ this->Origin[0], this->Origin[1], this->Origin[2] };
       const double* from = this->Points;
       for (size_t j = 0; j < n; ++j)
       {

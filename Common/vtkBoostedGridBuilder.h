@@ -77,10 +77,7 @@ public:
     p[0] = point[0];
     p[1] = point[1];
     p[2] = point[2];
-    const bool inside = this->HasClipSphere &
-      vtkBoostedSphereClip::Inside(this->Origin[0] + point[0], this->Origin[1] + point[1],
-        this->Origin[2] + point[2], this->ClipCenter, this->ClipRadius2);
-    this->States[i] = static_cast<unsigned char>(Finite(point) | (inside << 1));
+    this->States[i] = this->State(point);
   }
   /// Called once the origin and the clip sphere are set, before the first SetPoint (by
   /// vtkBoostedGridDriver): building then counts the usable points and those inside the clip
@@ -185,6 +182,15 @@ private:
   static bool Finite(const double* p)
   {
     return (p[0] - p[0]) + (p[1] - p[1]) + (p[2] - p[2]) == 0.0;
+  }
+  // What SetPoint notes of a sample's point p (relative to Origin), and what building counts:
+  // bit 0 usable, bit 1 inside the clip sphere (vtkBoostedSphereClip's test on origin + p).
+  unsigned char State(const double* p) const
+  {
+    const bool inside = this->HasClipSphere &
+      vtkBoostedSphereClip::Inside(this->Origin[0] + p[0], this->Origin[1] + p[1],
+        this->Origin[2] + p[2], this->ClipCenter, this->ClipRadius2);
+    return static_cast<unsigned char>(Finite(p) | (inside << 1));
   }
   /// The grid's normal at a sample from the differences of its usable neighbours (the row's
   /// fallback normal where they give none).
