@@ -78,7 +78,9 @@ def main():
     axes.set_xlabel("generators M")
     axes.set_ylabel("%s seconds per 1,000,000 points (one thread)" % ("CPU" if arguments.cpu else "wall"))
     context = data.get("context", {})
-    axes.set_title("B(p) by direct sum and by tree, %s" % context.get("host_name", ""))
+    # The run's date, kernels and CPU count (a host name says nothing on a cloud machine).
+    axes.set_title("B(p) by direct sum and by tree: %s, %s kernels, %s CPUs" % (
+        context.get("date", "?")[:10], context.get("kernel_isa", "?"), context.get("num_cpus", "?")))
     axes.grid(True, which="both", alpha=0.3)
     axes.legend()
     figure.tight_layout()
