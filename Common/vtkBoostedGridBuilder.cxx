@@ -217,7 +217,8 @@ void vtkBoostedGridBuilder::ClearSamples(int row, int firstColumn, int lastColum
 
 void vtkBoostedGridBuilder::SetClipSphere(const double center[3], double radius)
 {
-  // The same sphere again (vtkBoostedGridDriver's Build) leaves SetPoint's notes current.
+  // The same sphere again (a caller setting it before the sampling and again before building)
+  // leaves SetPoint's notes current.
   this->StatesCurrent &= this->HasClipSphere && std::equal(center, center + 3, this->ClipCenter) &&
     radius == this->ClipRadius;
   this->HasClipSphere = true;
