@@ -97,11 +97,39 @@ endfunction ()
 # boostedsurfaces_add_python_test(<name> <script> <arguments>...): Python.<name>, the script of
 # the current folder run by the build tree's package with /usr/bin/python3 (the interpreter that
 # has ParaView's vtkmodules), never an installed copy, with Testing/Support (python_test_common)
-# on the path.
+# on the path. Not in the sanitizer build (see boostedsurfaces_add_sanitized_python_test).
 function (boostedsurfaces_add_python_test name script)
-  if (BOOSTEDSURFACES_SANITIZE) # no Python module in that build (the top CMakeLists.txt says so)
+  if (BOOSTEDSURFACES_SANITIZE)
     return ()
   endif ()
+  boostedsurfaces_python_test_command(${name} ${script} ${ARGN})
+endfunction ()
+
+# boostedsurfaces_add_sanitized_python_test(<name> <script> <arguments>...): in the sanitizer build
+# only, Python.<name> as boostedsurfaces_add_python_test's, in a Python that preloads GCC's
+# AddressSanitizer runtime (it must come first in a process whose modules are instrumented) and
+# does not look for leaks (the interpreter's own allocations live to its end). With another
+# compiler, or without that runtime, the test is skipped.
+function (boostedsurfaces_add_sanitized_python_test name script)
+  if (NOT BOOSTEDSURFACES_SANITIZE)
+    return ()
+  endif ()
+  set(asan_runtime "")
+  if (CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+    execute_process(COMMAND "${CMAKE_CXX_COMPILER}" -print-file-name=libasan.so
+      OUTPUT_VARIABLE asan_runtime OUTPUT_STRIP_TRAILING_WHITESPACE)
+  endif ()
+  if (NOT IS_ABSOLUTE "${asan_runtime}" OR NOT EXISTS "${asan_runtime}")
+    boostedsurfaces_skip_test("Python.${name}" "GCC's AddressSanitizer runtime (libasan.so)")
+    return ()
+  endif ()
+  boostedsurfaces_python_test_command(${name} ${script} ${ARGN})
+  set_property(TEST Python.${name} APPEND PROPERTY ENVIRONMENT
+    "LD_PRELOAD=${asan_runtime}" "ASAN_OPTIONS=detect_leaks=0")
+endfunction ()
+
+# The test both add: the script, its arguments and PYTHONPATH.
+function (boostedsurfaces_python_test_command name script)
   add_test(NAME Python.${name}
     COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/${script}" ${ARGN})
   set_tests_properties(Python.${name} PROPERTIES ENVIRONMENT

@@ -83,13 +83,21 @@ import fuzz_recipe  # noqa: E402
 import python_test_common as common  # noqa: E402
 
 
+def environment():
+    """The variables a reproducer sets: PYTHONPATH, and in the sanitizer build the preloaded
+    runtime and its options (CMake/BoostedSurfacesTesting.cmake)."""
+    names = ["LD_PRELOAD", "ASAN_OPTIONS"] if "LD_PRELOAD" in os.environ else []
+    return " ".join("%s=%s" % (name, os.environ.get(name, ""))
+                    for name in names + ["PYTHONPATH"])
+
+
 def reproducer(seed, trial):
     """The one line that replays a trial."""
     command = [sys.executable, os.path.abspath(__file__), "--seed", str(seed), "--trial",
                str(trial)]
     if ARGS.memory_budget != "32M":
         command += ["--memory-budget", ARGS.memory_budget]
-    return "PYTHONPATH=%s %s" % (os.environ.get("PYTHONPATH", ""), " ".join(command))
+    return "%s %s" % (environment(), " ".join(command))
 
 
 class MessageLog:
@@ -182,7 +190,8 @@ def simulated_failures():
     """{trial: kind} from BOOSTEDSURFACES_FUZZ_SIMULATE ("crash:2,hang:4"): the harness's own test
     (test_property_fuzz_harness.py) makes those trials go wrong. In the worker: "crash" aborts,
     "hang" sleeps, "cut" writes half a result line and dies (a line that cannot be read), "exit"
-    ends the worker quietly before the trial begins. In the driver: "driver-error" raises at
+    ends the worker quietly before the trial begins, "sanitizer" ends it as AddressSanitizer
+    does (a report on stderr, then exit code 1). In the driver: "driver-error" raises at
     the trial's result (a bug of the driver itself). With --found, "found-crash" and
     "found-hang" make the kept case of that number abort or hang. The item "late-eof" (no
     trial) is simulated_load's."""
@@ -216,6 +225,13 @@ def worker(span):
             os.abort()
         if simulated.get(trial) == "hang":
             time.sleep(3600)
+        if simulated.get(trial) == "sanitizer":
+            sys.stderr.write("==1==ERROR: AddressSanitizer: heap-buffer-overflow on address 0x1\n"
+                             "    #0 0x1 in simulated() simulated.cxx:1\n"
+                             "SUMMARY: AddressSanitizer: heap-buffer-overflow simulated.cxx:1 in "
+                             "simulated()\n" + "".join("  legend %d\n" % i for i in range(20)))
+            sys.stderr.flush()
+            os._exit(1)
         if simulated.get(trial) == "cut":
             sys.stdout.write('END %d [[["bad-' % trial)
             sys.stdout.flush()
@@ -391,10 +407,12 @@ def exit_description(code):
 
 
 def ended_how(code, stderr):
-    """How a worker ended: (its signal or exit code, the last lines of its stderr)."""
+    """How a worker ended: (its signal or exit code, the sanitizers' lines that say what and
+    where if its stderr has them (their reports end in a legend), else its last lines)."""
     stderr.seek(0)
-    tail = stderr.read().decode(errors="replace").strip().splitlines()[-12:]
-    return exit_description(code), " | ".join(tail) or "nothing on stderr"
+    lines = stderr.read().decode(errors="replace").strip().splitlines()
+    report = [line for line in lines if line.startswith("SUMMARY: ") or "runtime error:" in line]
+    return exit_description(code), " | ".join(report or lines[-12:]) or "nothing on stderr"
 
 
 def drive_span(first, end, class_names, failures):
@@ -538,8 +556,7 @@ def replay_found():
         if code != 0:
             failed += 1
             print("  " + "\n  ".join(output.strip().splitlines()[-15:]))
-            print("  reproduce: PYTHONPATH=%s %s" % (os.environ.get("PYTHONPATH", ""),
-                                                   " ".join(command)))
+            print("  reproduce: %s %s" % (environment(), " ".join(command)))
     print("%d of %d kept recipes failed" % (failed, len(cases)))
     return 1 if failed or not cases else 0
 

@@ -1,10 +1,10 @@
 """The property fuzz's harness (test_property_fuzz.py) catches what it promises to: a trial that
-kills its worker process, a trial that hangs, a worker that writes a line that cannot be read or
-ends before its trials, and an error of the driver itself are each reported as failures with the
-one-line reproducers of their trials, the trials after them still run (or fail too, after the
-driver's error), no trial is lost unreported, and the run fails; so is a kept recipe
-(fuzz_found.json, --found) that kills its process or hangs. The failures are simulated
-(BOOSTEDSURFACES_FUZZ_SIMULATE) in short runs.
+kills its worker process (a sanitizer's report among them), a trial that hangs, a worker that
+writes a line that cannot be read or ends before its trials, and an error of the driver itself
+are each reported as failures with the one-line reproducers of their trials, the trials after
+them still run (or fail too, after the driver's error), no trial is lost unreported, and the run
+fails; so is a kept recipe (fuzz_found.json, --found) that kills its process or hangs. The
+failures are simulated (BOOSTEDSURFACES_FUZZ_SIMULATE) in short runs.
 
     PYTHONPATH=<build>/lib/python3.11/site-packages:Testing/Support \\
         /usr/bin/python3 Testing/Python/test_property_fuzz_harness.py -v
@@ -17,8 +17,8 @@ import unittest
 FUZZ = os.path.join(os.path.dirname(os.path.abspath(__file__)), "test_property_fuzz.py")
 
 
-def run_fuzz(simulate, *arguments):
-    environment = dict(os.environ, BOOSTEDSURFACES_FUZZ_SIMULATE=simulate)
+def run_fuzz(simulate, *arguments, **variables):
+    environment = dict(os.environ, BOOSTEDSURFACES_FUZZ_SIMULATE=simulate, **variables)
     return subprocess.run([sys.executable, FUZZ, "--seed", "5"] + list(arguments),
                           env=environment, capture_output=True, text=True, timeout=300)
 
@@ -76,6 +76,18 @@ class HarnessTest(unittest.TestCase):
                       shown(result))
         # Trials 0, 2 and 4 ran: each class's updates were counted.
         self.assertGreaterEqual(updates(result), 3, shown(result))
+
+    def test_a_sanitizers_report_is_the_failures_text(self):
+        # The sanitizer build's fuzz: a worker ended by AddressSanitizer (or UBSan) fails its
+        # trial with the report's SUMMARY line, not the legend that ends the report, and the
+        # reproducer sets the preloaded runtime too (here an empty, harmless LD_PRELOAD).
+        result = run_fuzz("sanitizer:1", "--trials", "3", "--timeout", "30", LD_PRELOAD="",
+                          ASAN_OPTIONS="detect_leaks=0")
+        self.assertFailures(result, {1: "[crash] the process died (exit code 1): SUMMARY: "
+                                        "AddressSanitizer: heap-buffer-overflow simulated.cxx:1"})
+        self.assertNotIn("legend", result.stdout, shown(result))
+        self.assertIn("reproduce: LD_PRELOAD= ASAN_OPTIONS=detect_leaks=0 PYTHONPATH=",
+                      result.stdout, shown(result))
 
     def test_a_worker_that_ends_before_its_first_trial_fails_its_span(self):
         result = run_fuzz("exit:0", "--trials", "3", "--timeout", "30")
