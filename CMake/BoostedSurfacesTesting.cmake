@@ -108,24 +108,31 @@ endfunction ()
 # boostedsurfaces_add_sanitized_python_test(<name> <script> <arguments>...): in the sanitizer build
 # only, Python.<name> as boostedsurfaces_add_python_test's, in a Python that preloads GCC's
 # AddressSanitizer runtime (it must come first in a process whose modules are instrumented) and
-# does not look for leaks (the interpreter's own allocations live to its end). With another
-# compiler, or without that runtime, the test is skipped.
+# libstdc++ (without it the runtime, started before any C++ library, cannot pass on a C++
+# exception: its __cxa_throw check fails, as in vtkArrayCalculator's parser), and does not look
+# for leaks (the interpreter's own allocations live to its end). With another compiler, or
+# without those libraries, the test is skipped.
 function (boostedsurfaces_add_sanitized_python_test name script)
   if (NOT BOOSTEDSURFACES_SANITIZE)
     return ()
   endif ()
-  set(asan_runtime "")
-  if (CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
-    execute_process(COMMAND "${CMAKE_CXX_COMPILER}" -print-file-name=libasan.so
-      OUTPUT_VARIABLE asan_runtime OUTPUT_STRIP_TRAILING_WHITESPACE)
-  endif ()
-  if (NOT IS_ABSOLUTE "${asan_runtime}" OR NOT EXISTS "${asan_runtime}")
-    boostedsurfaces_skip_test("Python.${name}" "GCC's AddressSanitizer runtime (libasan.so)")
-    return ()
-  endif ()
+  set(preload "")
+  foreach (library IN ITEMS libasan.so libstdc++.so)
+    set(path "")
+    if (CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+      execute_process(COMMAND "${CMAKE_CXX_COMPILER}" -print-file-name=${library}
+        OUTPUT_VARIABLE path OUTPUT_STRIP_TRAILING_WHITESPACE)
+    endif ()
+    if (NOT IS_ABSOLUTE "${path}" OR NOT EXISTS "${path}")
+      boostedsurfaces_skip_test("Python.${name}" "GCC's ${library}")
+      return ()
+    endif ()
+    list(APPEND preload "${path}")
+  endforeach ()
+  list(JOIN preload ":" preload)
   boostedsurfaces_python_test_command(${name} ${script} ${ARGN})
   set_property(TEST Python.${name} APPEND PROPERTY ENVIRONMENT
-    "LD_PRELOAD=${asan_runtime}" "ASAN_OPTIONS=detect_leaks=0")
+    "LD_PRELOAD=${preload}" "ASAN_OPTIONS=detect_leaks=0")
 endfunction ()
 
 # The test both add: the script, its arguments and PYTHONPATH.
