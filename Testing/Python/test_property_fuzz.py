@@ -406,13 +406,19 @@ def exit_description(code):
     return "exit code %d" % code
 
 
-def ended_how(code, stderr):
-    """How a worker ended: (its signal or exit code, the sanitizers' lines that say what and
-    where if its stderr has them (their reports end in a legend), else its last lines)."""
-    stderr.seek(0)
-    lines = stderr.read().decode(errors="replace").strip().splitlines()
+def telling_lines(text, count):
+    """A dead process's output in brief: the sanitizers' lines that say what and where if it has
+    them (their reports end in a legend), else its last `count` lines."""
+    lines = text.strip().splitlines()
     report = [line for line in lines if line.startswith("SUMMARY: ") or "runtime error:" in line]
-    return exit_description(code), " | ".join(report or lines[-12:]) or "nothing on stderr"
+    return report or lines[-count:]
+
+
+def ended_how(code, stderr):
+    """How a worker ended: (its signal or exit code, telling_lines of its stderr)."""
+    stderr.seek(0)
+    lines = telling_lines(stderr.read().decode(errors="replace"), 12)
+    return exit_description(code), " | ".join(lines) or "nothing on stderr"
 
 
 def drive_span(first, end, class_names, failures):
@@ -555,7 +561,7 @@ def replay_found():
                                                case["defect"], verdict), flush=True)
         if code != 0:
             failed += 1
-            print("  " + "\n  ".join(output.strip().splitlines()[-15:]))
+            print("  " + "\n  ".join(telling_lines(output, 15)))
             print("  reproduce: %s %s" % (environment(), " ".join(command)))
     print("%d of %d kept recipes failed" % (failed, len(cases)))
     return 1 if failed or not cases else 0
