@@ -66,6 +66,11 @@ def mark(ok):
     return " ✓" if ok else " ✗"
 
 
+def natural(name):
+    """Sort key: names in order, their numbers by value (M:4 before M:16)."""
+    return [int(t) if t.isdigit() else t for t in re.split(r"(\d+)", name)]
+
+
 class Tables:
     def __init__(self, runs):
         self.runs = runs
@@ -141,7 +146,6 @@ class Tables:
     def threaded_rows(self, prefixes):
         """Rows with a 1- and a 2-thread variant: wall (CPU) each and the wall ratio."""
         rows = []
-        natural = lambda name: [int(t) if t.isdigit() else t for t in re.split(r"(\d+)", name)]
         names = sorted({re.sub(r"/threads:\d+$", "", n) for n in self.runs
                         if re.search(r"/threads:\d+$", n) and n.split("/")[0] in prefixes},
                        key=natural)
@@ -210,9 +214,12 @@ class Tables:
         # curvatures, not a target.
         torusCurvatures = self.rate("TorusCurvatures/threads:1")
         rows = []
-        names = [n for n in self.runs if n.endswith("/threads:1") and n.split("/")[0] in
-                 {"Torus", "TorusCurvatures", "BoostedSurface", "HopfFibration", "CurvaturePatch",
-                  "ConformalOrbit", "DipoleField"}]
+        # The yardsticks first, then the sources by name.
+        yardsticks = ["Torus/threads:1", "TorusCurvatures/threads:1"]
+        names = [n for n in yardsticks if n in self.runs] + sorted(
+            (n for n in self.runs if n.endswith("/threads:1") and n.split("/")[0] in
+             {"BoostedSurface", "HopfFibration", "CurvaturePatch", "ConformalOrbit",
+              "DipoleField"}), key=lambda n: natural(n[: -len("/threads:1")]))
         for one in names:
             base = one[: -len("/threads:1")]
             yardstick = base in ("Torus", "TorusCurvatures")
@@ -234,7 +241,7 @@ class Tables:
 
     def others(self):
         rows = []
-        for name, run in self.runs.items():
+        for name, run in sorted(self.runs.items(), key=lambda item: natural(item[0])):
             if name in self.used:
                 continue
             counter = run["counters"].get("time/point/unknown")
