@@ -236,6 +236,20 @@ TEST(CurvatureOperators, SquaredCircleDistanceMatchesTheDualCircle)
 }
 
 // Eq 17 and 21: the generators against their formulas, with tau from Conformal.h.
+/// kappa / (d^2 + epsilon) of eq 17-18 by the full product: d = up(p) _| C* for the osculating
+/// circle of center x - n/kappa and radius 1/|kappa| in the plane of unit normal `plane`, C* =
+/// sigma ^ pi its dual (sigma the dual sphere, pi the dual plane through the center).
+double osculatingWeightOfDualCircle(
+  const CurvatureControlPoint& c, double kappa, Vec3 plane, Vec3 p, double epsilon)
+{
+  const Vec3 center = c.location - c.normal / kappa;
+  const double r = 1.0 / std::fabs(kappa);
+  const Multivector dual =
+    (up(center) - 0.5 * r * r * ni()) ^ (vector(plane) + dot(plane, center) * ni());
+  const Multivector x = leftContraction(up(p), dual);
+  return kappa / ((x * x).grade(0)[0] + epsilon);
+}
+
 TEST(CurvatureOperators, ControlPointGeneratorsMatchTheFormula)
 {
   Random random(21);
@@ -258,19 +272,10 @@ TEST(CurvatureOperators, ControlPointGeneratorsMatchTheFormula)
     double expectedWeight = 0.0;
     for (const CurvatureControlPoint& c : points)
     {
+      // The circle along u lies in the plane (u, n), the one along v in (v, n).
       const Vec3 v = cross(c.normal, c.uDirection);
-      double w = 0.0;
-      const double kappas[2] = { c.kappaU, c.kappaV };
-      const Vec3 planes[2] = { v, c.uDirection }; // the circle along u lies in the plane (u, n)
-      for (int i = 0; i < 2; ++i)
-      {
-        const Vec3 center = c.location - c.normal / kappas[i];
-        const double r = 1.0 / std::fabs(kappas[i]);
-        const Multivector dual = (up(center) - 0.5 * r * r * ni()) ^
-          (vector(planes[i]) + dot(planes[i], center) * ni());
-        const Multivector x = leftContraction(up(p), dual);
-        w += kappas[i] / ((x * x).grade(0)[0] + epsilon);
-      }
+      double w = osculatingWeightOfDualCircle(c, c.kappaU, v, p, epsilon) +
+        osculatingWeightOfDualCircle(c, c.kappaV, c.uDirection, p, epsilon);
       const double dp2 = -2.0 * dot(up(p), up(c.location));
       w /= falloff * dp2 + epsilon;
       expected -= w * nullPointPair(c.location, c.normal);
@@ -321,6 +326,80 @@ TEST(CurvatureOperators, OsculatingCirclesFixTheControlPoint)
   patch.kappaV = 0.25;
   ASSERT_TRUE(patch.validate().empty());
   EXPECT_TRUE(pointsNear(mapWith(patch, 0.0, 0.0), patch.frame.origin, 1e-12));
+}
+
+// Eq 17-18 (osculatingCircles, one control point without the falloff): E = -W tau(x, n), W the
+// two osculating circles' kappa / (d^2 + eps) by the full product.
+TEST(CurvatureOperators, OsculatingCirclesMatchTheFormula)
+{
+  Random random(17);
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    CurvatureControlPoint c;
+    c.location = random.vec3(2.0);
+    c.normal = random.unit() * 3.0;
+    c.uDirection = random.unit();
+    c.kappaU = random.uniform(-1.0, 1.0);
+    c.kappaV = trial == 0 ? 0.0 : random.uniform(-1.0, 1.0); // a flat direction weighs nothing
+    ASSERT_TRUE(c.normalize().empty());
+    const double epsilon = random.uniform(0.01, 1.0);
+    const Vec3 p = random.vec3(3.0);
+    const Vec3 v = cross(c.normal, c.uDirection);
+    const double w = osculatingWeightOfDualCircle(c, c.kappaU, v, p, epsilon) +
+      (c.kappaV == 0.0 ? 0.0 : osculatingWeightOfDualCircle(c, c.kappaV, c.uDirection, p, epsilon));
+    const CurvatureGenerator g = osculatingCircles(c, p, epsilon);
+    EXPECT_LT(relativeDifference(toMultivector(g.exponent), -w * nullPointPair(c.location, c.normal)),
+      1e-10) << "trial " << trial;
+    EXPECT_NEAR(g.weight, w, 1e-10 * (1.0 + std::fabs(w))) << "trial " << trial;
+    EXPECT_EQ(osculatingTerm(c, c.uDirection, c.kappaU, p, epsilon) +
+        osculatingTerm(c, v, c.kappaV, p, epsilon), g.weight) << "trial " << trial;
+  }
+}
+
+// Eq 16 (translatedTangents): E = -1/2 (kappaU tau(o + b v, n) + kappaV tau(o + a u, n)) by
+// Conformal.h's tau, with the weight (kappaU + kappaV) / 2; the patch's generator is it.
+TEST(CurvatureOperators, TranslatedTangentsMatchTheFormula)
+{
+  Random random(16);
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    const PatchFrame frame = randomFrame(random);
+    const double kappaU = random.uniform(-1.0, 1.0), kappaV = random.uniform(-1.0, 1.0);
+    const double a = random.uniform(-2.0, 2.0), b = random.uniform(-2.0, 2.0);
+    const Multivector expected = -0.5 *
+      (kappaU * nullPointPair(frame.at(0.0, b), frame.normal) +
+        kappaV * nullPointPair(frame.at(a, 0.0), frame.normal));
+    const CurvatureGenerator g = translatedTangents(frame, kappaU, kappaV, a, b);
+    EXPECT_LT(relativeDifference(toMultivector(g.exponent), expected), 1e-12) << "trial " << trial;
+    EXPECT_EQ(g.weight, 0.5 * (kappaU + kappaV));
+
+    CurvaturePatch patch;
+    patch.method = CurvatureMethod::TranslatedTangents;
+    patch.frame = frame;
+    patch.kappaU = kappaU;
+    patch.kappaV = kappaV;
+    ASSERT_TRUE(patch.validate().empty());
+    const CurvatureGenerator atPatch = patch.generatorAt(a, b);
+    EXPECT_LT(relativeDifference(atPatch.exponent, g.exponent), 1e-12) << "trial " << trial;
+    EXPECT_EQ(atPatch.weight, g.weight);
+  }
+}
+
+// The corners of eq 24-26 sit at the patch's corners, in the order the header gives: t runs from
+// corner 1 to 2 along u, s from 1 to 3 along v.
+TEST(CurvatureOperators, CornerLocationsAreThePatchsCorners)
+{
+  Random random(26);
+  CurvaturePatch patch;
+  patch.frame = randomFrame(random);
+  patch.sizeU = 3.0;
+  patch.sizeV = 1.5;
+  const std::array<Vec3, 4> corners = patch.cornerLocations();
+  const Vec3 o = patch.frame.origin, u = patch.frame.u, v = patch.frame.v;
+  EXPECT_TRUE(pointsNear(corners[0], o - 1.5 * u - 0.75 * v, 1e-15));
+  EXPECT_TRUE(pointsNear(corners[1], o + 1.5 * u - 0.75 * v, 1e-15));
+  EXPECT_TRUE(pointsNear(corners[2], o - 1.5 * u + 0.75 * v, 1e-15));
+  EXPECT_TRUE(pointsNear(corners[3], o + 1.5 * u + 0.75 * v, 1e-15));
 }
 
 std::array<CornerGenerator, 4> cornersAlong(const std::array<Vec3, 4>& directions)
@@ -480,6 +559,41 @@ TEST(CurvatureOperators, BadInputIsReported)
     p.method = CurvatureMethod::Bilinear;
     p.corners[2].weight = nan;
   }).empty());
+}
+
+// A control point's normalize() names what is wrong with it.
+TEST(CurvatureOperators, BadControlPointsAreNamed)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  auto problem = [](auto change) {
+    CurvatureControlPoint c;
+    c.normal = Vec3{ 0.0, 0.0, 2.0 };
+    change(c);
+    return c.normalize();
+  };
+  EXPECT_EQ(problem([](CurvatureControlPoint&) {}), "");
+  const std::string notFinite =
+    "a control point has a non-finite location, normal, u direction or curvature";
+  EXPECT_EQ(problem([&](CurvatureControlPoint& c) { c.location.x = nan; }), notFinite);
+  EXPECT_EQ(problem([&](CurvatureControlPoint& c) { c.normal.y = inf; }), notFinite);
+  EXPECT_EQ(problem([&](CurvatureControlPoint& c) { c.uDirection.z = nan; }), notFinite);
+  EXPECT_EQ(problem([&](CurvatureControlPoint& c) { c.kappaU = -inf; }), notFinite);
+  EXPECT_EQ(problem([&](CurvatureControlPoint& c) { c.kappaV = nan; }), notFinite);
+  EXPECT_EQ(problem([](CurvatureControlPoint& c) { c.normal = Vec3{}; }),
+    "a control point has a zero normal");
+  const std::string parallel = "a control point's u direction is zero or parallel to its normal";
+  EXPECT_EQ(problem([](CurvatureControlPoint& c) { c.uDirection = Vec3{}; }), parallel);
+  EXPECT_EQ(problem([](CurvatureControlPoint& c) { c.uDirection = Vec3{ 0.0, 0.0, -5.0 }; }),
+    parallel);
+  // A normal of any non-zero length, a u direction with a part along the normal: made unit and
+  // orthogonal.
+  CurvatureControlPoint c;
+  c.normal = Vec3{ 0.0, 0.0, 1e-200 };
+  c.uDirection = Vec3{ 3.0, 0.0, 4.0 };
+  ASSERT_EQ(c.normalize(), "");
+  EXPECT_TRUE(pointsNear(c.normal, Vec3{ 0.0, 0.0, 1.0 }, 1e-15));
+  EXPECT_TRUE(pointsNear(c.uDirection, Vec3{ 1.0, 0.0, 0.0 }, 1e-15));
 }
 
 TEST(CurvatureOperators, DirectionsOfAnyNonZeroLengthGiveTheSameFrame)
