@@ -15,7 +15,7 @@ from vtkmodules.vtkFiltersSources import vtkSphereSource
 
 from boostedsurfaces import (vtkBoostedSurfaceSource, vtkConformalOrbitSource, vtkCurvaturePatchSource,
                              vtkDipoleFieldSource, vtkHopfFibrationSource,
-                             vtkPointPairDeformationFilter)
+                             vtkPointPairDeformationFilter, vtkPointPairFitFilter)
 
 import python_test_common as common
 
@@ -47,6 +47,19 @@ def hopf_mesh():
     return hopf
 
 
+def fit_filter():
+    # The target is VTK's (a filter of the package upstream would be refused by the budget too,
+    # and the fit would only see an empty target): a larger sphere of the same points.
+    sphere = vtkSphereSource()
+    target = vtkSphereSource()
+    target.SetRadius(0.55)
+    fit = vtkPointPairFitFilter()
+    fit.SetInputConnection(sphere.GetOutputPort())
+    fit.SetTargetConnection(target.GetOutputPort())
+    fit.AddGenerator(0, 0, 0.3, 0, 0, 1, 0.1)
+    return fit
+
+
 # Each class at its defaults (a few thousand samples: well above 1 KiB, far below any default).
 ALGORITHMS = {
     "BoostedSurface": vtkBoostedSurfaceSource,
@@ -58,6 +71,7 @@ ALGORITHMS = {
     "ConformalOrbit": vtkConformalOrbitSource,
     "DeformationPolyData": sphere_filter,
     "DeformationImage": image_filter,
+    "Fit": fit_filter,
 }
 
 

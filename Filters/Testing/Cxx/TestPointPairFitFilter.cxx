@@ -510,6 +510,30 @@ TEST(PointPairFitFilter, BadInputGivesAClearErrorAndEmptyOutputs)
   };
   vtkSmartPointer<vtkPolyData> huge = scaled(mesh, 1e154), hugeTarget = scaled(mesh, -1e154);
   vtkSmartPointer<vtkPolyData> farTarget = scaled(target, 1e76);
+  // The mesh with the point weights "Trust": `value` at point 3, `others` at every other point.
+  const auto weighted = [&mesh](double value, double others) {
+    vtkNew<vtkDoubleArray> weights;
+    weights->SetName("Trust");
+    for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+    {
+      weights->InsertNextValue(i == 3 ? value : others);
+    }
+    vtkNew<vtkPolyData> copy;
+    copy->ShallowCopy(mesh);
+    copy->GetPointData()->AddArray(weights);
+    return vtkSmartPointer<vtkPolyData>(copy);
+  };
+  const auto withWeights = [](vtkPolyData* data) {
+    return [data](vtkPointPairFitFilter* f) {
+      f->SetInputData(data);
+      f->SetPointWeightArrayName("Trust");
+    };
+  };
+  const double inf = std::numeric_limits<double>::infinity();
+  vtkSmartPointer<vtkPolyData> negativeWeight = weighted(-1.0, 1.0),
+                               nanWeight = weighted(std::nan(""), 1.0),
+                               infiniteWeight = weighted(inf, 1.0), zeroWeights = weighted(0.0, 0.0),
+                               overflowingWeights = weighted(1e308, 1e308);
   // A structured grid whose extent (2 x 2 x 2) does not count its points (the sphere's).
   vtkNew<vtkStructuredGrid> malformed;
   malformed->SetDimensions(2, 2, 2);
@@ -552,6 +576,16 @@ TEST(PointPairFitFilter, BadInputGivesAClearErrorAndEmptyOutputs)
       "no cells" },
     { "missing weight array", [&](vtkPointPairFitFilter* f) { f->SetPointWeightArrayName("No"); },
       "'No'" },
+    { "negative point weight", withWeights(negativeWeight),
+      "the point weight -1 of point 3 ('Trust') is negative or not finite" },
+    { "NaN point weight", withWeights(nanWeight),
+      "the point weight nan of point 3 ('Trust') is negative or not finite" },
+    { "infinite point weight", withWeights(infiniteWeight),
+      "the point weight inf of point 3 ('Trust') is negative or not finite" },
+    { "every point weight zero", withWeights(zeroWeights),
+      "the point weights ('Trust') must not all be zero, and their sum must be finite" },
+    { "point weights whose sum overflows", withWeights(overflowingWeights),
+      "the point weights ('Trust') must not all be zero, and their sum must be finite" },
     { "empty weight range", [&](vtkPointPairFitFilter* f) { f->SetWeightRange(1.0, -1.0); },
       "WeightRange" },
     { "start outside the range", [&](vtkPointPairFitFilter* f) { f->SetWeightRange(1.0, 2.0); },

@@ -641,6 +641,14 @@ TEST(ConformalOrbitSource, DegenerateGeneratorsWarn)
   output->GetPoint(0, p);
   EXPECT_EQ(p[0], 1.0);
   EXPECT_EQ(p[2], 3.0);
+  // The identity's seeds are still cut by the clip sphere, so a bad one is the same error as with
+  // any B: the warnings, then one error and an empty output.
+  identity->SetClipRadius(std::numeric_limits<double>::quiet_NaN());
+  identity->Update();
+  EXPECT_EQ(events.errors, 1);
+  EXPECT_NE(events.lastError.find("ClipRadius must be a positive number"), std::string::npos)
+    << events.lastError;
+  EXPECT_EQ(identity->GetOutput()->GetNumberOfPoints(), 0);
 
   // P and Q not coprime: one warning, the reduced knot's period.
   vtkNew<vtkConformalOrbitSource> multiple;

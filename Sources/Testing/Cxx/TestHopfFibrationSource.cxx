@@ -532,6 +532,65 @@ TEST(HopfFibrationSource, HugeBasePointIndexOrCountIsAnErrorAndChangesNothing)
   EXPECT_EQ(source->GetNumberOfBasePoints(), 1);
 }
 
+// An input point at SphereCenter has no direction: it is skipped with one warning that counts
+// the skipped points, and the others give their fibers as without it. All of them there: the
+// warning and an empty output, no error.
+TEST(HopfFibrationSource, InputPointsAtTheSphereCenterAreSkippedWithAWarning)
+{
+  const double center[3] = { 0.5, -1.0, 2.0 };
+  auto sourceOf = [&center](const std::vector<std::array<double, 3>>& offsets) {
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    for (const auto& d : offsets)
+    {
+      points->InsertNextPoint(center[0] + d[0], center[1] + d[1], center[2] + d[2]);
+    }
+    vtkNew<vtkPolyData> input;
+    input->SetPoints(points);
+    vtkSmartPointer<vtkHopfFibrationSource> source = vtkSmartPointer<vtkHopfFibrationSource>::New();
+    source->SetInputData(input);
+    source->SetSamplingModeToInputPoints();
+    source->SetSphereCenter(center[0], center[1], center[2]);
+    source->SetFiberResolution(12);
+    return source;
+  };
+  vtkSmartPointer<vtkHopfFibrationSource> withCenter =
+    sourceOf({ { 0, 0, 0 }, { 1, 0.5, 0 }, { 0, 0, 0 }, { -0.2, 0.3, 2 } });
+  vtkSmartPointer<vtkHopfFibrationSource> without = sourceOf({ { 1, 0.5, 0 }, { -0.2, 0.3, 2 } });
+  EventCounter events(withCenter);
+  withCenter->Update();
+  without->Update();
+  EXPECT_EQ(events.errors, 0) << events.lastError;
+  EXPECT_EQ(events.warnings, 1);
+  EXPECT_NE(events.lastWarning.find(
+              "2 input point(s) at SphereCenter have no direction and were skipped"),
+    std::string::npos)
+    << events.lastWarning;
+  vtkPolyData* a = withCenter->GetOutput();
+  vtkPolyData* b = without->GetOutput();
+  ASSERT_EQ(b->GetNumberOfLines(), 2); // the two fibers
+  ASSERT_EQ(a->GetNumberOfLines(), 2);
+  ASSERT_EQ(a->GetNumberOfPoints(), b->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    a->GetPoint(i, p);
+    b->GetPoint(i, q);
+    EXPECT_EQ(p[0], q[0]);
+    EXPECT_EQ(p[1], q[1]);
+    EXPECT_EQ(p[2], q[2]);
+  }
+
+  vtkSmartPointer<vtkHopfFibrationSource> allAtCenter = sourceOf({ { 0, 0, 0 } });
+  EventCounter allEvents(allAtCenter);
+  allAtCenter->Update();
+  EXPECT_EQ(allEvents.errors, 0) << allEvents.lastError;
+  EXPECT_EQ(allEvents.warnings, 1);
+  EXPECT_NE(allEvents.lastWarning.find("1 input point(s) at SphereCenter"), std::string::npos)
+    << allEvents.lastWarning;
+  EXPECT_EQ(allAtCenter->GetOutput()->GetNumberOfPoints(), 0);
+}
+
 TEST(HopfFibrationSource, TwistorMeshOfOneFiberPerStripWarnsAndIsEmpty)
 {
   // Meridian strips of one latitude, and one base point: no quads can be made (the points came
