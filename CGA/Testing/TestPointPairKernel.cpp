@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -106,6 +107,22 @@ void expectBatchEqualsPointwise(const Case& c, ExponentialRule rule, const char*
   }
   EXPECT_EQ(differing, 0u) << label;
   EXPECT_EQ(unchanged, expectedUnchanged) << label;
+}
+
+// BOOSTEDSURFACES_KERNEL_ISA names the instruction set to use where the CPU has it; without it, or
+// with a name that is not available here, the kernel takes the widest one available (the last).
+// ctest runs this test three times: as it finds it, and with the variable set to "baseline" and
+// to "sse9", which is no instruction set (CGA/Testing/CMakeLists.txt).
+TEST(PointPairKernel, TheEnvironmentChoosesTheInstructionSet)
+{
+  const std::vector<std::string> available = kernel::availableInstructionSets();
+  ASSERT_FALSE(available.empty());
+  EXPECT_EQ(available.front(), "baseline");
+  const char* requested = std::getenv("BOOSTEDSURFACES_KERNEL_ISA");
+  const bool usable =
+    requested && std::find(available.begin(), available.end(), requested) != available.end();
+  EXPECT_EQ(kernel::activeInstructionSet(), usable ? std::string(requested) : available.back())
+    << "BOOSTEDSURFACES_KERNEL_ISA=" << (requested ? requested : "(not set)");
 }
 
 TEST(PointPairKernel, EveryInstructionSetMatchesThePointwiseMap)
