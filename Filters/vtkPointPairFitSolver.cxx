@@ -425,18 +425,6 @@ void setBounds(ceres::Problem& solverProblem, double* block, const vtkPointPairF
 }
 } // namespace
 
-bool vtkPointPairFitSolver::MeanSquare(const vtkPointPairFitProblem& problem,
-  const std::vector<cga::GeneratorParameters>& generators, double& meanSquare)
-{
-  FitData data(problem, generators, cga::FittedParameters{ false, false, false, false });
-  if (!data.Evaluate(false))
-  {
-    return false;
-  }
-  meanSquare = data.MeanSquare();
-  return true;
-}
-
 bool vtkPointPairFitSolver::Solve(const vtkPointPairFitProblem& problem,
   const std::vector<cga::GeneratorParameters>& start,
   const std::vector<cga::GeneratorParameters>& first, double progressBegin, double progressEnd,

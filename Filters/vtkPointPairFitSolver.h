@@ -61,11 +61,6 @@ namespace vtkPointPairFitSolver
 /// tetrahedron with a vertex at 1e150 aborted in vtkTriangle::EvaluatePosition).
 constexpr double LargestSurfaceCoordinate = 1e75;
 
-/// The squared weighted RMS residual of `generators`; false when one is not usable or a point's
-/// image or residual is not finite, or after an abort.
-bool MeanSquare(const vtkPointPairFitProblem& problem,
-  const std::vector<cga::GeneratorParameters>& generators, double& meanSquare);
-
 /// Fits the unknowns of `start` (their bounds and the regularization's theta_0), beginning at
 /// `first` (the same kinds and count; within the bounds), reporting progress in [progressBegin,
 /// progressEnd] of the filter's. False with `problem` empty after an abort, with `problem` set

@@ -2,12 +2,18 @@
 // sparse product terms, the core's pieces) are inlined whatever the compiler's size budget: GCC
 // otherwise leaves some out of line in the long functions of PointMapCore.h, and an out-of-line
 // call passes its lane vectors through memory (measured: a third of the derivative's
-// instructions). Under AddressSanitizer it is a plain `inline`: forcing the instrumented code
-// into one body made the AVX2 kernel file take 416 s to compile instead of 26 s, and inlining
-// changes no result (the core is compiled with -ffp-contract=off).
+// instructions). Under AddressSanitizer and in the coverage build (BOOSTED_PLAIN_INLINE, set by
+// BOOSTEDSURFACES_COVERAGE) it is a plain `inline`: forcing the instrumented code into one body
+// made the AVX2 kernel file take 416 s to compile instead of 26 s under ASan (more than 17
+// minutes with gcov's counters), and inlining changes no result (the core is compiled with
+// -ffp-contract=off).
 #pragma once
 
-#if (defined(__GNUC__) || defined(__clang__)) && !defined(__SANITIZE_ADDRESS__)
+#if defined(__SANITIZE_ADDRESS__) && !defined(BOOSTED_PLAIN_INLINE)
+#define BOOSTED_PLAIN_INLINE 1
+#endif
+
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(BOOSTED_PLAIN_INLINE)
 #define BOOSTED_FORCE_INLINE inline __attribute__((always_inline))
 #else
 #define BOOSTED_FORCE_INLINE inline

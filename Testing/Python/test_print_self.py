@@ -6,7 +6,7 @@ forgets fails here.
 For each setter with a getter: the line "<Name>: ..." is printed, and it changes when the property
 is set to another value (a bool flipped, a clamped number set to the end of its range it is not at,
 another number moved by 1, a string set to a new text). For each list: after one row is added, the
-line "<Row> 0: (...)" shows that row's values.
+line "<Row> 0: (...)" shows that row's values. For each array selection: an enabled array's name.
 
     PYTHONPATH=<build>/lib/python3.11/site-packages python3 test_print_self.py -v
 """
@@ -71,6 +71,17 @@ class PrintSelfTest(unittest.TestCase):
                                             name, tuple(arguments), before))
                     if types == ["str"]:
                         self.assertIn(arguments[0], after)
+
+    def test_every_array_selection_prints_its_enabled_arrays(self):
+        found = 0
+        for model in MODELS:
+            for getter in model.selections:
+                with self.subTest(cls=model.name, selection=getter):
+                    instance = model.cls()
+                    getattr(instance, getter)().EnableArray("PrintSelfArray")
+                    self.assertIn("'PrintSelfArray'", str(instance))
+                    found += 1
+        self.assertGreater(found, 0)  # the deformation filter has its array selections
 
     def test_every_list_prints_its_rows(self):
         for model in MODELS:
