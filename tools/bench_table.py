@@ -222,7 +222,7 @@ class Tables:
               "DipoleField"}), key=lambda n: natural(n[: -len("/threads:1")]))
         for one in names:
             base = one[: -len("/threads:1")]
-            yardstick = base in ("Torus", "TorusCurvatures")
+            yardstick = one in yardsticks
             two = f"{base}/threads:2"
             rate = self.rate(one)
             versus = "–"
