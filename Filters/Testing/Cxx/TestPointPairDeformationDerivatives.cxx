@@ -733,3 +733,63 @@ TEST(PointPairDeformationDerivatives, WhereTheDerivativeOverflowsTheImageIsStill
   EXPECT_TRUE(images[0] == images[1] && images[0] == images[2]);
 }
 } // namespace
+
+namespace
+{
+// A lone dilation of weight w about the origin scales a point p next to it by about
+// e^(S w / eps) (the closed form of ALoneDilationHasItsClosedFormScaleAndDefect at r ~ 0): with
+// w = 0.9, eps = 0.01, 1.2e39, beyond the largest float, while the images of p = 1e-30 and 1e-20,
+// 1.2e9 and 1.2e19, are not.
+TEST(PointPairDeformationDerivatives, ASingleScaleBeyondTheLargestFloatIsAnError)
+{
+  FieldSetup setup;
+  setup.generators = { { GeneratorKind::Dilation, { 0, 0, 0 }, { 0, 0, 1 }, 0.0, 0.9 } };
+  setup.epsilon = 0.01;
+  vtkNew<vtkPoints> points;
+  points->SetDataType(VTK_FLOAT);
+  points->InsertNextPoint(1e-30, 0.0, 0.0);
+  points->InsertNextPoint(0.0, 1e-20, 0.0);
+  points->InsertNextPoint(0.0, 0.0, 3.0); // far: a scale of e^0.1
+  vtkNew<vtkPolyData> data;
+  data->SetPoints(points);
+  const double expectedScale = std::exp(0.9 / 0.01);
+  ASSERT_GT(expectedScale, static_cast<double>(std::numeric_limits<float>::max()));
+  for (const bool scale : { false, true })
+  {
+    for (const int precision : { vtkAlgorithm::DEFAULT_PRECISION, vtkAlgorithm::DOUBLE_PRECISION })
+    {
+      vtkNew<vtkPointPairDeformationFilter> filter;
+      EventCounter events(filter);
+      filter->SetInputData(data);
+      configure(filter, setup);
+      filter->SetComputeConformalScale(scale);
+      filter->SetOutputPointsPrecision(precision);
+      filter->Update();
+      vtkPointSet* output = filter->GetOutput();
+      const std::string what = std::string(scale ? "with" : "without") + " ConformalScale, " +
+        (precision == vtkAlgorithm::DOUBLE_PRECISION ? "double" : "float") + " output";
+      if (scale && precision == vtkAlgorithm::DEFAULT_PRECISION)
+      {
+        EXPECT_EQ(events.errors, 1) << what;
+        EXPECT_NE(events.lastError.find("the ConformalScale of 2 of 3 points is beyond the "
+                                        "largest single-precision value"),
+          std::string::npos)
+          << events.lastError;
+        EXPECT_EQ(output->GetNumberOfPoints(), 0) << what;
+        continue;
+      }
+      EXPECT_EQ(events.errors, 0) << what << ": " << events.lastError;
+      ASSERT_EQ(output->GetNumberOfPoints(), 3) << what;
+      EXPECT_NEAR(output->GetPoint(0)[0] / (1e-30 * expectedScale), 1.0, 1e-6) << what;
+      EXPECT_NEAR(output->GetPoint(1)[1] / (1e-20 * expectedScale), 1.0, 1e-6) << what;
+      if (scale)
+      {
+        vtkDataArray* scales = output->GetPointData()->GetArray("ConformalScale");
+        ASSERT_NE(scales, nullptr);
+        EXPECT_EQ(scales->GetDataType(), VTK_DOUBLE);
+        EXPECT_NEAR(scales->GetComponent(0, 0) / expectedScale, 1.0, 1e-12) << what;
+      }
+    }
+  }
+}
+} // namespace
