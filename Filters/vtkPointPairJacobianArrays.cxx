@@ -78,8 +78,9 @@ double scaledColumns(const double* jacobian, double columns[3][3])
   return scale;
 }
 
-// Squared lengths in this range are computed and square-rooted without overflow or underflow.
-constexpr double SafeLow = 1e-280, SafeHigh = 1e280;
+// Squared lengths in this range are computed without overflow or underflow, and so is the ratio
+// of two of them (at most 1e280 either way; with 1e-280 and 1e280 it overflowed).
+constexpr double SafeLow = 1e-140, SafeHigh = 1e140;
 
 // out = image scaled to the length of n, directly, when both squared lengths are in the safe
 // range (the common case); false otherwise (then the caller scales apart).

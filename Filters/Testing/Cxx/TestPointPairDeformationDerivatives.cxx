@@ -31,6 +31,7 @@
 #include <functional>
 #include <iostream>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -788,6 +789,61 @@ TEST(PointPairDeformationDerivatives, ASingleScaleBeyondTheLargestFloatIsAnError
         ASSERT_NE(scales, nullptr);
         EXPECT_EQ(scales->GetDataType(), VTK_DOUBLE);
         EXPECT_NEAR(scales->GetComponent(0, 0) / expectedScale, 1.0, 1e-12) << what;
+      }
+    }
+  }
+}
+} // namespace
+
+namespace
+{
+// n' = |n| cof(J) n / |cof(J) n| is linear in |n|: a normal of any length comes out as the unit
+// normal's image times that length. Here where J is about s I with s = e^(w / 0.01) (a lone
+// dilation's center), so cof(J) n and J t1 x J t2 are about s^2 |n|: with s = 1e-80, |n| = 1e38 the
+// ratio of the squared lengths (1e76 / 1e-244) overflowed to an infinite normal, and with s = 1e80,
+// |n| = 1e-135 it underflowed (n' from cof(J), with ConformalScale, which needs J); s = 1e-30 and
+// 1e30 with |n| = 1e100 and 1e-100 did the same for n' from the images of two tangents (the
+// normals alone).
+TEST(PointPairDeformationDerivatives, NormalsOfExtremeLengthKeepTheirLengthWhereJIsExtreme)
+{
+  const Vec3 unit = cga::normalized(Vec3{ 0.3, -0.5, 0.8 });
+  for (const double weight : { -1.84, 1.84, -0.69, 0.69 })
+  {
+    FieldSetup setup;
+    setup.generators = { { GeneratorKind::Dilation, { 0, 0, 0 }, { 0, 0, 1 }, 0.0, weight } };
+    setup.epsilon = 0.01;
+    for (const bool jacobian : { false, true })
+    {
+      // The point next to the center, with the unit normal and the normal of extreme length.
+      auto normalFor = [&](double length) {
+        vtkNew<vtkPoints> points;
+        points->SetDataType(VTK_DOUBLE);
+        points->InsertNextPoint(1e-3, -2e-3, 0.5e-3);
+        vtkNew<vtkDoubleArray> normals;
+        normals->SetNumberOfComponents(3);
+        normals->InsertNextTuple3(length * unit.x, length * unit.y, length * unit.z);
+        vtkNew<vtkPolyData> data;
+        data->SetPoints(points);
+        data->GetPointData()->SetNormals(normals);
+        vtkNew<vtkPointPairDeformationFilter> filter;
+        EventCounter events(filter);
+        filter->SetInputData(data);
+        configure(filter, setup);
+        filter->SetComputeConformalScale(jacobian);
+        filter->Update();
+        EXPECT_EQ(events.errors + events.warnings, 0) << events.lastError << events.lastWarning;
+        return tupleOf(filter->GetOutput()->GetPointData()->GetNormals(), 0);
+      };
+      const Vec3 expected = normalFor(1.0);
+      ASSERT_NEAR(cga::norm(expected), 1.0, 1e-15);
+      for (const double length : { 1e38, 1e-135, 1e100, 1e-100, 1e150, 1e-150 })
+      {
+        const Vec3 n = normalFor(length);
+        std::ostringstream what;
+        what << "weight " << weight << ", |n| " << length
+             << (jacobian ? ", from J" : ", from two tangents");
+        EXPECT_TRUE(cga::isFinite(n)) << what.str();
+        EXPECT_LE(cga::norm(n / length - expected), 1e-14) << what.str();
       }
     }
   }
