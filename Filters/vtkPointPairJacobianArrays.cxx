@@ -154,8 +154,18 @@ bool transformNormal(const double* jacobian, const double n[3], double out[3])
   cross(c[1], c[2], c23);
   cross(c[2], c[0], c31);
   cross(c[0], c[1], c12);
-  const double m[3] = { n[0] / size / scales[0], n[1] / size / scales[1],
-    n[2] / size / scales[2] };
+  double m[3] = { n[0] / size / scales[0], n[1] / size / scales[1], n[2] / size / scales[2] };
+  if (!(largestEntry<3>(m) < 1e307))
+  {
+    // A column scale below about 1e-307 (J about 1e-310 I: a dilation's strong contraction) would
+    // overflow the sum (at most 6 max |m_i|): the same direction, each factor taken relative to
+    // the smallest scale.
+    const double smallest = std::min({ scales[0], scales[1], scales[2] });
+    for (int i = 0; i < 3; ++i)
+    {
+      m[i] = n[i] / size * (smallest / scales[i]);
+    }
+  }
   double image[3];
   for (int i = 0; i < 3; ++i)
   {

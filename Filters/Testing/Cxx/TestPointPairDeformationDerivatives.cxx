@@ -33,6 +33,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -797,6 +798,40 @@ TEST(PointPairDeformationDerivatives, ASingleScaleBeyondTheLargestFloatIsAnError
 
 namespace
 {
+// The deformed normal n' and ConformalScale (NaN without J) at the point (1e-3, -2e-3, 0.5e-3),
+// next to the center of the dilations below, with the normal n; no error or warning expected.
+std::pair<Vec3, double> normalNextToTheCenter(const FieldSetup& setup, Vec3 n, bool jacobian)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataType(VTK_DOUBLE);
+  points->InsertNextPoint(1e-3, -2e-3, 0.5e-3);
+  vtkNew<vtkDoubleArray> normals;
+  normals->SetNumberOfComponents(3);
+  normals->InsertNextTuple3(n.x, n.y, n.z);
+  vtkNew<vtkPolyData> data;
+  data->SetPoints(points);
+  data->GetPointData()->SetNormals(normals);
+  vtkNew<vtkPointPairDeformationFilter> filter;
+  EventCounter events(filter);
+  filter->SetInputData(data);
+  configure(filter, setup);
+  filter->SetComputeConformalScale(jacobian);
+  filter->Update();
+  EXPECT_EQ(events.errors + events.warnings, 0) << events.lastError << events.lastWarning;
+  vtkPointData* out = filter->GetOutput()->GetPointData();
+  return { tupleOf(out->GetNormals(), 0),
+    jacobian ? out->GetArray("ConformalScale")->GetComponent(0, 0)
+             : std::numeric_limits<double>::quiet_NaN() };
+}
+
+FieldSetup loneDilation(double weight)
+{
+  FieldSetup setup;
+  setup.generators = { { GeneratorKind::Dilation, { 0, 0, 0 }, { 0, 0, 1 }, 0.0, weight } };
+  setup.epsilon = 0.01;
+  return setup;
+}
+
 // n' = |n| cof(J) n / |cof(J) n| is linear in |n|: a normal of any length comes out as the unit
 // normal's image times that length. Here where J is about s I with s = e^(w / 0.01) (a lone
 // dilation's center), so cof(J) n and J t1 x J t2 are about s^2 |n|: with s = 1e-80, |n| = 1e38 the
@@ -809,36 +844,14 @@ TEST(PointPairDeformationDerivatives, NormalsOfExtremeLengthKeepTheirLengthWhere
   const Vec3 unit = cga::normalized(Vec3{ 0.3, -0.5, 0.8 });
   for (const double weight : { -1.84, 1.84, -0.69, 0.69 })
   {
-    FieldSetup setup;
-    setup.generators = { { GeneratorKind::Dilation, { 0, 0, 0 }, { 0, 0, 1 }, 0.0, weight } };
-    setup.epsilon = 0.01;
+    const FieldSetup setup = loneDilation(weight);
     for (const bool jacobian : { false, true })
     {
-      // The point next to the center, with the unit normal and the normal of extreme length.
-      auto normalFor = [&](double length) {
-        vtkNew<vtkPoints> points;
-        points->SetDataType(VTK_DOUBLE);
-        points->InsertNextPoint(1e-3, -2e-3, 0.5e-3);
-        vtkNew<vtkDoubleArray> normals;
-        normals->SetNumberOfComponents(3);
-        normals->InsertNextTuple3(length * unit.x, length * unit.y, length * unit.z);
-        vtkNew<vtkPolyData> data;
-        data->SetPoints(points);
-        data->GetPointData()->SetNormals(normals);
-        vtkNew<vtkPointPairDeformationFilter> filter;
-        EventCounter events(filter);
-        filter->SetInputData(data);
-        configure(filter, setup);
-        filter->SetComputeConformalScale(jacobian);
-        filter->Update();
-        EXPECT_EQ(events.errors + events.warnings, 0) << events.lastError << events.lastWarning;
-        return tupleOf(filter->GetOutput()->GetPointData()->GetNormals(), 0);
-      };
-      const Vec3 expected = normalFor(1.0);
+      const Vec3 expected = normalNextToTheCenter(setup, unit, jacobian).first;
       ASSERT_NEAR(cga::norm(expected), 1.0, 1e-15);
       for (const double length : { 1e38, 1e-135, 1e100, 1e-100, 1e150, 1e-150 })
       {
-        const Vec3 n = normalFor(length);
+        const Vec3 n = normalNextToTheCenter(setup, unit * length, jacobian).first;
         std::ostringstream what;
         what << "weight " << weight << ", |n| " << length
              << (jacobian ? ", from J" : ", from two tangents");
@@ -847,5 +860,22 @@ TEST(PointPairDeformationDerivatives, NormalsOfExtremeLengthKeepTheirLengthWhere
       }
     }
   }
+}
+
+// Next to the center of a lone dilation of weight -7.14 J is about e^-714 I = 1.4e-310 I, a
+// subnormal with about 45 bits: the normal from cof(J) (with ConformalScale) once took each
+// column's 1 / 1.4e-310, which overflows, and left n unchanged as if J flattened the tangent
+// plane; the two tangents' images (the normals alone) gave the normal. Both agree now, to J's own
+// precision.
+TEST(PointPairDeformationDerivatives, NormalsFromJAndFromTangentsAgreeWhereJIsSubnormal)
+{
+  const FieldSetup setup = loneDilation(-7.14);
+  const Vec3 n{ 0.6, 0.0, 0.8 };
+  const Vec3 fromTangents = normalNextToTheCenter(setup, n, false).first;
+  const auto [fromJ, scale] = normalNextToTheCenter(setup, n, true);
+  EXPECT_GT(scale, 0.0);
+  EXPECT_LT(scale, std::numeric_limits<double>::min()); // subnormal
+  EXPECT_GT(cga::norm(fromTangents - n), 0.1);          // the map turns it
+  EXPECT_LE(cga::norm(fromJ - fromTangents), 1e-12);
 }
 } // namespace
