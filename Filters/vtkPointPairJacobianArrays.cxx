@@ -68,11 +68,14 @@ double scaledColumns(const double* jacobian, double columns[3][3])
 {
   const double scale = largestEntry<9>(jacobian);
   const double inverse = scale > 0.0 ? 1.0 / scale : 0.0;
+  // 1 / scale overflows for a subnormal scale (J about 1e-310 I): then each entry divided by it.
+  const bool divide = !std::isfinite(inverse);
   for (int row = 0; row < 3; ++row)
   {
     for (int column = 0; column < 3; ++column)
     {
-      columns[column][row] = jacobian[3 * row + column] * inverse;
+      const double entry = jacobian[3 * row + column];
+      columns[column][row] = divide ? entry / scale : entry * inverse;
     }
   }
   return scale;

@@ -798,13 +798,21 @@ TEST(PointPairDeformationDerivatives, ASingleScaleBeyondTheLargestFloatIsAnError
 
 namespace
 {
-// The deformed normal n' and ConformalScale (NaN without J) at the point (1e-3, -2e-3, 0.5e-3),
-// next to the center of the dilations below, with the normal n; no error or warning expected.
-std::pair<Vec3, double> normalNextToTheCenter(const FieldSetup& setup, Vec3 n, bool jacobian)
+// At the point (1e-3, -2e-3, 0.5e-3), next to the center of the dilations below, with the normal n:
+// the deformed normal n', and with `jacobian` ConformalScale and ConformalityDefect (else NaN); no
+// error or warning expected.
+struct NextToTheCenter
+{
+  Vec3 normal;
+  double scale, defect;
+};
+const Vec3 kNextToTheCenter{ 1e-3, -2e-3, 0.5e-3 };
+
+NextToTheCenter normalNextToTheCenter(const FieldSetup& setup, Vec3 n, bool jacobian)
 {
   vtkNew<vtkPoints> points;
   points->SetDataType(VTK_DOUBLE);
-  points->InsertNextPoint(1e-3, -2e-3, 0.5e-3);
+  points->InsertNextPoint(kNextToTheCenter.x, kNextToTheCenter.y, kNextToTheCenter.z);
   vtkNew<vtkDoubleArray> normals;
   normals->SetNumberOfComponents(3);
   normals->InsertNextTuple3(n.x, n.y, n.z);
@@ -816,12 +824,14 @@ std::pair<Vec3, double> normalNextToTheCenter(const FieldSetup& setup, Vec3 n, b
   filter->SetInputData(data);
   configure(filter, setup);
   filter->SetComputeConformalScale(jacobian);
+  filter->SetComputeConformalityDefect(jacobian);
   filter->Update();
   EXPECT_EQ(events.errors + events.warnings, 0) << events.lastError << events.lastWarning;
   vtkPointData* out = filter->GetOutput()->GetPointData();
+  const double none = std::numeric_limits<double>::quiet_NaN();
   return { tupleOf(out->GetNormals(), 0),
-    jacobian ? out->GetArray("ConformalScale")->GetComponent(0, 0)
-             : std::numeric_limits<double>::quiet_NaN() };
+    jacobian ? out->GetArray("ConformalScale")->GetComponent(0, 0) : none,
+    jacobian ? out->GetArray("ConformalityDefect")->GetComponent(0, 0) : none };
 }
 
 FieldSetup loneDilation(double weight)
@@ -847,11 +857,11 @@ TEST(PointPairDeformationDerivatives, NormalsOfExtremeLengthKeepTheirLengthWhere
     const FieldSetup setup = loneDilation(weight);
     for (const bool jacobian : { false, true })
     {
-      const Vec3 expected = normalNextToTheCenter(setup, unit, jacobian).first;
+      const Vec3 expected = normalNextToTheCenter(setup, unit, jacobian).normal;
       ASSERT_NEAR(cga::norm(expected), 1.0, 1e-15);
       for (const double length : { 1e38, 1e-135, 1e100, 1e-100, 1e150, 1e-150 })
       {
-        const Vec3 n = normalNextToTheCenter(setup, unit * length, jacobian).first;
+        const Vec3 n = normalNextToTheCenter(setup, unit * length, jacobian).normal;
         std::ostringstream what;
         what << "weight " << weight << ", |n| " << length
              << (jacobian ? ", from J" : ", from two tangents");
@@ -863,19 +873,26 @@ TEST(PointPairDeformationDerivatives, NormalsOfExtremeLengthKeepTheirLengthWhere
 }
 
 // Next to the center of a lone dilation of weight -7.14 J is about e^-714 I = 1.4e-310 I, a
-// subnormal with about 45 bits: the normal from cof(J) (with ConformalScale) once took each
-// column's 1 / 1.4e-310, which overflows, and left n unchanged as if J flattened the tangent
-// plane; the two tangents' images (the normals alone) gave the normal. Both agree now, to J's own
-// precision.
-TEST(PointPairDeformationDerivatives, NormalsFromJAndFromTangentsAgreeWhereJIsSubnormal)
+// subnormal with about 45 bits. The normal from cof(J) (with J's arrays) once took each column's
+// 1 / 1.4e-310, which overflows, and left n unchanged as if J flattened the tangent plane, while
+// the two tangents' images (the normals alone) gave the normal; ConformalityDefect took J's
+// 1 / 1.4e-310 and gave 1. Now both normals agree, and the scale and the defect are
+// ALoneDilationHasItsClosedFormScaleAndDefect's closed forms, to J's own precision.
+TEST(PointPairDeformationDerivatives, WhereJIsSubnormalTheNormalsScaleAndDefectStayRight)
 {
-  const FieldSetup setup = loneDilation(-7.14);
+  const double weight = -7.14;
+  const FieldSetup setup = loneDilation(weight);
   const Vec3 n{ 0.6, 0.0, 0.8 };
-  const Vec3 fromTangents = normalNextToTheCenter(setup, n, false).first;
-  const auto [fromJ, scale] = normalNextToTheCenter(setup, n, true);
-  EXPECT_GT(scale, 0.0);
+  const Vec3 fromTangents = normalNextToTheCenter(setup, n, false).normal;
+  const NextToTheCenter fromJ = normalNextToTheCenter(setup, n, true);
+  EXPECT_GT(cga::norm(fromTangents - n), 0.1); // the map turns it
+  EXPECT_LE(cga::norm(fromJ.normal - fromTangents), 1e-12);
+  const double r2 = cga::norm2(kNextToTheCenter);
+  const double d = r2 + setup.epsilon;
+  const double g = -2.0 * weight * r2 / (d * d);
+  const double scale = std::exp(weight / d) * std::cbrt(std::fabs(1.0 + g));
   EXPECT_LT(scale, std::numeric_limits<double>::min()); // subnormal
-  EXPECT_GT(cga::norm(fromTangents - n), 0.1);          // the map turns it
-  EXPECT_LE(cga::norm(fromJ - fromTangents), 1e-12);
+  EXPECT_NEAR(fromJ.scale / scale, 1.0, 1e-12);
+  EXPECT_NEAR(fromJ.defect, 1.0 - 1.0 / std::fabs(1.0 + g), 1e-12); // 0.43
 }
 } // namespace
