@@ -734,19 +734,23 @@ TEST(PointPairDeformationDerivatives, WhereTheDerivativeOverflowsTheImageIsStill
   }
   EXPECT_TRUE(images[0] == images[1] && images[0] == images[2]);
 }
-} // namespace
 
-namespace
+// A lone dilation of weight w about the origin along z (eps 0.01), the field of the tests below.
+FieldSetup loneDilation(double weight)
 {
+  FieldSetup setup;
+  setup.generators = { { GeneratorKind::Dilation, { 0, 0, 0 }, { 0, 0, 1 }, 0.0, weight } };
+  setup.epsilon = 0.01;
+  return setup;
+}
+
 // A lone dilation of weight w about the origin scales a point p next to it by about
 // e^(S w / eps) (the closed form of ALoneDilationHasItsClosedFormScaleAndDefect at r ~ 0): with
 // w = 0.9, eps = 0.01, 1.2e39, beyond the largest float, while the images of p = 1e-30 and 1e-20,
 // 1.2e9 and 1.2e19, are not.
 TEST(PointPairDeformationDerivatives, ASingleScaleBeyondTheLargestFloatIsAnError)
 {
-  FieldSetup setup;
-  setup.generators = { { GeneratorKind::Dilation, { 0, 0, 0 }, { 0, 0, 1 }, 0.0, 0.9 } };
-  setup.epsilon = 0.01;
+  const FieldSetup setup = loneDilation(0.9);
   vtkNew<vtkPoints> points;
   points->SetDataType(VTK_FLOAT);
   points->InsertNextPoint(1e-30, 0.0, 0.0);
@@ -794,10 +798,7 @@ TEST(PointPairDeformationDerivatives, ASingleScaleBeyondTheLargestFloatIsAnError
     }
   }
 }
-} // namespace
 
-namespace
-{
 // At the point (1e-3, -2e-3, 0.5e-3), next to the center of the dilations below, with the normal n:
 // the deformed normal n', and with `jacobian` ConformalScale and ConformalityDefect (else NaN); no
 // error or warning expected.
@@ -832,14 +833,6 @@ NextToTheCenter normalNextToTheCenter(const FieldSetup& setup, Vec3 n, bool jaco
   return { tupleOf(out->GetNormals(), 0),
     jacobian ? out->GetArray("ConformalScale")->GetComponent(0, 0) : none,
     jacobian ? out->GetArray("ConformalityDefect")->GetComponent(0, 0) : none };
-}
-
-FieldSetup loneDilation(double weight)
-{
-  FieldSetup setup;
-  setup.generators = { { GeneratorKind::Dilation, { 0, 0, 0 }, { 0, 0, 1 }, 0.0, weight } };
-  setup.epsilon = 0.01;
-  return setup;
 }
 
 // n' = |n| cof(J) n / |cof(J) n| is linear in |n|: a normal of any length comes out as the unit
