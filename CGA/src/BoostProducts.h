@@ -1,6 +1,6 @@
 // Internal: the products of the exponentials and of the sandwich (PointMapCore.h), built at
-// compile time: B ^ B, Q Q, Q _| B; K X (even times vector into odd) and <(K X) ~K>_1; K no (the
-// terms of K X for X = no, whose one operand slot holds its coefficient). applyProduct<kWedge>
+// compile time: B ^ B, Q Q, Q _| B; K X (even times vector into odd) and <(K X) ~K>_1; K e_j (the
+// terms of K X for X = e_j, whose one operand slot holds its coefficient). applyProduct<kWedge>
 // and the others evaluate them as straight-line code (SparseProduct.h).
 //
 // Internal linkage only (constexpr objects in an unnamed namespace): see ProductTerms.h.
@@ -20,9 +20,11 @@ constexpr SparseProduct kQuadvectorSquare{ Quadvector::kBlades, Quadvector::kBla
 constexpr SparseProduct kRightContraction{ Quadvector::kBlades, Bivector::kBlades, Bivector::kBlades };
 constexpr SparseProduct kEvenTimesVector{ kEvenBlades, ConformalVector::kBlades, kOddBlades };
 constexpr SparseProduct kOddTimesEvenToVector{ kOddBlades, kEvenBlades, ConformalVector::kBlades };
-constexpr SparseProduct kEvenTimesOrigin{ kEvenBlades,
-                                          std::array<unsigned, 1>{ ConformalVector::kBlades[ConformalVector::NO] },
-                                          kOddBlades };
+// K e_j for each basis vector e_j (ConformalVector order): the terms of K X that e_j contributes.
+template <int J>
+constexpr SparseProduct kEvenTimesBasis{ kEvenBlades,
+                                         std::array<unsigned, 1>{ ConformalVector::kBlades[J] },
+                                         kOddBlades };
 } // namespace
 } // namespace detail
 } // namespace cga

@@ -489,6 +489,16 @@ BOOSTED_FORCE_INLINE void keepSandwichInRange(const ValueOf<T>& m, T* k, int cou
   }
 }
 
+/// ~K for a full even K (detail::pack order): its bivector part negated.
+template <typename T>
+BOOSTED_FORCE_INLINE void reverseEven(const T* k, T* reversed)
+{
+  for (int s = 0; s < kEven; ++s)
+  {
+    reversed[s] = (s >= 1 && s <= kBivector) ? -1.0 * k[s] : k[s];
+  }
+}
+
 /// <K X ~K>_1 for a full even K (detail::pack order) as two sparse products: the odd element
 /// K X, then only the grade-1 part of (K X) ~K. Always inlined: for callers compiled for several
 /// instruction sets (BOOSTED_LANE_CLONES), where an out-of-line copy would run the baseline's.
@@ -496,10 +506,7 @@ template <typename T>
 BOOSTED_FORCE_INLINE void sandwichEvenInlined(const T* k, const T* x, T* r)
 {
   T reversed[kEven], odd[kOdd];
-  for (int s = 0; s < kEven; ++s)
-  {
-    reversed[s] = (s >= 1 && s <= kBivector) ? -1.0 * k[s] : k[s];
-  }
+  reverseEven(k, reversed);
   detail::applyProduct<detail::kEvenTimesVector>(k, x, odd);
   detail::applyProduct<detail::kOddTimesEvenToVector>(odd, reversed, r);
 }
@@ -511,19 +518,27 @@ void sandwichEven(const T* k, const T* x, T* r)
   sandwichEvenInlined(k, x, r);
 }
 
-/// <K no ~K>_1 for a full even K: sandwichEven of the origin, with only the terms of K X that
-/// no contributes (detail::kEvenTimesOrigin).
+/// <K e_J ~K>_1 for a full even K and its reverse: sandwichEven of basis vector J
+/// (ConformalVector order) with only the terms of K X that e_J contributes
+/// (detail::kEvenTimesBasis). Where K is finite these are sandwichEven's bits: each sum of K X
+/// starts at +0, which the left-out terms (zeros) leave as it is; where K holds an infinity or
+/// NaN, sandwichEven's terms 0 * inf give NaN that these do not.
+template <int J, typename T>
+BOOSTED_FORCE_INLINE void sandwichBasisInlined(const T* k, const T* reversed, T* r)
+{
+  T odd[kOdd];
+  const T one[1] = { splat<T>(1.0) };
+  detail::applyProduct<detail::kEvenTimesBasis<J>>(k, one, odd);
+  detail::applyProduct<detail::kOddTimesEvenToVector>(odd, reversed, r);
+}
+
+/// <K no ~K>_1 for a full even K (sandwichBasisInlined of the origin).
 template <typename T>
 void sandwichOrigin(const T* k, T* r)
 {
-  T reversed[kEven], odd[kOdd];
-  for (int s = 0; s < kEven; ++s)
-  {
-    reversed[s] = (s >= 1 && s <= kBivector) ? -1.0 * k[s] : k[s];
-  }
-  const T one[1] = { splat<T>(1.0) };
-  detail::applyProduct<detail::kEvenTimesOrigin>(k, one, odd);
-  detail::applyProduct<detail::kOddTimesEvenToVector>(odd, reversed, r);
+  T reversed[kEven];
+  reverseEven(k, reversed);
+  sandwichBasisInlined<NO>(k, reversed, r);
 }
 
 /// m sqrt(l1) (a, the hyperbolic angle of B's hyperbolic plane) above which the field's frame maps
