@@ -12,6 +12,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 
 #include <gtest/gtest.h>
 
@@ -175,10 +176,12 @@ TEST(GridBuilder, WholeAndCutRunsWriteEveryUsableSampleOnce)
 
 // Rows longer than one of the pass's segments (16,384 columns): a whole row is one polyline of
 // consecutive points (closed with periodic columns), and a row with one unusable sample in its
-// second segment or its first is cut there, in rows before and after whole ones.
-TEST(GridBuilder, LongRowsAreOnePolylineOrCutWhereASampleIsUnusable)
+// second segment or its first is cut there, in rows before and after whole ones. The test below
+// runs it at 40,001 columns and at 32,769 (a periodic row of exactly two segments), on one thread
+// and on two (one row's segments written by both).
+void expectLongRowsAreOnePolylineOrCutWhereASampleIsUnusable(int columns)
 {
-  constexpr int rows = 4, columns = 40001;
+  constexpr int rows = 4;
   // Unusable: row 1 at column 20000 (its second segment), row 2 at column 5 (its first).
   auto usableHere = [](int r, int c) { return !((r == 1 && c == 20000) || (r == 2 && c == 5)); };
   for (const bool periodic : { false, true })
@@ -282,6 +285,20 @@ TEST(GridBuilder, LongRowsAreOnePolylineOrCutWhereASampleIsUnusable)
     // Each unusable sample removes the four cells around it (row 1's at column 20,000, row 2's
     // at column 5).
     EXPECT_EQ(quads, static_cast<vtkIdType>(rows - 1) * (columns - 1) - 2 * 2 - 2 * 2);
+  }
+}
+
+TEST(GridBuilder, LongRowsAreOnePolylineOrCutWhereASampleIsUnusable)
+{
+  vtkSMPTools::SetBackend("STDThread");
+  for (const int threads : { 1, 2 })
+  {
+    vtkSMPTools::Initialize(threads);
+    for (const int columns : { 40001, 32769 })
+    {
+      SCOPED_TRACE(std::to_string(threads) + " threads, " + std::to_string(columns) + " columns");
+      expectLongRowsAreOnePolylineOrCutWhereASampleIsUnusable(columns);
+    }
   }
 }
 
