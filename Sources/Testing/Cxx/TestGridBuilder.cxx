@@ -178,7 +178,7 @@ TEST(GridBuilder, WholeAndCutRunsWriteEveryUsableSampleOnce)
 // consecutive points (closed with periodic columns), and a row with one unusable sample in its
 // second segment or its first is cut there, in rows before and after whole ones. The test below
 // runs it at 40,001 columns and at 32,769 (a periodic row of exactly two segments), on one thread
-// and on two (one row's segments written by both).
+// and on two (the rows' segments shared among the threads).
 void expectLongRowsAreOnePolylineOrCutWhereASampleIsUnusable(int columns)
 {
   constexpr int rows = 4;
