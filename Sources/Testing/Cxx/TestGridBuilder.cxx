@@ -290,15 +290,17 @@ void expectLongRowsAreOnePolylineOrCutWhereASampleIsUnusable(int columns)
 
 TEST(GridBuilder, LongRowsAreOnePolylineOrCutWhereASampleIsUnusable)
 {
-  vtkSMPTools::SetBackend("STDThread");
   for (const int threads : { 1, 2 })
   {
-    vtkSMPTools::Initialize(threads);
-    for (const int columns : { 40001, 32769 })
-    {
-      SCOPED_TRACE(std::to_string(threads) + " threads, " + std::to_string(columns) + " columns");
-      expectLongRowsAreOnePolylineOrCutWhereASampleIsUnusable(columns);
-    }
+    // As TestSourceThreads' run: the backend and thread count for this scope only.
+    vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, "STDThread", false }, [&] {
+      EXPECT_STREQ(vtkSMPTools::GetBackend(), "STDThread");
+      for (const int columns : { 40001, 32769 })
+      {
+        SCOPED_TRACE(std::to_string(threads) + " threads, " + std::to_string(columns) + " columns");
+        expectLongRowsAreOnePolylineOrCutWhereASampleIsUnusable(columns);
+      }
+    });
   }
 }
 
