@@ -19,8 +19,9 @@ include_guard(GLOBAL)
 # The documentation (in `cmake --install`'s tree too), laid out as in the repository so that the
 # README's links (docs/conventions.md, docs/classes/*.png) resolve where it is installed.
 install(FILES README.md DESTINATION "${CMAKE_INSTALL_DATAROOTDIR}/doc/boostedsurfaces")
-install(FILES docs/architecture.md docs/conventions.md docs/performance.md docs/gallery.png
-  docs/many_generators.png DESTINATION "${CMAKE_INSTALL_DATAROOTDIR}/doc/boostedsurfaces/docs")
+install(FILES docs/architecture.md docs/benchmark-runs.md docs/conventions.md docs/performance.md
+  docs/gallery.png docs/many_generators.png
+  DESTINATION "${CMAKE_INSTALL_DATAROOTDIR}/doc/boostedsurfaces/docs")
 install(DIRECTORY docs/classes/ DESTINATION "${CMAKE_INSTALL_DATAROOTDIR}/doc/boostedsurfaces/docs/classes"
   FILES_MATCHING PATTERN "*.png")
 
