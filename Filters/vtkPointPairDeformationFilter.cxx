@@ -43,6 +43,7 @@
 #include <cmath>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 vtkStandardNewMacro(vtkPointPairDeformationFilter);
 
@@ -73,10 +74,11 @@ struct DeformWorker
   Out* OutPoints;
   Out* Displacement;
   // The arrays from J, or null: then mapPoints alone. With them mapPointsWithJacobians, whose
-  // images are mapPoints' bit for bit, except that it always sums directly: with the tree
-  // (Tolerance) the images still come from mapPoints, so that they do not depend on the arrays.
+  // images are mapPoints' bit for bit (with the tree of Tolerance too: J is then the tree's).
   vtkPointPairJacobianArrays* Derivatives = nullptr;
-  bool TreeImages = false;
+  // Whether the field has a tree: then each chunk goes through the map with J in one call, whose
+  // points share the tree's cells (their local expansions), not BufferedPoints at a time.
+  bool TreeField = false;
   std::atomic<vtkIdType> Unchanged{ 0 };
   std::atomic<vtkIdType> NonFiniteInputs{ 0 };
   std::atomic<vtkIdType> BeyondOutputType{ 0 };
@@ -137,18 +139,34 @@ struct DeformWorker
   }
 
   // mapChunk with J: the batch map with Jacobians takes doubles, so float points are converted
-  // (exactly) and the images rounded to Out as mapPoints rounds them, BufferedPoints at a time.
+  // (exactly) and the images rounded to Out as mapPoints rounds them, BufferedPoints at a time
+  // (with a tree the whole chunk at once).
   // When the only output is one normals array, J along the normal's two tangents suffices
   // (mapPointsWithDirectionalDerivatives: two tangents through the map instead of three).
   template <typename In>
   void mapChunkWithJacobians(const In* in, vtkIdType first, vtkIdType count)
   {
-    double points[3 * BufferedPoints], images[3 * BufferedPoints], jacobians[9 * BufferedPoints];
-    double tangents[6 * BufferedPoints];
-    const bool oneNormal = this->Derivatives->OnlyOneNormal();
-    for (vtkIdType done = 0; done < count; done += BufferedPoints)
+    // Per point: its coordinates as doubles (3), its image (3), J or J along two tangents (9)
+    // and the tangents (6).
+    constexpr vtkIdType kPerPoint = 21;
+    double onStack[kPerPoint * BufferedPoints];
+    std::vector<double> onHeap;
+    vtkIdType step = BufferedPoints;
+    double* buffers = onStack;
+    if (this->TreeField && count > BufferedPoints)
     {
-      const vtkIdType n = std::min(BufferedPoints, count - done);
+      step = count;
+      onHeap.resize(static_cast<std::size_t>(kPerPoint * count));
+      buffers = onHeap.data();
+    }
+    double* points = buffers;
+    double* images = points + 3 * step;
+    double* jacobians = images + 3 * step;
+    double* tangents = jacobians + 9 * step;
+    const bool oneNormal = this->Derivatives->OnlyOneNormal();
+    for (vtkIdType done = 0; done < count; done += step)
+    {
+      const vtkIdType n = std::min(step, count - done);
       const In* chunk = in + 3 * done;
       const double* asDoubles = points;
       if constexpr (std::is_same<In, double>::value)
@@ -176,7 +194,7 @@ struct DeformWorker
       // A point whose J is not finite (huge weights) is left in place by the batch map with
       // Jacobians while mapPoints maps it: where there is such a point (or one not mapped at
       // all, which is rare) the chunk's images come from mapPoints.
-      if (this->TreeImages || withoutJacobian > 0)
+      if (withoutJacobian > 0)
       {
         unchanged = this->Field->mapPoints(
           chunk, out, static_cast<std::size_t>(n), this->Strength, this->Rule);

@@ -47,11 +47,6 @@ void randomInput(Random& random, std::size_t count, std::vector<Bivector>& b, st
   }
 }
 
-struct InstructionSetScope
-{
-  std::string Saved = mapPointsInstructionSet();
-  ~InstructionSetScope() { useMapPointsInstructionSet(Saved); }
-};
 } // namespace
 
 TEST(ExponentialMap, EqualsThePointwiseExponentialAndSandwich)

@@ -19,25 +19,12 @@
 namespace
 {
 using namespace cga;
+using cgatest::InstructionSetScope;
 using cgatest::Random;
 using cgatest::worseOf;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Restores the instruction set chosen at start-up when a test ends.
-class InstructionSetScope
-{
-public:
-  InstructionSetScope()
-    : Saved(mapPointsInstructionSet())
-  {
-  }
-  ~InstructionSetScope() { useMapPointsInstructionSet(this->Saved); }
-
-private:
-  std::string Saved;
-};
 
 struct Case
 {

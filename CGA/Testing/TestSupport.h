@@ -4,6 +4,7 @@
 #include "cga/Compact.h"
 #include "cga/CompactConversion.h"
 #include "cga/Multivector.h"
+#include "cga/PointPairField.h"
 #include "cga/PointPairs.h"
 #include "cga/PointSandwich.h"
 #include "cga/Vec3.h"
@@ -21,6 +22,14 @@
 
 namespace cgatest
 {
+/// Restores mapPoints()' instruction set of the test's start when the scope ends (tests that
+/// switch it with useMapPointsInstructionSet).
+struct InstructionSetScope
+{
+  std::string Saved = cga::mapPointsInstructionSet();
+  ~InstructionSetScope() { cga::useMapPointsInstructionSet(Saved); }
+};
+
 using namespace cga;
 
 /// Seeded generator so that every run sees the same inputs.

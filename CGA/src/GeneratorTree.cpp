@@ -74,11 +74,6 @@ double factorial(int n)
   return r;
 }
 
-constexpr int monomialCount(int degree)
-{
-  return (degree + 1) * (degree + 2) * (degree + 3) / 6;
-}
-
 constexpr int kMaxMoments = monomialCount(GeneratorTree::kMaxDegree);
 static_assert(GeneratorTree::kMaxDegree + 1 <= kMaxSpreadPower, "treeSpreadMoment takes powers up to P + 1");
 
@@ -705,14 +700,15 @@ bool GeneratorTree::computeMoments(int index)
 // distance), else opened; leaves and nodes without moments directly. Nodes visited one after the
 // other often hold consecutive generators (siblings: the tree's order), so each such run is summed
 // in one call of the block kernel instead of one per node (its sums loaded and stored once).
-void GeneratorTree::addNear(const int* starts, std::size_t count, const double* center, double radius,
-                            double weightSum, const double* p, double* sums) const
+void GeneratorTree::addNear(const int* starts, std::size_t count, const double* center,
+                            double radius, double weightSum, const double* p, double* sums,
+                            double* gradients) const
 {
   std::size_t runFirst = 0, runEnd = 0; // the generators [runFirst, runEnd) not summed yet
   auto direct = [&](const Node& node) {
     if (node.first != runEnd)
     {
-      this->addDirect(runFirst, runEnd - runFirst, p, sums);
+      this->addDirect(runFirst, runEnd - runFirst, p, sums, gradients);
       runFirst = node.first;
     }
     runEnd = node.first + node.count;
@@ -750,7 +746,15 @@ void GeneratorTree::addNear(const int* starts, std::size_t count, const double* 
                                         this->Falloff * nearest * nearest + this->Epsilon, distance + radius,
                                         this->shareOf(node, distance, radius, weightSum), true });
         }
-        this->addMultipole(node, this->Moments.data() + node.moments, degree, p, sums);
+        if (gradients)
+        {
+          this->addMultipoleGradient(node, this->Moments.data() + node.moments, degree, p, sums,
+                                     gradients);
+        }
+        else
+        {
+          this->addMultipole(node, this->Moments.data() + node.moments, degree, p, sums);
+        }
       }
       else if (node.children[0] < 0)
       {
@@ -763,7 +767,7 @@ void GeneratorTree::addNear(const int* starts, std::size_t count, const double* 
       }
     }
   }
-  this->addDirect(runFirst, runEnd - runFirst, p, sums);
+  this->addDirect(runFirst, runEnd - runFirst, p, sums, gradients);
 }
 
 // The lanes in one vector (Eight), each moment's terms summed in a register (they are consecutive),
@@ -827,7 +831,8 @@ void GeneratorTree::addMultipole(const Node& node, const double* moments, int de
 
 // The generators [first, first + count) summed directly for the lanes' points: the block kernel's
 // generator loop (kernel::AddFieldBlock, compiled per instruction set with its sums in registers).
-void GeneratorTree::addDirect(std::size_t first, std::size_t count, const double* p, double* sums) const
+void GeneratorTree::addDirect(std::size_t first, std::size_t count, const double* p, double* sums,
+                              double* gradients) const
 {
   if (count == 0)
   {
@@ -838,10 +843,17 @@ void GeneratorTree::addDirect(std::size_t first, std::size_t count, const double
   args.generatorCount = count;
   args.falloff = this->Falloff;
   args.epsilon = this->Epsilon;
-  kernel::activeAddFieldBlock()(args, p, sums);
+  if (gradients)
+  {
+    kernel::activeAddFieldJacobianBlock()(args, p, sums, gradients);
+  }
+  else
+  {
+    kernel::activeAddFieldBlock()(args, p, sums);
+  }
 }
 
-void GeneratorTree::evaluate(const double* xyz, double* bivectors) const
+void GeneratorTree::evaluate(const double* xyz, double* bivectors, double* gradients) const
 {
   bool finite[L];
   double center[3] = { 0.0, 0.0, 0.0 };
@@ -859,6 +871,10 @@ void GeneratorTree::evaluate(const double* xyz, double* bivectors) const
     }
   }
   std::fill_n(bivectors, kComponents * L, 0.0);
+  if (gradients)
+  {
+    std::fill_n(gradients, 3 * kComponents * L, 0.0);
+  }
   if (finiteCount == 0 || this->Nodes.empty())
   {
     return;
@@ -882,7 +898,8 @@ void GeneratorTree::evaluate(const double* xyz, double* bivectors) const
     blockRadius = std::max(blockRadius, std::sqrt(distance2));
   }
   const int root = 0;
-  this->addNear(&root, 1, center, blockRadius, this->weightSum(center, blockRadius), p, bivectors);
+  this->addNear(&root, 1, center, blockRadius, this->weightSum(center, blockRadius), p, bivectors,
+                gradients);
   for (int l = 0; l < L; ++l)
   {
     if (!finite[l])
@@ -890,6 +907,10 @@ void GeneratorTree::evaluate(const double* xyz, double* bivectors) const
       for (int c = 0; c < kComponents; ++c)
       {
         bivectors[c * L + l] = 0.0;
+        for (int k = 0; gradients && k < 3; ++k)
+        {
+          gradients[(3 * c + k) * L + l] = 0.0;
+        }
       }
     }
   }

@@ -59,6 +59,12 @@ __attribute__((always_inline)) inline void addLanes(double* sums, const Eight* o
   }
 }
 
+/// The monomials of degree at most `degree` in three variables.
+constexpr int monomialCount(int degree)
+{
+  return (degree + 1) * (degree + 2) * (degree + 3) / 6;
+}
+
 /// One use of a node's expansion, recorded for the test that splits the bound's excess
 /// (TestGeneratorTree.cpp, BoundSplit): the node, its degree, the cube of points it was used for
 /// (center, radius; the leaf's for a per-point use) and the quantities its degree was chosen from
@@ -90,15 +96,21 @@ public:
   /// field's center); bivectors receives Bivector::Count components per lane, component-major
   /// (bivectors[c * kLanes + l]). A lane whose point is not finite gets 0. The nodes are chosen
   /// for the block as a whole (its center and radius): used for points beyond the target cells'
-  /// lattice (evaluatePoints), one point per call.
-  void evaluate(const double* xyz, double* bivectors) const;
+  /// lattice (evaluatePoints), one point per call. With gradients, also d B_c / d p_k of lane l
+  /// at gradients[(3 c + k) * kLanes + l] (kernel::AddFieldJacobianBlock's layout).
+  void evaluate(const double* xyz, double* bivectors, double* gradients = nullptr) const;
 
   /// B(p) for `count` points, xyz interleaved (relative to the field's center), into
   /// bivectors[i * Bivector::Count + c]; a point that is not finite gets 0. The far field comes from
   /// local expansions about the cells of a fixed lattice of cubes (GeneratorTreeCells.cpp), so that
   /// each B(p) depends on p alone, not on the other points of the call: the same bits whatever
   /// the chunking, the threads, or map() of one point. Scratch memory O(count), allocated per call.
-  void evaluatePoints(const double* xyz, std::size_t count, double* bivectors) const;
+  /// With gradients, also the derivatives of the same approximation (its expansions and direct
+  /// sums differentiated, GeneratorTreeGradients.cpp): d B_c / d p_k of point i at
+  /// gradients[(i * Bivector::Count + c) * 3 + k], the values in bivectors the same bits as
+  /// without.
+  void evaluatePoints(const double* xyz, std::size_t count, double* bivectors,
+                      double* gradients = nullptr) const;
 
   /// The target cells: the side of the finest (leaf) cubes and the levels above them.
   double leafSide() const { return this->LeafSide; }
@@ -195,12 +207,20 @@ private:
                   double radius, double* local) const;
   void addLocal(const double* local, const double* center, double radius, const double* p,
                 double* sums) const;
+  // addLocal and addMultipole adding d B / d p too (GeneratorTreeGradients.cpp; gradients in
+  // kernel::AddFieldJacobianBlock's layout).
+  void addLocalGradient(const double* local, const double* center, double radius, const double* p,
+                        double* sums, double* gradients) const;
+  void addMultipoleGradient(const Node& node, const double* moments, int degree, const double* p,
+                            double* sums, double* gradients) const;
+  // gradients: null, or d B / d p added too.
   void addNear(const int* starts, std::size_t count, const double* center, double radius,
-               double weightSum, const double* p, double* sums) const;
+               double weightSum, const double* p, double* sums, double* gradients) const;
   void chooseCells();
   int build(std::size_t first, std::size_t count, std::vector<std::size_t>& order, int depth);
   bool computeMoments(int node);
-  void addDirect(std::size_t first, std::size_t count, const double* p, double* sums) const;
+  void addDirect(std::size_t first, std::size_t count, const double* p, double* sums,
+                 double* gradients) const;
   void addMultipole(const Node& node, const double* moments, int degree, const double* p, double* b) const;
   // power[m], m < count, of the coordinates y in the graded order, each its parent's times one
   // coordinate; T is double or Eight (a block's lanes), inlined into each lane clone.

@@ -132,15 +132,21 @@ struct GeneratorTree::CellWork
 {
   const double* xyz;
   double* bivectors;
+  double* gradients; // null: B alone
   std::vector<CellKey> keys;
   std::vector<double> locals;           // per level: MomentCount x kComponents
   std::vector<std::vector<int>> lists;  // per level: the nodes left for the cells below
   std::vector<std::vector<int>> stacks; // per level: the nodes to classify
 };
 
-void GeneratorTree::evaluatePoints(const double* xyz, std::size_t count, double* bivectors) const
+void GeneratorTree::evaluatePoints(const double* xyz, std::size_t count, double* bivectors,
+                                   double* gradients) const
 {
   std::fill_n(bivectors, count * kComponents, 0.0);
+  if (gradients)
+  {
+    std::fill_n(gradients, 3 * count * kComponents, 0.0);
+  }
   if (this->Nodes.empty())
   {
     return;
@@ -148,6 +154,7 @@ void GeneratorTree::evaluatePoints(const double* xyz, std::size_t count, double*
   CellWork work;
   work.xyz = xyz;
   work.bivectors = bivectors;
+  work.gradients = gradients;
   work.keys.reserve(count);
   const double inverseSide = 1.0 / this->LeafSide;
   const int levels = this->Levels;
@@ -168,15 +175,19 @@ void GeneratorTree::evaluatePoints(const double* xyz, std::size_t count, double*
     if (!inLattice)
     {
       // Far beyond the generators: one point at a time, every lane the same point.
-      alignas(64) double lanes[3 * L], sums[kComponents * L];
+      alignas(64) double lanes[3 * L], sums[kComponents * L], sumGradients[3 * kComponents * L];
       for (int k = 0; k < 3; ++k)
       {
         std::fill_n(lanes + k * L, L, p[k]);
       }
-      this->evaluate(lanes, sums);
+      this->evaluate(lanes, sums, gradients ? sumGradients : nullptr);
       for (int c = 0; c < kComponents; ++c)
       {
         bivectors[i * kComponents + c] = sums[c * L];
+        for (int k = 0; gradients && k < 3; ++k)
+        {
+          gradients[(i * kComponents + c) * 3 + k] = sumGradients[(3 * c + k) * L];
+        }
       }
       continue;
     }
@@ -304,7 +315,7 @@ void GeneratorTree::evaluateCell(CellWork& work, int level, std::size_t first, s
   for (std::size_t begin = first; begin < last; begin += L)
   {
     const std::size_t n = std::min<std::size_t>(L, last - begin);
-    alignas(64) double p[3 * L], sums[kComponents * L];
+    alignas(64) double p[3 * L], sums[kComponents * L], sumGradients[3 * kComponents * L];
     for (int l = 0; l < L; ++l)
     {
       const double* point = work.xyz + 3 * work.keys[begin + std::min<std::size_t>(l, n - 1)].index;
@@ -314,17 +325,32 @@ void GeneratorTree::evaluateCell(CellWork& work, int level, std::size_t first, s
       }
     }
     std::fill_n(sums, kComponents * L, 0.0);
-    if (hasLocal)
+    double* gradients = work.gradients ? sumGradients : nullptr;
+    if (gradients)
+    {
+      std::fill_n(gradients, 3 * kComponents * L, 0.0);
+    }
+    if (hasLocal && gradients)
+    {
+      this->addLocalGradient(local, center, radius, p, sums, gradients);
+    }
+    else if (hasLocal)
     {
       this->addLocal(local, center, radius, p, sums);
     }
-    this->addNear(left.data(), left.size(), center, radius, weightSum, p, sums);
+    this->addNear(left.data(), left.size(), center, radius, weightSum, p, sums, gradients);
     for (std::size_t l = 0; l < n; ++l)
     {
-      double* out = work.bivectors + work.keys[begin + l].index * kComponents;
+      const std::size_t index = work.keys[begin + l].index;
+      double* out = work.bivectors + index * kComponents;
       for (int c = 0; c < kComponents; ++c)
       {
         out[c] = sums[c * L + static_cast<int>(l)];
+        for (int k = 0; gradients && k < 3; ++k)
+        {
+          work.gradients[(index * kComponents + c) * 3 + k] =
+            gradients[(3 * c + k) * L + static_cast<int>(l)];
+        }
       }
     }
   }

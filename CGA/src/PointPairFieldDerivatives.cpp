@@ -3,6 +3,7 @@
 #include "cga/PointPairField.h"
 
 #include "DualNumber.h"
+#include "GeneratorTree.h"
 #include "PointBlocks.h"
 #include "PointMapCore.h"
 #include "PointPairKernel.h"
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace cga
 {
@@ -64,6 +66,19 @@ bool PointPairField::mapWithJacobian(
     writeIdentity(jacobian);
     return true;
   }
+  if (this->Tree)
+  {
+    // The tree's B and its derivatives (as map() takes the tree's B): the batch form.
+    const double in[3] = { p.x, p.y, p.z };
+    double image[3], j[9];
+    if (this->mapPointsWithJacobians(in, image, j, 1, strength, rule) != 0)
+    {
+      return false;
+    }
+    out = { image[0], image[1], image[2] };
+    std::copy(j, j + 9, jacobian);
+    return true;
+  }
   using Tangent = core::Dual<double, 3>;
   const Vec3 c = this->Center;
   const double relative[3] = { p.x - c.x, p.y - c.y, p.z - c.z };
@@ -103,6 +118,60 @@ bool finiteLane(const double* block, int n, int l)
   }
   return true;
 }
+
+/// mapPointsInBlocks with a generator tree's B(p) and its derivatives d B / d p (one
+/// evaluatePoints for the whole call, whose cells' expansions its points share), each block mapped
+/// by kernel::MapBlockJacobianBy: the images are mapPoints' with the same tree, to the bit, and
+/// onPointWritten(index, jacobian) receives J (row-major, 9 doubles), or null where the point is
+/// not mapped or its J is not finite. Returns the count of points not mapped.
+template <typename OnPointWritten>
+std::size_t mapPointsWithTreeJacobians(const detail::GeneratorTree& tree,
+  const kernel::FieldArgs& args, Vec3 c, const double* in, double* out, std::size_t count,
+  OnPointWritten&& onPointWritten)
+{
+  constexpr int L = kernel::kLanes;
+  std::vector<double> relative(3 * count), b(kBivector * count), gradients(3 * kBivector * count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    relative[3 * i] = in[3 * i] - c.x;
+    relative[3 * i + 1] = in[3 * i + 1] - c.y;
+    relative[3 * i + 2] = in[3 * i + 2] - c.z;
+  }
+  tree.evaluatePoints(relative.data(), count, b.data(), gradients.data());
+  const kernel::MapBlockJacobianBy mapBlock = kernel::activeMapBlockJacobianBy();
+  alignas(64) double exponents[kBivector * L], exponentGradients[3 * kBivector * L],
+    jacobian[9 * L];
+  const auto mapLanes = [&](std::size_t first, int n, const double* xyz, double* image,
+                          std::uint8_t* mapped) {
+    for (int l = 0; l < L; ++l)
+    {
+      const std::size_t i = first + static_cast<std::size_t>(std::min(l, n - 1));
+      for (int e = 0; e < kBivector; ++e)
+      {
+        exponents[e * L + l] = b[i * kBivector + e] * -args.strength; // as mapPoints' exponent
+        for (int k = 0; k < 3; ++k)
+        {
+          exponentGradients[(3 * e + k) * L + l] =
+            gradients[(i * kBivector + e) * 3 + k] * -args.strength;
+        }
+      }
+    }
+    mapBlock(args, exponents, exponentGradients, xyz, image, jacobian, mapped);
+    for (int l = 0; l < L; ++l)
+    {
+      mapped[l] = mapped[l] && finiteLane(jacobian, 9, l);
+    }
+  };
+  const auto written = [&](std::size_t i, int l, bool mapped) {
+    double j[9];
+    for (int e = 0; e < 9; ++e)
+    {
+      j[e] = jacobian[e * L + l];
+    }
+    onPointWritten(i, mapped ? j : nullptr);
+  };
+  return mapPointsInBlocks(c, in, out, count, mapLanes, written);
+}
 } // namespace
 
 std::size_t PointPairField::mapPointsWithJacobians(const double* in, double* out, double* jacobians,
@@ -115,6 +184,20 @@ std::size_t PointPairField::mapPointsWithJacobians(const double* in, double* out
       [jacobians](std::size_t i, bool) { writeIdentity(jacobians + 9 * i); });
   }
   const kernel::FieldArgs args = this->args(strength, rule);
+  if (this->Tree)
+  {
+    return mapPointsWithTreeJacobians(*this->Tree, args, this->Center, in, out, count,
+      [jacobians](std::size_t i, const double* j) {
+        if (j)
+        {
+          std::copy(j, j + 9, jacobians + 9 * i);
+        }
+        else
+        {
+          writeIdentity(jacobians + 9 * i);
+        }
+      });
+  }
   const kernel::MapBlockJacobian mapBlock = kernel::activeMapBlockJacobian();
   alignas(64) double jacobian[9 * L];
   const auto mapLanes = [&](std::size_t, int, const double* xyz, double* image,
@@ -156,6 +239,28 @@ std::size_t PointPairField::mapPointsWithDirectionalDerivatives(const double* in
     return copyPoints(in, out, count, [&](std::size_t i, bool) { copyDirections(i); });
   }
   const kernel::FieldArgs args = this->args(strength, rule);
+  if (this->Tree)
+  {
+    // The tree's whole J, then J t_k.
+    return mapPointsWithTreeJacobians(*this->Tree, args, this->Center, in, out, count,
+      [&](std::size_t i, const double* j) {
+        if (!j)
+        {
+          copyDirections(i);
+          return;
+        }
+        const double* t = directions + kPerPoint * i;
+        double* d = derivatives + kPerPoint * i;
+        for (int k = 0; k < N; ++k)
+        {
+          for (int r = 0; r < 3; ++r)
+          {
+            d[3 * k + r] =
+              j[3 * r] * t[3 * k] + j[3 * r + 1] * t[3 * k + 1] + j[3 * r + 2] * t[3 * k + 2];
+          }
+        }
+      });
+  }
   const kernel::MapBlockDirectional mapBlock = kernel::activeMapBlockDirectional();
   alignas(64) double seeds[kPerPoint * L], along[kPerPoint * L];
   const auto mapLanes = [&](std::size_t first, int n, const double* xyz, double* image,

@@ -87,6 +87,24 @@ using MapBlockJets = void (*)(const FieldArgs& args,
 /// bivectors, component-major (bivectors[c * kLanes + l]): the kernel's generator loop for the
 /// generator tree's near field (GeneratorTree.cpp), which sums parts of the generators.
 using AddFieldBlock = void (*)(const FieldArgs& args, const double* xyz, double* bivectors);
+/// AddFieldBlock with B's derivatives: gradients[(3 c + k) * kLanes + l] += d B_c / d p_k of lane l
+/// (forward mode, DualNumber.h: the sums added to bivectors are AddFieldBlock's, to the bit). The
+/// generator tree's near field for PointPairField's derivatives.
+using AddFieldJacobianBlock = void (*)(const FieldArgs& args,
+                                       const double* xyz,
+                                       double* bivectors,
+                                       double* gradients);
+/// MapBlockJacobian for a given exponent b per point and its derivatives d b / d p: bivectors as
+/// MapBlockBy's (not overwritten), gradients[(3 c + k) * kLanes + l] = d b_c / d p_k; the images
+/// are MapBlockBy's to the bit, the Jacobian MapBlockJacobian's layout. The generator tree's
+/// derivatives (the exponent -strength B(p) and its derivatives from the tree).
+using MapBlockJacobianBy = void (*)(const FieldArgs& args,
+                                    const double* bivectors,
+                                    const double* gradients,
+                                    const double* xyz,
+                                    double* image,
+                                    double* jacobian,
+                                    std::uint8_t* mapped);
 /// cos and sin of kLanes angles (hyperbolic: cosh and sinh), the elementary functions that
 /// map() calls (LaneMath.h) on every lane: cosines[l] and sines[l] of angles[l]. The conformal
 /// orbit's closed form at eight times at once (Orbit::versors).
@@ -135,6 +153,9 @@ void mapBlockJacobian(const FieldArgs&, const double*, double*, double*, std::ui
 void mapBlockDirectional(
   const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
 void addFieldBlock(const FieldArgs&, const double*, double*);
+void addFieldJacobianBlock(const FieldArgs&, const double*, double*, double*);
+void mapBlockJacobianBy(
+  const FieldArgs&, const double*, const double*, const double*, double*, double*, std::uint8_t*);
 void sinCosBlock(bool, const double*, double*, double*);
 int mapDisplacedBlock(
   const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
@@ -148,6 +169,9 @@ void mapBlockJacobian(const FieldArgs&, const double*, double*, double*, std::ui
 void mapBlockDirectional(
   const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
 void addFieldBlock(const FieldArgs&, const double*, double*);
+void addFieldJacobianBlock(const FieldArgs&, const double*, double*, double*);
+void mapBlockJacobianBy(
+  const FieldArgs&, const double*, const double*, const double*, double*, double*, std::uint8_t*);
 void sinCosBlock(bool, const double*, double*, double*);
 int mapDisplacedBlock(
   const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
@@ -166,6 +190,9 @@ void mapBlockJets(const FieldArgs&, const double*, const double*, double*, std::
 void mapBlockDirectional(
   const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);
 void addFieldBlock(const FieldArgs&, const double*, double*);
+void addFieldJacobianBlock(const FieldArgs&, const double*, double*, double*);
+void mapBlockJacobianBy(
+  const FieldArgs&, const double*, const double*, const double*, double*, double*, std::uint8_t*);
 void sinCosBlock(bool, const double*, double*, double*);
 int mapDisplacedBlock(
   const FieldArgs&, const double*, const double*, double*, double*, std::uint8_t*);

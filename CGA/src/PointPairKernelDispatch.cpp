@@ -21,6 +21,8 @@ struct Candidate
   MapBlockJets blockJets; // null: none (mapJetsByExponential's lane-by-lane loop)
   MapBlockDirectional blockDirectional;
   AddFieldBlock addField;
+  AddFieldJacobianBlock addFieldJacobian;
+  MapBlockJacobianBy blockJacobianBy;
   SinCosBlock sinCos;
   MapDisplacedBlock displacedBlock;
   MapDisplacedWideBlock displacedWideBlock; // null: none
@@ -48,14 +50,17 @@ bool hasAvx512()
 // Narrowest first.
 const Candidate kCandidates[] = {
   { "baseline", &baseline::mapBlock, &baseline::mapBlockBy, &baseline::mapBlockJacobian, nullptr,
-    &baseline::mapBlockDirectional, &baseline::addFieldBlock, &baseline::sinCosBlock,
+    &baseline::mapBlockDirectional, &baseline::addFieldBlock,
+    &baseline::addFieldJacobianBlock, &baseline::mapBlockJacobianBy, &baseline::sinCosBlock,
     &baseline::mapDisplacedBlock, nullptr, &always },
 #ifdef BOOSTED_KERNEL_X86_DISPATCH
   { "avx2", &avx2::mapBlock, &avx2::mapBlockBy, &avx2::mapBlockJacobian, nullptr,
-    &avx2::mapBlockDirectional, &avx2::addFieldBlock, &avx2::sinCosBlock,
+    &avx2::mapBlockDirectional, &avx2::addFieldBlock,
+    &avx2::addFieldJacobianBlock, &avx2::mapBlockJacobianBy, &avx2::sinCosBlock,
     &avx2::mapDisplacedBlock, nullptr, &hasAvx2 },
   { "avx512", &avx512::mapBlock, &avx512::mapBlockBy, &avx512::mapBlockJacobian,
     &avx512::mapBlockJets, &avx512::mapBlockDirectional, &avx512::addFieldBlock,
+    &avx512::addFieldJacobianBlock, &avx512::mapBlockJacobianBy,
     &avx512::sinCosBlock, &avx512::mapDisplacedBlock, &avx512wide::mapDisplacedBlock,
     &hasAvx512 },
 #endif
@@ -105,6 +110,16 @@ std::atomic<int>& choice()
 MapBlock activeMapBlock()
 {
   return kCandidates[choice().load(std::memory_order_relaxed)].block;
+}
+
+AddFieldJacobianBlock activeAddFieldJacobianBlock()
+{
+  return kCandidates[choice().load(std::memory_order_relaxed)].addFieldJacobian;
+}
+
+MapBlockJacobianBy activeMapBlockJacobianBy()
+{
+  return kCandidates[choice().load(std::memory_order_relaxed)].blockJacobianBy;
 }
 
 MapBlockBy activeMapBlockBy()

@@ -17,6 +17,8 @@ MapBlockJacobian activeMapBlockJacobian();
 MapBlockJets activeMapBlockJets();
 MapBlockDirectional activeMapBlockDirectional();
 AddFieldBlock activeAddFieldBlock();
+AddFieldJacobianBlock activeAddFieldJacobianBlock();
+MapBlockJacobianBy activeMapBlockJacobianBy();
 SinCosBlock activeSinCosBlock();
 /// b = scale B(p) of one point p (3 doubles) by the active kernel's generator loop: the bits of
 /// core::fieldBivector for double (its fused multiply-adds are correctly rounded), but on the

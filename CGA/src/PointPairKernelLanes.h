@@ -475,6 +475,66 @@ void addFieldBlock(const FieldArgs& args, const double* xyz, double* bivectors)
     toLanes(sum + b[c], bivectors + c * L);
   }
 }
+void addFieldJacobianBlock(const FieldArgs& args, const double* xyz, double* bivectors,
+  double* gradients)
+{
+  using Tangent = core::Dual<LaneVector, 3>;
+  Tangent p[3], b[core::kBivector];
+  for (int i = 0; i < 3; ++i)
+  {
+    LaneVector value;
+    fromLanes(xyz + i * L, value);
+    p[i] = core::variable<LaneVector, 3>(value, i);
+  }
+  core::fieldBivector(args, p, 1.0, b);
+  for (int c = 0; c < core::kBivector; ++c)
+  {
+    LaneVector sum;
+    fromLanes(bivectors + c * L, sum);
+    toLanes(sum + b[c].v, bivectors + c * L);
+    for (int k = 0; k < 3; ++k)
+    {
+      fromLanes(gradients + (3 * c + k) * L, sum);
+      toLanes(sum + b[c].d[k], gradients + (3 * c + k) * L);
+    }
+  }
+}
+
+void mapBlockJacobianBy(const FieldArgs& args, const double* bivectors, const double* gradients,
+  const double* xyz, double* image, double* jacobian, std::uint8_t* mapped)
+{
+  using Tangent = core::Dual<LaneVector, 3>;
+  Tangent b[core::kBivector], p[3], out[3];
+  for (int c = 0; c < core::kBivector; ++c)
+  {
+    fromLanes(bivectors + c * L, b[c].v);
+    for (int k = 0; k < 3; ++k)
+    {
+      fromLanes(gradients + (3 * c + k) * L, b[c].d[k]);
+    }
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    LaneVector value;
+    fromLanes(xyz + i * L, value);
+    p[i] = core::variable<LaneVector, 3>(value, i);
+  }
+  bool ok[L];
+  core::mapPointBy(args, b, p, out, ok);
+  for (int i = 0; i < 3; ++i)
+  {
+    toLanes(out[i].v, image + i * L);
+    for (int k = 0; k < 3; ++k)
+    {
+      toLanes(out[i].d[k], jacobian + (3 * i + k) * L);
+    }
+  }
+  for (int l = 0; l < L; ++l)
+  {
+    mapped[l] = ok[l] ? 1 : 0;
+  }
+}
+
 void sinCosBlock(bool hyperbolic, const double* angles, double* cosines, double* sines)
 {
   LaneVector x, c, s;

@@ -259,9 +259,13 @@ public:
 
   // The derivatives of the map (docs/conventions.md section 3 item 15): forward-mode automatic
   // differentiation of the same computation as map() (every branch and frame the value takes),
-  // exact to rounding, with the direct sum (a tolerance's tree is not used). Each returns false,
-  // writing nothing, where map() does or a derivative is not finite; the image is map()'s, to the
-  // bit, without a tolerance (with one: the direct sum's image, within the tolerance of map()'s).
+  // exact to rounding. Each returns false, writing nothing, where map() does or a derivative is
+  // not finite. With a tolerance (setTolerance), mapWithJacobian, mapPointsWithJacobians and
+  // mapPointsWithDirectionalDerivatives differentiate the tree's approximation of B (its local
+  // polynomials, series and direct sums), so their images are map()'s to the bit and J is the
+  // tree's: its error against the direct sum's J is measured, not bounded (README, Many
+  // generators); mapWithBivectorDerivative and mapWithWeightDerivatives sum directly (their
+  // image: the direct sum's, within the tolerance of map()'s). Without one every image is map()'s.
 
   /// map() and its derivative J = d out / d p, row-major: jacobian[3 i + j] = d out_i / d p_j.
   /// J is a general 3x3 matrix for both rules: K(p) varies with p, so even the Exact rule's map,
@@ -275,7 +279,8 @@ public:
   /// image whose derivative overflows: huge weights), is copied unchanged with the identity as its
   /// Jacobian, unlike mapPoints, which maps the latter: callers that need every image call
   /// mapPoints where the returned count is not 0. Returns how many points are such. No heap
-  /// allocation; threads are the caller's.
+  /// allocation without a tree; with one, O(count) scratch, about 400 bytes per point, and the
+  /// tree's cells shared by the call's points as in mapPoints. Threads are the caller's.
   std::size_t mapPointsWithJacobians(const double* in, double* out, double* jacobians,
     std::size_t count, double strength, ExponentialRule rule) const;
 
@@ -284,8 +289,8 @@ public:
   /// derivatives receives J t1 then J t2 in the same layout, forward mode with two tangents
   /// instead of three: what a normal needs, since cof(J) n = (J t1) x (J t2) for t1 x t2 = n
   /// (vtkPointPairDeformationFilter's normals). The images and unchanged points are
-  /// mapPointsWithJacobians' (an unchanged point gets its directions back: J = I). No heap
-  /// allocation; threads are the caller's.
+  /// mapPointsWithJacobians' (an unchanged point gets its directions back: J = I); with a tree,
+  /// J t1 and J t2 from its whole J. No heap allocation without a tree; threads are the caller's.
   std::size_t mapPointsWithDirectionalDerivatives(const double* in, const double* directions,
     double* out, double* derivatives, std::size_t count, double strength,
     ExponentialRule rule) const;
