@@ -111,6 +111,8 @@ public:
   /// the bound is enforced at every point). Values above 1 are used as 1; NaN or negative is an
   /// error and gives an empty output. Fields of fewer than 10,000 generators, and tolerances below
   /// 1e-4 (10,000/M)^3 (1e-7 at M = 100,000), always sum directly (the measured crossovers).
+  /// The arrays through the map's derivative (normals, vectors, ConformalScale,
+  /// ConformalityDefect) come from the tree's approximation too (measured, not bounded).
   vtkSetMacro(Tolerance, double);
   vtkGetMacro(Tolerance, double);
   ///@}
