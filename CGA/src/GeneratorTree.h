@@ -30,6 +30,8 @@
 #include "LaneClones.h"
 #include "PointPairKernel.h"
 
+#include "cga/Vec3.h"
+
 #include <array>
 #include <cstddef>
 #include <cstring>
@@ -283,5 +285,22 @@ private:
   double LeafSide = 1.0; // a power of two
   int Levels = 0;        // the top cells are LeafSide * 2^Levels wide
 };
+
+/// tree.evaluatePoints of `count` points given in space (xyz interleaved, float or double),
+/// moved to the field's center c first, as the tree takes them: mapPoints' and
+/// mapPointsWithJacobians' B(p) of a whole call.
+template <typename In>
+void evaluatePointsAbout(const GeneratorTree& tree, Vec3 c, const In* in, std::size_t count,
+                         double* bivectors, double* gradients = nullptr)
+{
+  std::vector<double> relative(3 * count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    relative[3 * i] = static_cast<double>(in[3 * i]) - c.x;
+    relative[3 * i + 1] = static_cast<double>(in[3 * i + 1]) - c.y;
+    relative[3 * i + 2] = static_cast<double>(in[3 * i + 2]) - c.z;
+  }
+  tree.evaluatePoints(relative.data(), count, bivectors, gradients);
+}
 } // namespace detail
 } // namespace cga

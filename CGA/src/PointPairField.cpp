@@ -419,15 +419,8 @@ auto mapPointsByKernel(const kernel::FieldArgs& args,
   std::vector<double> treeBivectors;
   if (tree)
   {
-    std::vector<double> relative(3 * count);
-    for (std::size_t i = 0; i < count; ++i)
-    {
-      relative[3 * i] = static_cast<double>(in[3 * i]) - c.x;
-      relative[3 * i + 1] = static_cast<double>(in[3 * i + 1]) - c.y;
-      relative[3 * i + 2] = static_cast<double>(in[3 * i + 2]) - c.z;
-    }
     treeBivectors.resize(Bivector::Count * count);
-    tree->evaluatePoints(relative.data(), count, treeBivectors.data());
+    detail::evaluatePointsAbout(*tree, c, in, count, treeBivectors.data());
   }
   const auto mapLanes = [&](std::size_t first, int n, const double* xyz, double* image,
                           std::uint8_t* mapped) {

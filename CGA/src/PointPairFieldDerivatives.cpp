@@ -130,14 +130,8 @@ std::size_t mapPointsWithTreeJacobians(const detail::GeneratorTree& tree,
   OnPointWritten&& onPointWritten)
 {
   constexpr int L = kernel::kLanes;
-  std::vector<double> relative(3 * count), b(kBivector * count), gradients(3 * kBivector * count);
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    relative[3 * i] = in[3 * i] - c.x;
-    relative[3 * i + 1] = in[3 * i + 1] - c.y;
-    relative[3 * i + 2] = in[3 * i + 2] - c.z;
-  }
-  tree.evaluatePoints(relative.data(), count, b.data(), gradients.data());
+  std::vector<double> b(kBivector * count), gradients(3 * kBivector * count);
+  detail::evaluatePointsAbout(tree, c, in, count, b.data(), gradients.data());
   const kernel::MapBlockJacobianBy mapBlock = kernel::activeMapBlockJacobianBy();
   alignas(64) double exponents[kBivector * L], exponentGradients[3 * kBivector * L],
     jacobian[9 * L];
