@@ -795,37 +795,9 @@ void GeneratorTree::addMultipole(const Node& node, const double* moments, int de
   std::memcpy(u, uLanes, sizeof u);
   std::memcpy(&q, qLanes, sizeof q);
   std::memcpy(&scale, scaleLanes, sizeof scale);
-  Eight power[kMaxMoments], e[kMaxMoments];
+  Eight power[kMaxMoments], e[kMaxMoments], out[kComponents];
   this->monomialPowers(u, M, power);
-  const std::size_t termCount = this->TermsOfDegree[static_cast<std::size_t>(degree)];
-  for (std::size_t t = 0; t < termCount;)
-  {
-    const int moment = this->Terms[t].moment;
-    Eight sum = {};
-    for (; t < termCount && this->Terms[t].moment == moment; ++t)
-    {
-      sum += this->Terms[t].coefficient * power[this->Terms[t].monomial];
-    }
-    e[moment] = sum;
-  }
-  // Each moment's coefficient (b! e_b, the moments being mu_b / b!) times q^|b| / D.
-  int n = 0;
-  Eight out[kComponents] = {};
-  for (int m = 0; m < M; ++m)
-  {
-    if (this->MonomialDegree[static_cast<std::size_t>(m)] != n)
-    {
-      n = this->MonomialDegree[static_cast<std::size_t>(m)];
-      scale *= q;
-    }
-    // e scale once per monomial (the same bits: (e scale) mu, left to right, as before).
-    const double* mu = moments + m * kComponents;
-    const Eight term = e[m] * scale;
-    for (int c = 0; c < kComponents; ++c)
-    {
-      out[c] += term * mu[c];
-    }
-  }
+  this->sumSeries(moments, degree, power, q, scale, e, out);
   addLanes(sums, out);
 }
 

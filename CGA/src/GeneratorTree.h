@@ -30,6 +30,7 @@
 #include "LaneClones.h"
 #include "PointPairKernel.h"
 
+#include "cga/Compact.h"
 #include "cga/Vec3.h"
 
 #include <array>
@@ -234,6 +235,67 @@ private:
     {
       power[m] = power[this->MonomialParent[static_cast<std::size_t>(m)]] *
         y[this->MonomialAxis[static_cast<std::size_t>(m)]];
+    }
+  }
+
+  // The local polynomial at the lanes' points, out[c] = sum_m local[m][c] power[m]; and a node's
+  // series, out[c] = sum_b e_b(u) q^|b| / D mu_b[c] (e = the kernel's Taylor coefficients from the
+  // monomials of u, scale = 1 / D). Lane is Eight (values: addLocal, addMultipole) or a dual number
+  // on Eight (values and d / d p: GeneratorTreeGradients.cpp), so both run the same operations in
+  // the same order and their values are the same bits.
+  template <typename Lane>
+  __attribute__((always_inline)) void sumLocal(const double* local, const Lane* power,
+                                               Lane* out) const
+  {
+    for (int c = 0; c < Bivector::Count; ++c)
+    {
+      out[c] = Lane{};
+    }
+    for (int m = 0; m < this->MomentCount; ++m)
+    {
+      const double* coefficients = local + m * Bivector::Count;
+      for (int c = 0; c < Bivector::Count; ++c)
+      {
+        out[c] = out[c] + coefficients[c] * power[m];
+      }
+    }
+  }
+  template <typename Lane>
+  __attribute__((always_inline)) void sumSeries(const double* moments, int degree,
+                                                const Lane* power, const Lane& q, Lane scale,
+                                                Lane* e, Lane* out) const
+  {
+    const int count = monomialCount(degree);
+    const std::size_t termCount = this->TermsOfDegree[static_cast<std::size_t>(degree)];
+    for (std::size_t t = 0; t < termCount;)
+    {
+      const int moment = this->Terms[t].moment; // its terms are consecutive
+      Lane sum{};
+      for (; t < termCount && this->Terms[t].moment == moment; ++t)
+      {
+        sum = sum + this->Terms[t].coefficient * power[this->Terms[t].monomial];
+      }
+      e[moment] = sum;
+    }
+    // Each moment's coefficient (b! e_b, the moments being mu_b / b!) times q^|b| / D.
+    int n = 0;
+    for (int c = 0; c < Bivector::Count; ++c)
+    {
+      out[c] = Lane{};
+    }
+    for (int m = 0; m < count; ++m)
+    {
+      if (this->MonomialDegree[static_cast<std::size_t>(m)] != n)
+      {
+        n = this->MonomialDegree[static_cast<std::size_t>(m)];
+        scale = scale * q;
+      }
+      const double* mu = moments + m * Bivector::Count;
+      const Lane term = e[m] * scale; // once per monomial: (e scale) mu, left to right
+      for (int c = 0; c < Bivector::Count; ++c)
+      {
+        out[c] = out[c] + term * mu[c];
+      }
     }
   }
 

@@ -531,15 +531,8 @@ void GeneratorTree::addLocal(const double* local, const double* center, double r
   }
   Eight power[kMaxMomentsOfDegree];
   this->monomialPowers(y, M, power);
-  Eight out[kComponents] = {};
-  for (int m = 0; m < M; ++m)
-  {
-    const double* coefficients = local + m * kComponents;
-    for (int c = 0; c < kComponents; ++c)
-    {
-      out[c] += coefficients[c] * power[m];
-    }
-  }
+  Eight out[kComponents];
+  this->sumLocal(local, power, out);
   addLanes(sums, out);
 }
 } // namespace detail

@@ -87,18 +87,7 @@ void GeneratorTree::addLocalGradient(const double* local, const double* center, 
   Gradient* power = scratch(static_cast<std::size_t>(M));
   this->monomialPowers(y, M, power);
   Gradient out[kComponents];
-  for (Gradient& o : out)
-  {
-    o = core::constant<Eight, 3>(Eight{});
-  }
-  for (int m = 0; m < M; ++m)
-  {
-    const double* coefficients = local + m * kComponents;
-    for (int c = 0; c < kComponents; ++c)
-    {
-      out[c] = out[c] + coefficients[c] * power[m];
-    }
-  }
+  this->sumLocal(local, power, out);
   addGradientLanes(sums, gradients, out);
 }
 
@@ -140,37 +129,8 @@ void GeneratorTree::addMultipoleGradient(const Node& node, const double* moments
   Gradient* power = scratch(2 * static_cast<std::size_t>(M));
   Gradient* e = power + M;
   this->monomialPowers(u, M, power);
-  const std::size_t termCount = this->TermsOfDegree[static_cast<std::size_t>(degree)];
-  for (std::size_t t = 0; t < termCount;)
-  {
-    const int moment = this->Terms[t].moment;
-    Gradient sum = core::constant<Eight, 3>(Eight{});
-    for (; t < termCount && this->Terms[t].moment == moment; ++t)
-    {
-      sum = sum + this->Terms[t].coefficient * power[this->Terms[t].monomial];
-    }
-    e[moment] = sum;
-  }
-  int n = 0;
   Gradient out[kComponents];
-  for (Gradient& o : out)
-  {
-    o = core::constant<Eight, 3>(Eight{});
-  }
-  for (int m = 0; m < M; ++m)
-  {
-    if (this->MonomialDegree[static_cast<std::size_t>(m)] != n)
-    {
-      n = this->MonomialDegree[static_cast<std::size_t>(m)];
-      scale = scale * q;
-    }
-    const double* mu = moments + m * kComponents;
-    const Gradient term = e[m] * scale;
-    for (int c = 0; c < kComponents; ++c)
-    {
-      out[c] = out[c] + term * mu[c];
-    }
-  }
+  this->sumSeries(moments, degree, power, q, scale, e, out);
   addGradientLanes(sums, gradients, out);
 }
 } // namespace detail

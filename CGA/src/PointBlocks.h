@@ -70,6 +70,22 @@ BOOSTED_FORCE_INLINE std::size_t forEachBlock(
   return unmapped;
 }
 
+/// A block's lanes from per-point arrays: lanes[j L + l] = values[per i + j] * factor for j < per
+/// and lane l's point i = first + min(l, n - 1) (as forEachBlock fills them).
+BOOSTED_FORCE_INLINE void gatherLanes(const double* values, int per, std::size_t first, int n,
+                                      double factor, double* lanes)
+{
+  constexpr int L = kernel::kLanes;
+  for (int l = 0; l < L; ++l)
+  {
+    const double* v = values + per * (first + static_cast<std::size_t>(std::min(l, n - 1)));
+    for (int j = 0; j < per; ++j)
+    {
+      lanes[j * L + l] = v[j] * factor;
+    }
+  }
+}
+
 /// Maps `count` points, xyz interleaved, from `in` to `out` (which may be `in`). For each block,
 /// mapLanes(first, n, xyz, image, mapped) maps the block's lanes (the points first ... first + n - 1
 /// relative to c in xyz, component-major; the unused lanes of the last block repeat its last

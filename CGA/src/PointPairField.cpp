@@ -429,14 +429,8 @@ auto mapPointsByKernel(const kernel::FieldArgs& args,
       mapBlock(args, xyz, image, mapped);
       return;
     }
-    for (int l = 0; l < L; ++l)
-    {
-      const double* b = treeBivectors.data() + Bivector::Count * (first + std::min(l, n - 1));
-      for (int k = 0; k < Bivector::Count; ++k)
-      {
-        bivectors[k * L + l] = b[k] * -args.strength; // the exponent, as mapBlock's
-      }
-    }
+    // the exponent, as mapBlock's
+    gatherLanes(treeBivectors.data(), Bivector::Count, first, n, -args.strength, bivectors);
     mapBlockBy(args, bivectors, xyz, image, mapped);
   };
   return runBlocks(mapLanes);

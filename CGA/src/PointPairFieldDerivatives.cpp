@@ -137,19 +137,9 @@ std::size_t mapPointsWithTreeJacobians(const detail::GeneratorTree& tree,
     jacobian[9 * L];
   const auto mapLanes = [&](std::size_t first, int n, const double* xyz, double* image,
                           std::uint8_t* mapped) {
-    for (int l = 0; l < L; ++l)
-    {
-      const std::size_t i = first + static_cast<std::size_t>(std::min(l, n - 1));
-      for (int e = 0; e < kBivector; ++e)
-      {
-        exponents[e * L + l] = b[i * kBivector + e] * -args.strength; // as mapPoints' exponent
-        for (int k = 0; k < 3; ++k)
-        {
-          exponentGradients[(3 * e + k) * L + l] =
-            gradients[(i * kBivector + e) * 3 + k] * -args.strength;
-        }
-      }
-    }
+    // as mapPoints' exponent; the gradients' rows (3 e + k) in MapBlockJacobianBy's order
+    gatherLanes(b.data(), kBivector, first, n, -args.strength, exponents);
+    gatherLanes(gradients.data(), 3 * kBivector, first, n, -args.strength, exponentGradients);
     mapBlock(args, exponents, exponentGradients, xyz, image, jacobian, mapped);
     for (int l = 0; l < L; ++l)
     {
