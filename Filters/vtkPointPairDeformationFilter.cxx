@@ -57,6 +57,8 @@ bool isFinite(double x, double y, double z)
 // Points copied per pass through the local buffer of the copy path: a few kilobytes on the stack
 // of each SMP thread.
 constexpr vtkIdType BufferedPoints = 256;
+// The progress text while the generator tree is built (the header's Tolerance).
+constexpr const char* kBuildingTree = "Building the generator tree";
 
 // Deforms every point of an input point array into the output points and their Displacement
 // (out - in; 0 where a point is left in place because it is not finite). vtkArrayDispatch calls it
@@ -498,11 +500,11 @@ int vtkPointPairDeformationFilter::RequestData(
   {
     return 1; // the output stays empty
   }
-  cga::PointPairField field(
+  const auto field = std::make_shared<cga::PointPairField>(
     generators.data(), generators.size(), this->Falloff, this->Epsilon);
-  if (field.skippedGenerators() > 0)
+  if (field->skippedGenerators() > 0)
   {
-    vtkWarningMacro(<< field.skippedGenerators() << " of " << generators.size()
+    vtkWarningMacro(<< field->skippedGenerators() << " of " << generators.size()
                     << " generators were ignored: their direction is zero, or their location, "
                        "direction, weight or (a twist's) pitch is not finite");
   }
@@ -524,13 +526,30 @@ int vtkPointPairDeformationFilter::RequestData(
   vtkInformation* generatorsInfo = outputVector->GetInformationObject(1);
   vtkPolyData* generatorsOutput = vtkPolyData::GetData(generatorsInfo);
   bool deformed = false;
-  // The tree (O(M), a few hundred bytes per generator) is built inside the budget's guard.
+  // The tree (O(M), a few hundred bytes per generator) is built inside the budget's guard, unless
+  // the last update's is the same one (only Strength, the time, the input or the arrays changed).
+  // The last field is let go before a tree is built: one tree at a time.
+  const bool shared =
+    this->LastTreeField && field->shareTree(*this->LastTreeField, this->Tolerance);
+  this->LastTreeField.reset();
   if (!vtkBoostedMemoryBudget::Run(this, [&] {
-        field.setTolerance(this->Tolerance);
-        deformed = this->Deform(input, field, strength, output);
+        if (!shared)
+        {
+          // O(M log M) before any point moves (README, Many generators): said as progress text.
+          const bool building = cga::PointPairField::usesTree(this->Tolerance, field->size());
+          if (building)
+          {
+            this->SetProgressText(kBuildingTree);
+            this->UpdateProgress(0.0);
+          }
+          field->setTolerance(this->Tolerance);
+          this->SetProgressText(nullptr);
+        }
+        deformed = this->Deform(input, *field, strength, output);
       }))
   {
-    output->Initialize(); // no half-built output
+    this->SetProgressText(nullptr); // the tree's build may have failed
+    output->Initialize();           // no half-built output
   }
   else if (deformed && vtkBoostedGeneratorGlyphs::OnFirstPiece(outputVector))
   {
@@ -539,6 +558,10 @@ int vtkPointPairDeformationFilter::RequestData(
     vtkBoostedGeneratorGlyphs glyphs(vtkBoostedGeneratorGlyphs::KindAndPitch);
     glyphs.Add(generators);
     glyphs.Write(generatorsOutput, this->GeneratorGlyphs);
+  }
+  if (field->treeBytes() > 0)
+  {
+    this->LastTreeField = field; // for the next update
   }
   vtkBoostedTimeSweep::StampTime(outInfo, this->NumberOfTimeSteps, output);
   vtkBoostedTimeSweep::StampTime(generatorsInfo, this->NumberOfTimeSteps, generatorsOutput);

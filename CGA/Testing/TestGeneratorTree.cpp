@@ -11,6 +11,7 @@
 #include "../src/GeneratorTree.h"
 #include "../src/TreeRemainder.h"
 
+#include <cstring>
 #include <limits>
 
 namespace
@@ -335,6 +336,79 @@ TEST(GeneratorTree, ToleranceDomainAndSmallFields)
   EXPECT_EQ(fine.treeDegree(), Tree::kDegree);
   const auto points = randomPoints(pick, 50, {}, 1.5);
   EXPECT_LE(worstRelativeError(generators, points, crossover).boundedError, 1.0);
+}
+
+// shareTree takes a previous field's tree only where setTolerance would build the same one, and
+// a field that shares it maps to the same bits as one with a tree of its own.
+TEST(GeneratorTree, ShareTreeOnlyWhereTheTreeWouldBeTheSame)
+{
+  Random random(23);
+  const auto generators = randomPointPairs(random, 400, {}, 1.0);
+  const auto make = [](const std::vector<FieldGenerator>& g, double falloff = kFalloff,
+                       double epsilon = kEpsilon) {
+    return PointPairField(g.data(), g.size(), falloff, epsilon);
+  };
+  PointPairField previous = make(generators);
+  ASSERT_TRUE(previous.setTolerance(1e-3, kTreeFrom, 0.0));
+  ASSERT_GT(previous.treeBytes(), 0u);
+
+  PointPairField shared = make(generators), own = make(generators);
+  EXPECT_FALSE(shared.sharesTreeWith(previous));
+  ASSERT_TRUE(shared.shareTree(previous, 1e-3, kTreeFrom, 0.0));
+  EXPECT_TRUE(shared.sharesTreeWith(previous));
+  EXPECT_EQ(shared.tolerance(), 1e-3);
+  ASSERT_TRUE(own.setTolerance(1e-3, kTreeFrom, 0.0));
+  EXPECT_FALSE(own.sharesTreeWith(previous));
+  std::vector<double> in;
+  for (const Vec3& p : randomPoints(random, 200, {}, 1.5))
+  {
+    in.insert(in.end(), { p.x, p.y, p.z });
+  }
+  std::vector<double> a(in.size()), b(in.size());
+  shared.mapPoints(in.data(), a.data(), in.size() / 3, 0.7, ExponentialRule::Exact);
+  own.mapPoints(in.data(), b.data(), in.size() / 3, 0.7, ExponentialRule::Exact);
+  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
+  // A tolerance above the largest is used as the largest, as setTolerance does.
+  PointPairField largest = make(generators), clamped = make(generators);
+  ASSERT_TRUE(largest.setTolerance(PointPairField::maximumTolerance(), kTreeFrom, 0.0));
+  EXPECT_TRUE(clamped.shareTree(largest, 5.0, kTreeFrom, 0.0));
+
+  // Every input of the tree changed alone, and calls that would build no tree: refused, and the
+  // field left as it was (no tolerance, no tree).
+  auto nudged = generators;
+  nudged[17].weight = std::nextafter(nudged[17].weight, 1.0);
+  const std::vector<FieldGenerator> fewer(generators.begin(), generators.end() - 1);
+  struct Refusal
+  {
+    const char* what;
+    PointPairField field;
+    double tolerance;
+    std::size_t minimumGenerators;
+  };
+  Refusal refusals[] = {
+    { "another tolerance", make(generators), 2e-3, kTreeFrom },
+    { "one weight one ulp away", make(nudged), 1e-3, kTreeFrom },
+    { "one generator fewer", make(fewer), 1e-3, kTreeFrom },
+    { "another falloff", make(generators, 2.0 * kFalloff), 1e-3, kTreeFrom },
+    { "another epsilon", make(generators, kFalloff, std::nextafter(kEpsilon, 1.0)), 1e-3,
+      kTreeFrom },
+    { "below the generators' crossover", make(generators), 1e-3, generators.size() + 1 },
+    { "a NaN tolerance", make(generators), std::nan(""), kTreeFrom },
+    { "a negative tolerance", make(generators), -1e-3, kTreeFrom },
+  };
+  for (Refusal& refusal : refusals)
+  {
+    EXPECT_FALSE(refusal.field.shareTree(previous, refusal.tolerance, refusal.minimumGenerators,
+                                          0.0))
+      << refusal.what;
+    EXPECT_EQ(refusal.field.tolerance(), 0.0) << refusal.what;
+    EXPECT_EQ(refusal.field.treeBytes(), 0u) << refusal.what;
+    EXPECT_FALSE(refusal.field.sharesTreeWith(previous)) << refusal.what;
+  }
+  // A previous field without a tree has none to share.
+  PointPairField direct = make(generators), next = make(generators);
+  EXPECT_FALSE(next.shareTree(direct, 1e-3, kTreeFrom, 0.0));
+  EXPECT_FALSE(next.sharesTreeWith(direct)) << "two fields without a tree share none";
 }
 
 TEST(GeneratorTree, NonFiniteGeneratorsAreSkippedAndNonFinitePointsLeftInPlace)

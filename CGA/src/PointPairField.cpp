@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <type_traits>
 #include <vector>
 
@@ -300,17 +301,55 @@ bool PointPairField::setTolerance(double tolerance, std::size_t minimumGenerator
   }
   this->Tolerance = std::min(tolerance, maximumTolerance());
   this->Tree.reset();
-  if (minimumTolerance < 0.0)
-  {
-    minimumTolerance = treeMinimumTolerance(this->Count);
-  }
-  if (this->Tolerance > 0.0 && this->Tolerance >= minimumTolerance &&
-      this->Count >= std::max<std::size_t>(1, minimumGenerators))
+  if (usesTree(this->Tolerance, this->Count, minimumGenerators, minimumTolerance))
   {
     this->Tree = std::make_shared<const detail::GeneratorTree>(
       this->Generators.data(), this->Count, this->Falloff, this->Epsilon, this->Tolerance);
   }
   return true;
+}
+
+bool PointPairField::usesTree(double tolerance, std::size_t generators,
+  std::size_t minimumGenerators, double minimumTolerance)
+{
+  if (minimumTolerance < 0.0)
+  {
+    minimumTolerance = treeMinimumTolerance(generators);
+  }
+  tolerance = std::min(tolerance, maximumTolerance()); // NaN stays NaN: no tree
+  return tolerance > 0.0 && tolerance >= minimumTolerance &&
+    generators >= std::max<std::size_t>(1, minimumGenerators);
+}
+
+bool PointPairField::shareTree(const PointPairField& previous, double tolerance,
+  std::size_t minimumGenerators, double minimumTolerance)
+{
+  if (!(tolerance >= 0.0) || !previous.Tree)
+  {
+    return false;
+  }
+  // The tree is a function of these alone (GeneratorTree's constructor), compared bit for bit:
+  // the generators as kept (relative to the center), their count, falloff, epsilon, tolerance.
+  const auto sameBits = [](const double* a, const double* b, std::size_t count) {
+    return std::memcmp(a, b, count * sizeof(double)) == 0;
+  };
+  const double used = std::min(tolerance, maximumTolerance());
+  if (!usesTree(used, this->Count, minimumGenerators, minimumTolerance) ||
+      previous.Count != this->Count || previous.Generators.size() != this->Generators.size() ||
+      !sameBits(&previous.Tolerance, &used, 1) || !sameBits(&previous.Falloff, &this->Falloff, 1) ||
+      !sameBits(&previous.Epsilon, &this->Epsilon, 1) ||
+      !sameBits(previous.Generators.data(), this->Generators.data(), this->Generators.size()))
+  {
+    return false;
+  }
+  this->Tolerance = used;
+  this->Tree = previous.Tree;
+  return true;
+}
+
+bool PointPairField::sharesTreeWith(const PointPairField& other) const
+{
+  return this->Tree && this->Tree == other.Tree;
 }
 
 double PointPairField::treeMinimumTolerance(std::size_t generators)

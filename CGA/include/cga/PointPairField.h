@@ -193,6 +193,24 @@ public:
   bool setTolerance(double tolerance,
                     std::size_t minimumGenerators = treeMinimumGenerators(),
                     double minimumTolerance = -1.0);
+  /// setTolerance with `previous`'s tree, shared (a tree is read-only), where it is the tree that
+  /// setTolerance(tolerance, minimumGenerators, minimumTolerance) would build: `previous` holds a
+  /// tree for the same tolerance (as used) and was made from the same kept generators, falloff
+  /// and epsilon, bit for bit. Then the tolerance is set, no tree is built, every result is the
+  /// same bits as after that setTolerance, and it returns true. Otherwise nothing changes and it
+  /// returns false: call setTolerance. For callers that update often with the same generators
+  /// (the deformation filter keeps its last field, so that a new Strength or time step does not
+  /// build the tree again).
+  bool shareTree(const PointPairField& previous, double tolerance,
+                 std::size_t minimumGenerators = treeMinimumGenerators(),
+                 double minimumTolerance = -1.0);
+  /// Whether this field and `other` use one tree (shareTree).
+  bool sharesTreeWith(const PointPairField& other) const;
+  /// Whether setTolerance(tolerance, minimumGenerators, minimumTolerance) builds a tree for a
+  /// field of `generators` kept generators (size()).
+  static bool usesTree(double tolerance, std::size_t generators,
+                       std::size_t minimumGenerators = treeMinimumGenerators(),
+                       double minimumTolerance = -1.0);
   double tolerance() const { return this->Tolerance; }
   static constexpr double maximumTolerance() { return 1.0; }
   static constexpr std::size_t treeMinimumGenerators() { return 10000; }

@@ -39,14 +39,28 @@ def generator_cloud(count, seed=20261202):
     return data
 
 
+# The progress text while the filter builds its tree (the header's Tolerance).
+BUILDING_TREE = "Building the generator tree"
+
+
+def square_plane(resolution=40):
+    plane = vtkPlaneSource()
+    plane.SetOrigin(-2, -2, 0)
+    plane.SetPoint1(2, -2, 0)
+    plane.SetPoint2(-2, 2, 0)
+    plane.SetResolution(resolution, resolution)
+    plane.Update()
+    return plane
+
+
+def output_points(algorithm):
+    output = algorithm.GetOutput()
+    return [output.GetPoint(i) for i in range(output.GetNumberOfPoints())]
+
+
 class ToleranceTest(unittest.TestCase):
     def deform(self, generators, tolerance=None, transform_normals=True):
-        plane = vtkPlaneSource()
-        plane.SetOrigin(-2, -2, 0)
-        plane.SetPoint1(2, -2, 0)
-        plane.SetPoint2(-2, 2, 0)
-        plane.SetResolution(40, 40)
-        plane.Update()
+        plane = square_plane()
         deformation = vtkPointPairDeformationFilter()
         deformation.SetInputConnection(plane.GetOutputPort())
         deformation.SetGeneratorsData(generators)
@@ -111,6 +125,52 @@ class ToleranceTest(unittest.TestCase):
         # 1.1e-5 rad measured: the tree's J, not the direct sum's (the float normals round at 6e-8)
         self.assertGreater(angle, 1e-6)
         self.assertLess(angle, 1e-3)
+
+    def test_the_tree_is_built_again_only_when_it_changes(self):
+        # One filter updated after each change keeps its last tree for the next update while the
+        # generators, Falloff, Epsilon and Tolerance stay the same; the progress text tells when it
+        # builds one. Every output is a new filter's to the bit, so a kept tree is never stale.
+        generators = generator_cloud(TREE_FROM)
+        plane = square_plane()
+        kept = vtkPointPairDeformationFilter()
+        kept.SetInputConnection(plane.GetOutputPort())
+        kept.SetGeneratorsData(generators)
+        texts = []
+        kept.AddObserver("ProgressEvent", lambda caller, event: texts.append(caller.GetProgressText()))
+        settings = {"Strength": 16.0 / TREE_FROM, "Falloff": 1.0, "Epsilon": 0.05,
+                    "Tolerance": 1e-3}
+
+        def builds_tree(**changes):
+            settings.update(changes)
+            for name, value in settings.items():
+                getattr(kept, "Set" + name)(value)
+            del texts[:]
+            kept.Update()
+            self.assertTrue(texts, "the filter executed")
+            fresh = vtkPointPairDeformationFilter()
+            fresh.SetInputConnection(plane.GetOutputPort())
+            fresh.SetGeneratorsData(generators)
+            for name, value in settings.items():
+                getattr(fresh, "Set" + name)(value)
+            fresh.Update()
+            self.assertEqual(output_points(kept), output_points(fresh), changes)
+            self.assertGreater(len(output_points(kept)), 0)
+            return BUILDING_TREE in texts
+
+        self.assertTrue(builds_tree())
+        self.assertFalse(builds_tree(Strength=8.0 / TREE_FROM))
+        self.assertFalse(builds_tree(Strength=-16.0 / TREE_FROM))
+        self.assertTrue(builds_tree(Epsilon=0.06))
+        self.assertTrue(builds_tree(Falloff=1.5))
+        self.assertTrue(builds_tree(Tolerance=2e-3))
+        plane.SetResolution(30, 20)  # another input mesh
+        self.assertFalse(builds_tree())
+        generators.GetPoints().SetPoint(5, 0.5, -0.25, 0.1)  # a generator moved
+        generators.Modified()
+        self.assertTrue(builds_tree())
+        self.assertFalse(builds_tree(Tolerance=0.0))  # the direct sum: no tree
+        self.assertTrue(builds_tree(Tolerance=2e-3))  # none was kept
+        self.assertFalse(builds_tree(Strength=4.0 / TREE_FROM))
 
     def test_few_generators_sum_directly(self):
         generators = generator_cloud(TREE_FROM - 1)
