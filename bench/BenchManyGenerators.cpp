@@ -1,6 +1,7 @@
 // Many generators: the direct sum against the generator tree (PointPairField::setTolerance) on
 // the shared mesh, Many/Direct/M:<M> and Many/Tree/M:<M>/digits:<d> (Tolerance 10^-d), one thread,
-// the Exact rule. The direct row maps evenly spaced whole rows of the mesh so that it takes about
+// the Exact rule; and Many/Build/M:<M>/digits:<d>, the tree's build. The direct row maps evenly
+// spaced whole rows of the mesh so that it takes about
 // kPairs point-generator pairs per iteration at most (all 1,000,000 points up to M = 500; its cost
 // per point does not depend on which points); the tree row maps the whole mesh in chunks of 65,536
 // points, as the filter does (its target cells need the mesh's density). Both report the rate per
@@ -127,6 +128,25 @@ void ManyTree(benchmark::State& state)
   state.counters["degree"] = tree.treeDegree();
 }
 
+// Building the tree (setTolerance), what the filter pays before any point moves when the
+// generators change: "generators/s" (items per second) of wall time.
+void ManyBuild(benchmark::State& state)
+{
+  const int count = static_cast<int>(state.range(0));
+  const double tolerance = std::pow(10.0, -static_cast<double>(state.range(1)));
+  cga::PointPairField tree(scaledGenerators(count), kFalloff, kEpsilon);
+  for (auto _ : state)
+  {
+    tree.setTolerance(tolerance, 1, 0.0);
+    benchmark::DoNotOptimize(tree.treeBytes());
+  }
+  const double generators = static_cast<double>(count) * static_cast<double>(state.iterations());
+  state.counters["generators/s"] = benchmark::Counter(generators, benchmark::Counter::kIsRate);
+  state.SetItemsProcessed(static_cast<int64_t>(generators));
+  state.counters["tree MB"] = static_cast<double>(tree.treeBytes()) / 1e6;
+  state.counters["degree"] = tree.treeDegree();
+}
+
 const std::vector<long> kManyCounts = { 256, 1000, 3000, 10000, 30000, 100000 };
 
 BENCHMARK(ManyDirect)
@@ -137,6 +157,11 @@ BENCHMARK(ManyDirect)
 BENCHMARK(ManyTree)
   ->Name("Many/Tree")
   ->ArgsProduct({ kManyCounts, { 1, 3, 4, 6 } })
+  ->ArgNames({ "M", "digits" })
+  ->Apply(timedPerPoint);
+BENCHMARK(ManyBuild)
+  ->Name("Many/Build")
+  ->ArgsProduct({ { 100000, 1000000 }, { 3, 6 } })
   ->ArgNames({ "M", "digits" })
   ->Apply(timedPerPoint);
 } // namespace
