@@ -398,9 +398,10 @@ void GeneratorTree::computeBudgets(double tolerance)
     const std::size_t n = std::min(kBlock, samples.size() - first);
     for (std::size_t l = 0; l < kBlock; ++l)
     {
-      for (int k = 0; k < 3; ++k)
+      const double* center = samples[first + std::min(l, n - 1)]->center; // repeats the last
+      for (std::size_t k = 0; k < 3; ++k)
       {
-        centers[static_cast<std::size_t>(k) * kBlock + l] = samples[first + std::min(l, n - 1)]->center[k];
+        centers[k * kBlock + l] = center[k];
       }
     }
     this->sampleDirectSum(centers, sums);

@@ -136,7 +136,8 @@ class ToleranceTest(unittest.TestCase):
         kept.SetInputConnection(plane.GetOutputPort())
         kept.SetGeneratorsData(generators)
         texts = []
-        kept.AddObserver("ProgressEvent", lambda caller, event: texts.append(caller.GetProgressText()))
+        kept.AddObserver("ProgressEvent",
+                         lambda caller, event: texts.append(caller.GetProgressText()))
         settings = {"Strength": 16.0 / TREE_FROM, "Falloff": 1.0, "Epsilon": 0.05,
                     "Tolerance": 1e-3}
 
