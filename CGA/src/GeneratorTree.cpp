@@ -391,7 +391,7 @@ void GeneratorTree::computeBudgets(double tolerance)
     }
   }
   double scale = 0.0;
-  constexpr std::size_t kBlock = L; // sample points per call of sampleDirectSum
+  constexpr std::size_t kBlock = L; // sample points per call of the block kernel
   alignas(64) double centers[3 * kBlock], sums[kComponents * kBlock];
   for (std::size_t first = 0; first < samples.size(); first += kBlock)
   {
@@ -404,7 +404,8 @@ void GeneratorTree::computeBudgets(double tolerance)
         centers[k * kBlock + l] = center[k];
       }
     }
-    this->sampleDirectSum(centers, sums);
+    std::fill_n(sums, kComponents * kBlock, 0.0);
+    this->addDirect(0, this->Nodes[0].count, centers, sums, nullptr);
     for (std::size_t l = 0; l < n; ++l)
     {
       Bivector b;
@@ -420,31 +421,6 @@ void GeneratorTree::computeBudgets(double tolerance)
   // Overflow (huge weights) or no displacement at the samples: nodes are used only where exact.
   const double budget = tolerance * scale;
   this->Budget = std::isfinite(budget) && budget > 0.0 ? budget : 0.0;
-}
-
-// B at the lanes' points (centers[k L + l]) by the direct sum over every generator, each lane's
-// terms added in the generators' order, as one point's loop would (the same bits).
-BOOSTED_LANE_CLONES
-void GeneratorTree::sampleDirectSum(const double* centers, double* sums) const
-{
-  static_assert(L == 8, "one vector of Eight per block of lanes");
-  Eight x, y, z;
-  std::memcpy(&x, centers, sizeof x);
-  std::memcpy(&y, centers + L, sizeof y);
-  std::memcpy(&z, centers + 2 * L, sizeof z);
-  Eight out[kComponents] = {};
-  const std::size_t count = this->Nodes[0].count;
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    const double* g = this->Generators.data() + i * kStride;
-    const Eight dx = x - g[0], dy = y - g[1], dz = z - g[2];
-    const Eight factor = 1.0 / (this->Falloff * (dx * dx + dy * dy + dz * dz) + this->Epsilon);
-    for (int c = 0; c < kComponents; ++c)
-    {
-      out[c] += factor * g[3 + c];
-    }
-  }
-  std::memcpy(sums, out, sizeof out);
 }
 
 double GeneratorTree::nodeWeights(const Node& node, double nearest, double farthest, bool lower) const

@@ -223,7 +223,6 @@ private:
   int build(std::size_t first, std::size_t count, std::vector<std::size_t>& order, int depth);
   bool computeMoments(int node);
   void addGeneratorMoments(const Node& node, double scale, double* mu) const;
-  void sampleDirectSum(const double* centers, double* sums) const;
   void addDirect(std::size_t first, std::size_t count, const double* p, double* sums,
                  double* gradients) const;
   void addMultipole(const Node& node, const double* moments, int degree, const double* p, double* b) const;
