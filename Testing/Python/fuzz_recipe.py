@@ -13,7 +13,9 @@ without touching this file:
   the classes do real work (a random double is almost never a kind), and sometimes any value;
 * array selections: every Get<Name>ArraySelection returning a vtkDataArraySelection (names of
   input arrays to act on), whose arrays are enabled, disabled or cleared;
-* inputs: every input port, its required data type and whether it is optional.
+* inputs: every input port, its required data type and whether it is optional; the Generators
+  input of a class with a `Tolerance` sometimes holds enough generators for its tree
+  (MANY_GENERATORS).
 
 A trial is a recipe: plain data made by random.Random("<seed>/<trial>") alone (the same on every
 machine and Python), so that `--seed S --trial T` replays it exactly. make_recipe makes it,
@@ -54,6 +56,14 @@ BAD_KIND_RATE = 0.04
 # search may do up to MaximumKindSearchWork units of work (README, "Kinds": up to about 14 us
 # each); its default, minutes, is beyond the driver's --timeout, 1e6 is seconds.
 HELD_AT_MOST = {"MaximumKindSearchWork": 1e6}
+
+# A class with a Tolerance builds a generator tree only from 10,000 kept generators (the measured
+# crossover, cga::PointPairField::treeMinimumGenerators), far more than a few rows. So a share of
+# its Generators inputs hold size^2 points (a polydata or unstructured grid), enough left after a
+# non-finite regime spoils a few, and then TOLERANCE_RATE of them come with a Tolerance the tree
+# is built for (above treeMinimumTolerance: 1e-4 (10,000/M)^3), so that the tree's build, its
+# sharing across a trial's updates and its bad input are fuzzed too.
+MANY_GENERATORS = {"rate": 0.25, "size": 110, "tolerance_rate": 0.8, "tolerances": (1e-4, 1.0)}
 
 # The value regimes of a trial: most trials stay where the classes do real work, so that valid
 # outputs are checked as often as refusals.
@@ -244,10 +254,11 @@ KIND_CLASSES = {"polydata": vtkPolyData, "unstructured": vtkUnstructuredGrid,
                 "rectilinear": vtkRectilinearGrid}
 
 
-def data_spec(rng, values, required, optional, rows_hint):
+def data_spec(rng, values, required, optional, rows_hint, tree=False):
     """The input of one port: a data-set kind and how to fill it (built by fuzz_inputs.build).
     Mostly a kind the port accepts (so that the class runs), sometimes any (the pipeline's type
-    check refuses it)."""
+    check refuses it). With `tree` (a Generators input of a class with a Tolerance), sometimes
+    MANY_GENERATORS's many points."""
     kinds = sorted(KIND_CLASSES)
     accepted = [k for k in kinds if any(KIND_CLASSES[k].IsTypeOf(t) for t in required)] or kinds
     spec = {"seed": rng.getrandbits(32), "regime": values.regime}
@@ -273,7 +284,23 @@ def data_spec(rng, values, required, optional, rows_hint):
         # so that the port's generators are used; the random arrays above may still spoil them.
         spec["arrays"].insert(0, (NAMES[0], 3, "double", 0))
     spec["cell_arrays"] = rng.randint(0, 2)
+    if tree and rows_hint and spec["kind"] in ("polydata", "unstructured") and \
+            rng.random() < MANY_GENERATORS["rate"]:
+        spec["size"] = MANY_GENERATORS["size"]
+        if spec["arrays"][:1] != [(NAMES[0], 3, "double", 0)]:
+            spec["arrays"].insert(0, (NAMES[0], 3, "double", 0))  # usable, unless spoiled
     return spec
+
+
+def reaches_tree(model):
+    """Whether a class has a generator tree for the fuzz to reach: a Tolerance and an optional
+    Generators input (the deformation filter; the dipole field source has rows only)."""
+    return "Tolerance" in model.setters and any(optional for _, optional in model.ports[1:])
+
+
+def many_generators(spec):
+    """Whether an input of data_spec holds MANY_GENERATORS's many points."""
+    return spec is not None and spec.get("size") == MANY_GENERATORS["size"]
 
 
 def request(rng, values, model):
@@ -331,7 +358,8 @@ def mutation(rng, values, model, rows):
         port = rng.randrange(len(model.ports))
         required, optional = model.ports[port]
         return ("SetInputDataObject", [port, data_spec(rng, values, required, optional,
-                                                        port > 0 and optional)])
+                                                        port > 0 and optional,
+                                                        reaches_tree(model))])
     if model.selections and roll < 0.57:
         # "Get<Name>ArraySelection.<Method>": the runner calls the getter, then the method. The
         # names are the ones fuzz_inputs gives arrays (of 1 to 4 components), and others.
@@ -368,12 +396,16 @@ def make_recipe(models, seed, trial):
             # (the same points: a fit to where the mesh already is), 45 % the first's data with
             # its points moved (fuzz_inputs: the same count and order elsewhere, a real fit),
             # else any.
-            spec = data_spec(rng, values, required, optional, port > 0 and optional)
+            spec = data_spec(rng, values, required, optional, port > 0 and optional,
+                             reaches_tree(model))
             roll = rng.random()
             if port > 0 and not optional and first is not None and spec is not None and roll < 0.9:
                 spec = dict(first, moved=spec["seed"]) if roll < 0.45 else dict(first)
             first = spec if port == 0 else first
             calls.append(("SetInputDataObject", [port, spec]))
+            if port > 0 and many_generators(spec) and \
+                    rng.random() < MANY_GENERATORS["tolerance_rate"]:
+                calls.append(("SetTolerance", [log_uniform(rng, *MANY_GENERATORS["tolerances"])]))
     instance = model.cls()
     for row in rows:
         rows[row] = getattr(instance, "GetNumberOf%ss" % row)()

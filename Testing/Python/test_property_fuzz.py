@@ -6,7 +6,9 @@ as long as the points and cells, and no NaN or infinity anywhere when the inputs
 trial may crash or hang: trials run in a worker process, and a trial that kills it, takes more
 than --timeout seconds, or during which the worker writes a line that cannot be read or ends, is a
 failure; no trial ends without a result or a failure, even after an error of the driver. Every
-failure prints a one-line reproducer.
+failure prints a one-line reproducer. The summary counts each class's updates, refusals, valid
+outputs and (the deformation filter) updates that built a generator tree; a run of many trials
+fails a class that seldom gives a valid output, or never builds the tree it can.
 
     PYTHONPATH=<build>/lib/python3.11/site-packages:Testing/Support \\
         /usr/bin/python3 Testing/Python/test_property_fuzz.py [--seed S] [--trials N]
@@ -42,6 +44,9 @@ DEFAULT_TRIALS = 8000
 # its generator rows' random kinds being almost never kinds). Measured with the default seed:
 # 16 % for the fit filter, 40 % or more for the others.
 LEAST_OUTPUT_SHARE = 0.05
+# From this many trials a class that can build a generator tree (fuzz_recipe.reaches_tree) must
+# have built one: 50 updates build one in the default seed's 8,000 trials.
+LEAST_TREE_TRIALS = 4000
 
 # Failures excused (counted, printed, not failed) while a fix is under way; --strict fails them
 # too. Each entry names the category of fuzz_checks' problem (or "crash") it excuses. None now.
@@ -75,7 +80,8 @@ os.environ["BOOSTEDSURFACES_MEMORY_BUDGET"] = ARGS.memory_budget
 os.environ["VTK_SMP_BACKEND_IN_USE"] = "STDThread"
 os.environ["VTK_SMP_MAX_THREADS"] = "2"
 
-from vtkmodules.vtkCommonCore import vtkLogger, vtkOutputWindow  # noqa: E402 (after the environment)
+from vtkmodules.vtkCommonCore import (vtkCommand, vtkLogger,  # noqa: E402 (after the environment)
+                                      vtkOutputWindow)
 
 import fuzz_checks  # noqa: E402
 import fuzz_inputs  # noqa: E402
@@ -135,7 +141,10 @@ def run_recipe(models, log, recipe, verbose=False):
     log.take(recorder)
     finite_ports = {}
     problems = []
-    statistics = {"updates": 0, "errors": 0, "outputs": 0}
+    statistics = {"updates": 0, "errors": 0, "outputs": 0, "trees": 0}
+    progress_texts = set()
+    algorithm.AddObserver(vtkCommand.ProgressEvent,
+                          lambda caller, event: progress_texts.add(caller.GetProgressText()))
     for method, call_arguments in recipe["calls"]:
         if method == "SetInputDataObject":
             port, spec = call_arguments
@@ -150,6 +159,7 @@ def run_recipe(models, log, recipe, verbose=False):
         ports = range(algorithm.GetNumberOfOutputPorts())
         befores = [algorithm.GetOutputDataObject(port) for port in ports]
         stamps = [b.GetMTime() if b is not None else None for b in befores]
+        progress_texts.clear()
         fuzz_recipe.call(algorithm, method, call_arguments)
         if not method.startswith("Update"):
             log.take(recorder)  # a setter's own error (a row outside the list) is not the update's
@@ -160,6 +170,7 @@ def run_recipe(models, log, recipe, verbose=False):
         statistics["errors"] += bool(errors)
         output = algorithm.GetOutputDataObject(0)
         statistics["outputs"] += bool(not errors and output and output.GetNumberOfPoints())
+        statistics["trees"] += common.BUILDING_TREE in progress_texts
         found = []
         for port in ports:
             port_output = algorithm.GetOutputDataObject(port)
@@ -500,11 +511,18 @@ def drive():
     failures.add_all(lost, "lost", "no result: the driver lost this trial", class_names)
     seconds = time.time() - start
     print("seed %d, trials %d..%d, %.0f s:" % (ARGS.seed, first, end - 1, seconds))
-    lifeless = []
-    for name in class_names:
+    lifeless, treeless = [], []
+    for model in models:
+        name = model.name
         totals = failures.statistics.get(name, {})
-        print("  %s: %d updates, %d refused with an error, %d valid non-empty outputs" % (
-            name, totals.get("updates", 0), totals.get("errors", 0), totals.get("outputs", 0)))
+        print("  %s: %d updates, %d refused with an error, %d valid non-empty outputs%s" % (
+            name, totals.get("updates", 0), totals.get("errors", 0), totals.get("outputs", 0),
+            ", %d built a generator tree" % totals.get("trees", 0)
+            if fuzz_recipe.reaches_tree(model) else ""))
+        # The tree's trials are rare (fuzz_recipe.MANY_GENERATORS).
+        if ARGS.trials >= LEAST_TREE_TRIALS and fuzz_recipe.reaches_tree(model) and \
+                totals.get("trees", 0) == 0:
+            treeless.append(name)
         # A fuzz that seldom reaches a class's real work (or never its refusals) checks little.
         if ARGS.trials >= 20 * len(class_names) and not (
                 totals.get("outputs", 0) >= LEAST_OUTPUT_SHARE * totals.get("updates", 0) > 0
@@ -513,10 +531,12 @@ def drive():
     for name in lifeless:
         print("FAIL %s: valid non-empty outputs in fewer than %g %% of its updates, or no refusal,"
               " in %d trials" % (name, 100 * LEAST_OUTPUT_SHARE, ARGS.trials))
+    for name in treeless:
+        print("FAIL %s: no update built a generator tree in %d trials" % (name, ARGS.trials))
     print("%d failed trials, %d excused as known issues (%s)" % (
         len(set(failures.failed)), len(set(failures.known)), ", ".join(sorted(KNOWN_ISSUES))
         or "none"))
-    return 1 if failures.failed or problems or lifeless else 0
+    return 1 if failures.failed or problems or lifeless or treeless else 0
 
 
 def replay(trial):

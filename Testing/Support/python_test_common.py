@@ -1,5 +1,6 @@
-"""Shared by the Python tests: error observation, a NaN-aware maximum, and the image tests'
-arguments, actors, window, camera and regression-image comparison."""
+"""Shared by the Python tests: error observation, a NaN-aware maximum, the deformation filter's
+progress text of its tree, and the image tests' arguments, actors, window, camera and
+regression-image comparison."""
 import argparse
 import math
 
@@ -8,6 +9,10 @@ from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderWindow
 from vtkmodules.vtkTestingRendering import vtkTesting
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL render window)
+
+# vtkPointPairDeformationFilter's progress text while it builds its generator tree (its header's
+# Tolerance): how a test sees that an update built a tree.
+BUILDING_TREE = "Building the generator tree"
 
 
 def largest(values):

@@ -39,10 +39,6 @@ def generator_cloud(count, seed=20261202):
     return data
 
 
-# The progress text while the filter builds its tree (the header's Tolerance).
-BUILDING_TREE = "Building the generator tree"
-
-
 def square_plane(resolution=40):
     plane = vtkPlaneSource()
     plane.SetOrigin(-2, -2, 0)
@@ -156,7 +152,7 @@ class ToleranceTest(unittest.TestCase):
             fresh.Update()
             self.assertEqual(output_points(kept), output_points(fresh), changes)
             self.assertGreater(len(output_points(kept)), 0)
-            return BUILDING_TREE in texts
+            return common.BUILDING_TREE in texts
 
         self.assertTrue(builds_tree())
         self.assertFalse(builds_tree(Strength=8.0 / TREE_FROM))
