@@ -1,9 +1,5 @@
 #include "cga/PointPairs.h"
 
-#include "cga/CompactAlgebra.h"
-#include "cga/CompactConversion.h"
-#include "cga/Conformal.h"
-
 #include "NullPointPairTerms.h"
 
 namespace cga
@@ -25,10 +21,27 @@ Bivector nullPointPairCompact(Vec3 location, Vec3 direction)
   return b;
 }
 
+// T(d) moves each vector of a blade: e_i -> e_i + d_i ni, no -> up(d) = no + d + |d|^2/2 ni,
+// ni -> ni, and a bivector as the wedge of its moved vectors (the versor is an outermorphism):
+// e_i^e_j gains d_j e_i^ni - d_i e_j^ni; e_i^no gains e_i^d + |d|^2/2 e_i^ni - d_i no^ni
+// - d_i d^ni; no^ni gains d^ni; e_i^ni stays. About 50 operations instead of two products of
+// even elements (TestFastPaths checks it against the full algebra's T b ~T).
 Bivector translatedBivector(const Bivector& b, Vec3 d)
 {
-  const Even t = toEven(translator(d));
-  return (t * Even::fromBivector(b) * reverse(t)).bivector;
+  using B = Bivector;
+  const double n1 = b[B::E1NO], n2 = b[B::E2NO], n3 = b[B::E3NO];
+  const double dn = d.x * n1 + d.y * n2 + d.z * n3; // d . (the e_i^no part)
+  const double half = 0.5 * (d.x * d.x + d.y * d.y + d.z * d.z);
+  const double along = b[B::NONI] - dn; // the d_j e_j^ni terms' factor
+  Bivector r = b;
+  r[B::E12] += n1 * d.y - n2 * d.x;
+  r[B::E13] += n1 * d.z - n3 * d.x;
+  r[B::E23] += n2 * d.z - n3 * d.y;
+  r[B::NONI] = along;
+  r[B::E1NI] += (d.y * b[B::E12] + d.z * b[B::E13]) + half * n1 + along * d.x;
+  r[B::E2NI] += (d.z * b[B::E23] - d.x * b[B::E12]) + half * n2 + along * d.y;
+  r[B::E3NI] += -(d.x * b[B::E13] + d.y * b[B::E23]) + half * n3 + along * d.z;
+  return r;
 }
 
 Vec3 firstOrderMotion(const Bivector& b, Vec3 p)

@@ -13,8 +13,8 @@ namespace cga
 /// x ^ v + (v.x) no^ni - v ^ no + ((v.x) x - |x|^2/2 v) ^ ni. The length of v is the weight.
 Bivector nullPointPairCompact(Vec3 location, Vec3 direction);
 
-/// T(d) b ~T(d), T(d) = 1 - d ni / 2: the bivector b moved by d (exact in the algebra; rounds like
-/// b's largest component times |d|^2).
+/// T(d) b ~T(d), T(d) = 1 - d ni / 2: the bivector b moved by d, in closed form (exact in the
+/// algebra; rounds like b's largest component times |d|^2).
 Bivector translatedBivector(const Bivector& b, Vec3 d);
 
 /// The first-order motion of p under the bivector b: d/ds of fn(K up(p) ~K), K = exp(-s b), at
