@@ -570,6 +570,20 @@ TEST(GeneratorTree, BadInputsKeepTheBound)
       EXPECT_FALSE(std::isnan(c));
     }
   }
+  // A generator near the largest doubles (a translation: its bivector does not grow with its
+  // location) makes the tree's extent overflow; its levels were an infinity converted to int
+  // (undefined behaviour, found by the property fuzz under the sanitizers). The images stay finite.
+  auto vast = randomPointPairs(random, 400, {}, 1.0);
+  vast.push_back(FieldGenerator::translation({ 1e300, -1e300, 1e300 }, { 0.0, 1.0, 0.5 }, 0.01));
+  PointPairField vastTree(vast.data(), vast.size(), kFalloff, kEpsilon);
+  ASSERT_TRUE(vastTree.setTolerance(1e-3, kTreeFrom, 0.0));
+  EXPECT_EQ(vastTree.skippedGenerators(), 0u);
+  for (const Vec3& p : randomPoints(random, 20, {}, 1.5))
+  {
+    Vec3 a;
+    ASSERT_TRUE(vastTree.map(p, 0.5, ExponentialRule::Exact, a));
+    EXPECT_TRUE(std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z));
+  }
   // Far from the mesh: the points' images within the bound.
   const auto far = randomPointPairs(random, 500, { 40.0, -30.0, 20.0 }, 1.0);
   PointPairField farDirect(far.data(), far.size(), kFalloff, kEpsilon);

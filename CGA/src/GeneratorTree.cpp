@@ -549,9 +549,10 @@ void GeneratorTree::chooseCells()
     side = std::isfinite(floorWidth) && floorWidth > 0.0 ? floorWidth : 1.0;
   }
   this->LeafSide = std::exp2(std::floor(std::log2(side)));
-  this->Levels = extent > 0.0
-    ? std::clamp(static_cast<int>(std::ceil(std::log2(2.0 * extent / this->LeafSide))), 0, 20)
-    : 0;
+  // At most 20 levels, clamped as a double: generators near the largest doubles make the ratio
+  // (or the extent itself) infinite, which converted to int is undefined (found by the fuzz).
+  const double levels = extent > 0.0 ? std::ceil(std::log2(2.0 * extent / this->LeafSide)) : 0.0;
+  this->Levels = levels >= 20.0 ? 20 : levels > 0.0 ? static_cast<int>(levels) : 0;
 }
 
 // Nodes [first, first + count) of `order`, split at the median of the widest extent.
