@@ -16,6 +16,7 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataArrayRange.h"
+#include "vtkDoubleArray.h"
 #include "vtkImageData.h"
 #include "vtkImageDataToPointSet.h"
 #include "vtkInformation.h"
@@ -347,6 +348,27 @@ vtkPointPairJacobianArrays::Request derivativeRequest(vtkPointPairDeformationFil
   return request;
 }
 
+// cga::PointPairField::planTreeCells for the input's points: float or double AOS arrays as they
+// are, any other array (rare: SOA or integer points) through a copy in double.
+void planTreeCells(cga::PointPairField& field, vtkDataArray* points)
+{
+  const auto count = static_cast<std::size_t>(points->GetNumberOfTuples());
+  if (auto* doubles = vtkArrayDownCast<vtkAOSDataArrayTemplate<double>>(points))
+  {
+    field.planTreeCells(doubles->GetPointer(0), count);
+  }
+  else if (auto* floats = vtkArrayDownCast<vtkAOSDataArrayTemplate<float>>(points))
+  {
+    field.planTreeCells(floats->GetPointer(0), count);
+  }
+  else
+  {
+    vtkNew<vtkDoubleArray> copy;
+    copy->DeepCopy(points);
+    field.planTreeCells(copy->GetPointer(0), count);
+  }
+}
+
 // Deforms `inPoints` into `outPoints` and `displacement` (AOS arrays of value type Out), and,
 // when `derivatives` asks for any, the arrays from J.
 template <typename Out>
@@ -575,7 +597,7 @@ vtkMTimeType vtkPointPairDeformationFilter::GetMTime()
 }
 
 bool vtkPointPairDeformationFilter::Deform(
-  vtkDataSet* input, const cga::PointPairField& field, double strength, vtkPointSet* output)
+  vtkDataSet* input, cga::PointPairField& field, double strength, vtkPointSet* output)
 {
   // Same topology, cells and arrays; the normals are dropped here (cell normals would be wrong
   // after the warp) and the point normals come back transformed by J when asked for.
@@ -628,6 +650,10 @@ bool vtkPointPairDeformationFilter::Deform(
 
   const cga::ExponentialRule rule =
     vtkBoostedExponentialRule<vtkPointPairDeformationFilter>(this->ExponentialRule);
+  if (field.treeBytes() > 0)
+  {
+    planTreeCells(field, inPoints->GetData()); // the tree's cells fitted to this input's points
+  }
   vtkIdType unchanged = 0, nonFiniteInputs = 0, beyondOutputType = 0;
   (outputType == VTK_FLOAT ? deformPoints<float> : deformPoints<double>)(this, field,
     inPoints->GetData(), outPoints->GetData(), displacement, strength, rule, derivatives,

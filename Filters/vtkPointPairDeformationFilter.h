@@ -113,8 +113,10 @@ public:
   /// the bound is enforced at every point). Values above 1 are used as 1; NaN or negative is an
   /// error and gives an empty output. Fields of fewer than 10,000 generators, and tolerances below
   /// 1e-4 (10,000/M)^3 (1e-7 at M = 100,000), always sum directly (the measured crossovers).
-  /// The arrays through the map's derivative (normals, vectors, ConformalScale,
-  /// ConformalityDefect) come from the tree's approximation too (measured, not bounded).
+  /// The tree's cells are fitted to the input's points (cga::PointPairField::planTreeCells:
+  /// wider on a sparse mesh). The arrays through the map's derivative (normals, vectors,
+  /// ConformalScale, ConformalityDefect) come from the tree's approximation too (measured, not
+  /// bounded).
   /// The filter keeps its last tree (with its field: 510 to 540 bytes per generator) and shares it
   /// with the next update while the generators, Falloff, Epsilon and Tolerance stay the same, so
   /// that a new Strength or time step, input or array selection does not build it again
@@ -182,9 +184,10 @@ protected:
 private:
   /// RequestData's allocating part, after the validation and the memory estimate: the explicit
   /// copy of an image or rectilinear grid, the output points and Displacement, the deformation;
-  /// false after an abort or an error (the output then empty).
+  /// false after an abort or an error (the output then empty). With a tree, its cells are fitted
+  /// to the input's points first (cga::PointPairField::planTreeCells).
   bool Deform(
-    vtkDataSet* input, const cga::PointPairField& field, double strength, vtkPointSet* output);
+    vtkDataSet* input, cga::PointPairField& field, double strength, vtkPointSet* output);
 
   /// The last update's field while it holds a tree (Tolerance), for the next update to share.
   std::shared_ptr<const cga::PointPairField> LastTreeField;

@@ -62,6 +62,32 @@ vtkSmartPointer<vtkDataArray> newArray(int precision, const char* name, int comp
   return array;
 }
 
+// Points begin ... begin + n - 1 of the extent (ids from 0, x fastest), interleaved.
+void gridPoints(const int extent[6], const double origin[3], const double spacing[3],
+  vtkIdType begin, std::size_t n, double* points)
+{
+  const vtkIdType nx = extent[1] - extent[0] + 1;
+  const vtkIdType ny = extent[3] - extent[2] + 1;
+  // The first point's structured index (i, j, k) in the extent, then one step at a time.
+  vtkIdType index[3] = { begin % nx, (begin / nx) % ny, begin / (nx * ny) };
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      points[3 * i + c] = origin[c] + (extent[2 * c] + index[c]) * spacing[c];
+    }
+    if (++index[0] == nx)
+    {
+      index[0] = 0;
+      if (++index[1] == ny)
+      {
+        index[1] = 0;
+        ++index[2];
+      }
+    }
+  }
+}
+
 // The arrays of one extent (values of type T: float or double), filled by chunks of points from
 // several threads.
 template <typename T>
@@ -106,26 +132,7 @@ struct FieldFunctor
     double* const b = a + 3 * n;
     double* const phi = b + 3 * n;
     double* const scratch = phi + n;
-    const vtkIdType nx = this->Extent[1] - this->Extent[0] + 1;
-    const vtkIdType ny = this->Extent[3] - this->Extent[2] + 1;
-    // The first point's structured index (i, j, k) in the extent, then one step at a time.
-    vtkIdType index[3] = { begin % nx, (begin / nx) % ny, begin / (nx * ny) };
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        points[3 * i + c] = this->Origin[c] + (this->Extent[2 * c] + index[c]) * this->Spacing[c];
-      }
-      if (++index[0] == nx)
-      {
-        index[0] = 0;
-        if (++index[1] == ny)
-        {
-          index[1] = 0;
-          ++index[2];
-        }
-      }
-    }
+    gridPoints(this->Extent, this->Origin, this->Spacing, begin, n, points);
     *this->Failures +=
       this->Field->sampleMany(points, n, this->WeightScale, a, b, phi, scratch);
     // Huge weights of translations, twists or dilations move points by up to ~1e308, and sums of
@@ -369,6 +376,11 @@ int vtkDipoleFieldSource::RequestData(
     differenceMagnitude, potential;
   if (!vtkBoostedMemoryBudget::Run(this, [&] {
         field.setTolerance(this->Tolerance); // the tree: O(M), a few hundred bytes per generator
+        field.planTreeCells(static_cast<std::size_t>(n), // its cells fitted to the grid's points
+          [&](std::size_t first, std::size_t count, double* xyz) {
+            gridPoints(extent, this->Origin, this->Spacing, static_cast<vtkIdType>(first), count,
+              xyz);
+          });
         summedGenerators = newArray(precision, "DisplacementSummedGenerators", 3, n);
         summedDisplacements = newArray(precision, "DisplacementSummedDisplacements", 3, n);
         difference = newArray(precision, "DisplacementDifference", 3, n);

@@ -158,6 +158,7 @@ public:
   /// is the direct sum; t > 0 keeps each displacement's error, to first order, within t times the
   /// field's displacement scale. Values above 1 are used as 1; NaN or negative is an error (empty output). Method (b)
   /// stays exact. Fewer than 10,000 generators, or a tolerance below 1e-4 (10,000/M)^3, always sum directly.
+  /// The tree's cells are fitted to the grid's points (cga::DipoleField::planTreeCells).
   vtkSetMacro(Tolerance, double);
   vtkGetMacro(Tolerance, double);
   ///@}

@@ -37,21 +37,6 @@ std::vector<FieldGenerator> randomPointPairs(Random& random, std::size_t count, 
   return generators;
 }
 
-// A wavy sheet through the generators and beyond them, xyz interleaved.
-std::vector<double> sheet(int side, double half)
-{
-  std::vector<double> points;
-  for (int i = 0; i < side; ++i)
-  {
-    for (int j = 0; j < side; ++j)
-    {
-      const double x = -half + 2.0 * half * i / (side - 1), y = -half + 2.0 * half * j / (side - 1);
-      points.insert(points.end(), { x, y, 0.2 * std::sin(3.0 * x) * std::cos(2.0 * y) });
-    }
-  }
-  return points;
-}
-
 bool sameBits(const std::vector<double>& a, const std::vector<double>& b)
 {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
@@ -62,7 +47,7 @@ TEST(GeneratorTreeDerivatives, ImagesAreTheTreesAndJacobiansApproachTheDirectSum
   Random random(20261207);
   const auto generators = randomPointPairs(random, 2000, 1.0);
   const PointPairField direct(generators.data(), generators.size(), kFalloff, kEpsilon);
-  const std::vector<double> in = sheet(24, 1.4);
+  const std::vector<double> in = wavySheet(24, 1.4);
   const std::size_t n = in.size() / 3;
   for (const ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
   {
@@ -268,7 +253,7 @@ TEST(GeneratorTreeDerivatives, EveryInstructionSetGivesTheSameBits)
   const auto generators = randomPointPairs(random, 1000, 1.0);
   PointPairField tree(generators.data(), generators.size(), kFalloff, kEpsilon);
   ASSERT_TRUE(tree.setTolerance(1e-2, kTreeFrom, 0.0));
-  const std::vector<double> in = sheet(10, 1.3);
+  const std::vector<double> in = wavySheet(10, 1.3);
   const std::size_t n = in.size() / 3;
   for (const ExponentialRule rule : { ExponentialRule::Exact, ExponentialRule::Paper })
   {

@@ -108,6 +108,22 @@ private:
   std::mt19937_64 Engine;
 };
 
+/// A wavy sheet of side x side points over [-half, half]^2 (z = 0.2 sin 3x cos 2y), xyz
+/// interleaved: the generator tree tests' mesh through their generators and beyond them.
+inline std::vector<double> wavySheet(int side, double half)
+{
+  std::vector<double> points;
+  for (int i = 0; i < side; ++i)
+  {
+    for (int j = 0; j < side; ++j)
+    {
+      const double x = -half + 2.0 * half * i / (side - 1), y = -half + 2.0 * half * j / (side - 1);
+      points.insert(points.end(), { x, y, 0.2 * std::sin(3.0 * x) * std::cos(2.0 * y) });
+    }
+  }
+  return points;
+}
+
 /// A random orthonormal patch frame: origin in [-2, 2]^3, random u and v directions.
 inline PatchFrame randomFrame(Random& random)
 {

@@ -111,9 +111,18 @@ public:
   /// With gradients, also the derivatives of the same approximation (its expansions and direct
   /// sums differentiated, GeneratorTreeGradients.cpp): d B_c / d p_k of point i at
   /// gradients[(i * Bivector::Count + c) * 3 + k], the values in bivectors the same bits as
-  /// without.
+  /// without. With `coarser` > 0 the leaves are 2^coarser times as wide (at most levels() times:
+  /// then the top cells are the leaves), for sparse points (countCells); each B(p) then depends
+  /// on p and `coarser`.
   void evaluatePoints(const double* xyz, std::size_t count, double* bivectors,
-                      double* gradients = nullptr) const;
+                      double* gradients = nullptr, int coarser = 0) const;
+
+  /// For the points (relative to the field's center, interleaved) as one evaluatePoints call:
+  /// cells[c] += the number of distinct leaves of the lattice c levels coarser that hold them,
+  /// for c = 0 ... levels() (cells holds levels() + 1 counts), each leaf being one local
+  /// expansion of that call. Returns the number of points counted (the finite ones within the
+  /// lattice).
+  std::size_t countCells(const double* xyz, std::size_t count, std::size_t* cells) const;
 
   /// The target cells: the side of the finest (leaf) cubes and the levels above them.
   double leafSide() const { return this->LeafSide; }
@@ -350,11 +359,11 @@ private:
 };
 
 /// tree.evaluatePoints of `count` points given in space (xyz interleaved, float or double),
-/// moved to the field's center c first, as the tree takes them: mapPoints' and
-/// mapPointsWithJacobians' B(p) of a whole call.
+/// moved to the field's center c first, as the tree takes them, on the lattice `coarser` levels
+/// coarser: mapPoints' and mapPointsWithJacobians' B(p) of a whole call.
 template <typename In>
-void evaluatePointsAbout(const GeneratorTree& tree, Vec3 c, const In* in, std::size_t count,
-                         double* bivectors, double* gradients = nullptr)
+void evaluatePointsAbout(const GeneratorTree& tree, int coarser, Vec3 c, const In* in,
+                         std::size_t count, double* bivectors, double* gradients = nullptr)
 {
   std::vector<double> relative(3 * count);
   for (std::size_t i = 0; i < count; ++i)
@@ -363,7 +372,7 @@ void evaluatePointsAbout(const GeneratorTree& tree, Vec3 c, const In* in, std::s
     relative[3 * i + 1] = static_cast<double>(in[3 * i + 1]) - c.y;
     relative[3 * i + 2] = static_cast<double>(in[3 * i + 2]) - c.z;
   }
-  tree.evaluatePoints(relative.data(), count, bivectors, gradients);
+  tree.evaluatePoints(relative.data(), count, bivectors, gradients, coarser);
 }
 } // namespace detail
 } // namespace cga

@@ -72,6 +72,31 @@ long long floorDivide(long long a, int shift)
   }
   return q;
 }
+
+// The key of point p (finite) in the lattice of leaves 1/inverseSide wide and `levels` levels;
+// false where its leaf index would exceed kLargestIndex (then it is evaluated on its own).
+bool cellKey(const double* p, double inverseSide, int levels, std::size_t index, CellKey& key)
+{
+  double scaled[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    scaled[k] = std::floor(p[k] * inverseSide);
+    if (!(std::fabs(scaled[k]) < kLargestIndex))
+    {
+      return false;
+    }
+  }
+  key.morton = 0;
+  key.index = index;
+  for (int k = 0; k < 3; ++k)
+  {
+    const auto leaf = static_cast<long long>(scaled[k]);
+    key.top[k] = floorDivide(leaf, levels);
+    const auto within = static_cast<std::uint64_t>(leaf - key.top[k] * (1LL << levels));
+    key.morton |= spreadBits(within) << k;
+  }
+  return true;
+}
 } // namespace
 
 namespace
@@ -130,6 +155,8 @@ static_assert(kComponents == 10, "Components holds ten");
 // node lists per level.
 struct GeneratorTree::CellWork
 {
+  double leafSide; // the lattice of this call (evaluatePoints' coarser)
+  int levels;
   const double* xyz;
   double* bivectors;
   double* gradients; // null: B alone
@@ -139,8 +166,38 @@ struct GeneratorTree::CellWork
   std::vector<std::vector<int>> stacks; // per level: the nodes to classify
 };
 
+std::size_t GeneratorTree::countCells(const double* xyz, std::size_t count,
+                                      std::size_t* cells) const
+{
+  std::vector<CellKey> keys;
+  keys.reserve(count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const double* p = xyz + 3 * i;
+    CellKey key;
+    if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) &&
+        cellKey(p, 1.0 / this->LeafSide, this->Levels, i, key))
+    {
+      keys.push_back(key);
+    }
+  }
+  std::sort(keys.begin(), keys.end());
+  // The lattice c levels coarser has the same top cells, and a leaf there is a Morton prefix.
+  for (int c = 0; c <= this->Levels; ++c)
+  {
+    std::size_t distinct = 0;
+    for (std::size_t i = 0; i < keys.size(); ++i)
+    {
+      distinct += i == 0 || !std::equal(keys[i].top, keys[i].top + 3, keys[i - 1].top) ||
+        (keys[i].morton >> (3 * c)) != (keys[i - 1].morton >> (3 * c));
+    }
+    cells[c] += distinct;
+  }
+  return keys.size();
+}
+
 void GeneratorTree::evaluatePoints(const double* xyz, std::size_t count, double* bivectors,
-                                   double* gradients) const
+                                   double* gradients, int coarser) const
 {
   std::fill_n(bivectors, count * kComponents, 0.0);
   if (gradients)
@@ -152,12 +209,16 @@ void GeneratorTree::evaluatePoints(const double* xyz, std::size_t count, double*
     return;
   }
   CellWork work;
+  // The same top cells, 2^coarser times as wide leaves (exact: powers of two).
+  coarser = std::max(0, std::min(coarser, this->Levels));
+  work.leafSide = std::ldexp(this->LeafSide, coarser);
+  work.levels = this->Levels - coarser;
   work.xyz = xyz;
   work.bivectors = bivectors;
   work.gradients = gradients;
   work.keys.reserve(count);
-  const double inverseSide = 1.0 / this->LeafSide;
-  const int levels = this->Levels;
+  const double inverseSide = 1.0 / work.leafSide;
+  const int levels = work.levels;
   for (std::size_t i = 0; i < count; ++i)
   {
     const double* p = xyz + 3 * i;
@@ -165,14 +226,8 @@ void GeneratorTree::evaluatePoints(const double* xyz, std::size_t count, double*
     {
       continue;
     }
-    double scaled[3];
-    bool inLattice = true;
-    for (int k = 0; k < 3; ++k)
-    {
-      scaled[k] = std::floor(p[k] * inverseSide);
-      inLattice = inLattice && std::fabs(scaled[k]) < kLargestIndex;
-    }
-    if (!inLattice)
+    CellKey key;
+    if (!cellKey(p, inverseSide, levels, i, key))
     {
       // Far beyond the generators: one point at a time, every lane the same point.
       alignas(64) double lanes[3 * L], sums[kComponents * L], sumGradients[3 * kComponents * L];
@@ -190,16 +245,6 @@ void GeneratorTree::evaluatePoints(const double* xyz, std::size_t count, double*
         }
       }
       continue;
-    }
-    CellKey key;
-    key.morton = 0;
-    key.index = i;
-    for (int k = 0; k < 3; ++k)
-    {
-      const auto leaf = static_cast<long long>(scaled[k]);
-      key.top[k] = floorDivide(leaf, levels);
-      const auto within = static_cast<std::uint64_t>(leaf - key.top[k] * (1LL << levels));
-      key.morton |= spreadBits(within) << k;
     }
     work.keys.push_back(key);
   }
@@ -227,7 +272,7 @@ void GeneratorTree::evaluateCell(CellWork& work, int level, std::size_t first, s
                                  const long long* cell, const double* parentLocal,
                                  const double* parentCenter) const
 {
-  const double side = std::ldexp(this->LeafSide, this->Levels - level);
+  const double side = std::ldexp(work.leafSide, work.levels - level);
   const double radius = 0.5 * std::sqrt(3.0) * side;
   const double center[3] = { (static_cast<double>(cell[0]) + 0.5) * side,
                              (static_cast<double>(cell[1]) + 0.5) * side,
@@ -244,7 +289,7 @@ void GeneratorTree::evaluateCell(CellWork& work, int level, std::size_t first, s
   {
     std::fill_n(local, localSize, 0.0);
   }
-  const bool leaf = level == this->Levels;
+  const bool leaf = level == work.levels;
   const std::vector<int>& candidates = work.lists[static_cast<std::size_t>(level)];
   std::vector<int>& left = work.lists[static_cast<std::size_t>(level + 1)];
   std::vector<int>& stack = work.stacks[static_cast<std::size_t>(level)];
@@ -295,7 +340,7 @@ void GeneratorTree::evaluateCell(CellWork& work, int level, std::size_t first, s
   }
   if (!leaf)
   {
-    const int shift = this->Levels - level - 1;
+    const int shift = work.levels - level - 1;
     for (std::size_t begin = first; begin < last;)
     {
       const unsigned octant = static_cast<unsigned>((work.keys[begin].morton >> (3 * shift)) & 7u);

@@ -301,6 +301,7 @@ bool PointPairField::setTolerance(double tolerance, std::size_t minimumGenerator
   }
   this->Tolerance = std::min(tolerance, maximumTolerance());
   this->Tree.reset();
+  this->TreeCellsCoarser = 0;
   if (usesTree(this->Tolerance, this->Count, minimumGenerators, minimumTolerance))
   {
     this->Tree = std::make_shared<const detail::GeneratorTree>(
@@ -344,7 +345,62 @@ bool PointPairField::shareTree(const PointPairField& previous, double tolerance,
   }
   this->Tolerance = used;
   this->Tree = previous.Tree;
+  this->TreeCellsCoarser = 0;
   return true;
+}
+
+int PointPairField::planTreeCells(std::size_t count,
+  const std::function<void(std::size_t first, std::size_t n, double* xyz)>& pointsOf)
+{
+  this->TreeCellsCoarser = 0;
+  if (!this->Tree || count == 0)
+  {
+    return 0;
+  }
+  const detail::GeneratorTree& tree = *this->Tree;
+  std::vector<std::size_t> cells(static_cast<std::size_t>(tree.levels()) + 1, 0);
+  std::vector<double> xyz;
+  std::size_t counted = 0;
+  const std::size_t chunks = (count + treePlanChunk() - 1) / treePlanChunk();
+  const std::size_t used = std::min(chunks, treePlanChunks());
+  for (std::size_t j = 0; j < used; ++j)
+  {
+    // Chunks spread evenly from the first to the last, moved to the center as the tree takes them.
+    const std::size_t chunk = used > 1 ? j * (chunks - 1) / (used - 1) : 0;
+    const std::size_t first = chunk * treePlanChunk();
+    const std::size_t n = std::min(treePlanChunk(), count - first);
+    xyz.resize(3 * n);
+    pointsOf(first, n, xyz.data());
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      xyz[3 * i] -= this->Center.x;
+      xyz[3 * i + 1] -= this->Center.y;
+      xyz[3 * i + 2] -= this->Center.z;
+    }
+    counted += tree.countCells(xyz.data(), n, cells.data());
+  }
+  int coarser = 0;
+  while (coarser < tree.levels() &&
+         counted < treeCellPoints() * cells[static_cast<std::size_t>(coarser)])
+  {
+    ++coarser;
+  }
+  this->TreeCellsCoarser = coarser;
+  return coarser;
+}
+
+int PointPairField::planTreeCells(const double* points, std::size_t count)
+{
+  return this->planTreeCells(count, [points](std::size_t first, std::size_t n, double* xyz) {
+    std::copy_n(points + 3 * first, 3 * n, xyz);
+  });
+}
+
+int PointPairField::planTreeCells(const float* points, std::size_t count)
+{
+  return this->planTreeCells(count, [points](std::size_t first, std::size_t n, double* xyz) {
+    std::copy_n(points + 3 * first, 3 * n, xyz);
+  });
 }
 
 bool PointPairField::sharesTreeWith(const PointPairField& other) const
@@ -380,7 +436,7 @@ Bivector PointPairField::generatorAt(Vec3 p) const
   if (this->Tree)
   {
     const double xyz[3] = { relative.x, relative.y, relative.z };
-    this->Tree->evaluatePoints(xyz, 1, b.c.data());
+    this->Tree->evaluatePoints(xyz, 1, b.c.data(), nullptr, this->TreeCellsCoarser);
   }
   else
   {
@@ -445,6 +501,7 @@ namespace
 template <typename In, typename RunBlocks>
 auto mapPointsByKernel(const kernel::FieldArgs& args,
                        const detail::GeneratorTree* tree,
+                       int coarser,
                        Vec3 c,
                        const In* in,
                        std::size_t count,
@@ -459,7 +516,7 @@ auto mapPointsByKernel(const kernel::FieldArgs& args,
   if (tree)
   {
     treeBivectors.resize(Bivector::Count * count);
-    detail::evaluatePointsAbout(*tree, c, in, count, treeBivectors.data());
+    detail::evaluatePointsAbout(*tree, coarser, c, in, count, treeBivectors.data());
   }
   const auto mapLanes = [&](std::size_t first, int n, const double* xyz, double* image,
                           std::uint8_t* mapped) {
@@ -550,7 +607,8 @@ std::size_t PointPairField::mapPointsOf(
   // The rest (the last partial block; float points; the tree) block by block in lanes.
   const In* restIn = in + 3 * done;
   return unmapped +
-    mapPointsByKernel(args, this->Tree.get(), c, restIn, count - done, [&](const auto& mapLanes) {
+    mapPointsByKernel(args, this->Tree.get(), this->TreeCellsCoarser, c, restIn, count - done,
+      [&](const auto& mapLanes) {
       return mapPointsInBlocks(c, restIn, out + 3 * done, count - done, mapLanes,
         [](std::size_t, int, bool) {});
     });
@@ -576,7 +634,8 @@ PointPairField::DisplacementCounts PointPairField::mapPointsWithDisplacementsOf(
     }
     // The rest (the last partial block; float points; the tree) block by block in lanes.
     const In* restIn = in + 3 * done;
-    const BlockDisplacementCounts rest = mapPointsByKernel(args, this->Tree.get(), c, restIn,
+    const BlockDisplacementCounts rest = mapPointsByKernel(args, this->Tree.get(),
+      this->TreeCellsCoarser, c, restIn,
       count - done, [&](const auto& mapLanes) {
         return mapPointsAndDisplacementsInBlocks(
           c, restIn, out + 3 * done, displacements + 3 * done, count - done, mapLanes);

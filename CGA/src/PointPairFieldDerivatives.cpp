@@ -125,13 +125,13 @@ bool finiteLane(const double* block, int n, int l)
 /// onPointWritten(index, jacobian) receives J (row-major, 9 doubles), or null where the point is
 /// not mapped or its J is not finite. Returns the count of points not mapped.
 template <typename OnPointWritten>
-std::size_t mapPointsWithTreeJacobians(const detail::GeneratorTree& tree,
+std::size_t mapPointsWithTreeJacobians(const detail::GeneratorTree& tree, int coarser,
   const kernel::FieldArgs& args, Vec3 c, const double* in, double* out, std::size_t count,
   OnPointWritten&& onPointWritten)
 {
   constexpr int L = kernel::kLanes;
   std::vector<double> b(kBivector * count), gradients(3 * kBivector * count);
-  detail::evaluatePointsAbout(tree, c, in, count, b.data(), gradients.data());
+  detail::evaluatePointsAbout(tree, coarser, c, in, count, b.data(), gradients.data());
   const kernel::MapBlockJacobianBy mapBlock = kernel::activeMapBlockJacobianBy();
   alignas(64) double exponents[kBivector * L], exponentGradients[3 * kBivector * L],
     jacobian[9 * L];
@@ -170,7 +170,8 @@ std::size_t PointPairField::mapPointsWithJacobians(const double* in, double* out
   const kernel::FieldArgs args = this->args(strength, rule);
   if (this->Tree)
   {
-    return mapPointsWithTreeJacobians(*this->Tree, args, this->Center, in, out, count,
+    return mapPointsWithTreeJacobians(*this->Tree, this->TreeCellsCoarser, args, this->Center, in,
+      out, count,
       [jacobians](std::size_t i, const double* j) {
         if (j)
         {
@@ -226,7 +227,8 @@ std::size_t PointPairField::mapPointsWithDirectionalDerivatives(const double* in
   if (this->Tree)
   {
     // The tree's whole J, then J t_k.
-    return mapPointsWithTreeJacobians(*this->Tree, args, this->Center, in, out, count,
+    return mapPointsWithTreeJacobians(*this->Tree, this->TreeCellsCoarser, args, this->Center, in,
+      out, count,
       [&](std::size_t i, const double* j) {
         if (!j)
         {

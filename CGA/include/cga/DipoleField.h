@@ -18,6 +18,7 @@
 #include "cga/Vec3.h"
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace cga
@@ -63,6 +64,13 @@ public:
   /// direct sum; false for NaN or negative). Method (b) maps each generator alone, a sum of
   /// displacements rather than of generators, and stays exact.
   bool setTolerance(double tolerance) { return this->Summed.setTolerance(tolerance); }
+  /// Method (a)'s tree cells fitted to the points about to be sampled
+  /// (PointPairField::planTreeCells, the points computed by pointsOf).
+  int planTreeCells(std::size_t count,
+    const std::function<void(std::size_t first, std::size_t n, double* xyz)>& pointsOf)
+  {
+    return this->Summed.planTreeCells(count, pointsOf);
+  }
   std::size_t skippedGenerators() const { return this->Summed.skippedGenerators(); }
 
   /// Method (a). Returns false (out = zero vector) where p is not finite or its image is at

@@ -20,6 +20,7 @@
 #include "cga/Vec3.h"
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 #include <optional>
@@ -220,6 +221,29 @@ public:
   /// was 0.99, 1.04 and 1.35 times as fast as the direct sum at this tolerance for M = 10,000,
   /// 30,000 and 100,000 (1e-4, 3.7e-6, 1e-7) (README, Performance, Many generators).
   static double treeMinimumTolerance(std::size_t generators);
+  /// Fits the tree's target cells to the points about to be mapped (`count` points, xyz
+  /// interleaved: all of them, before they are split into calls or threads). The tree expands
+  /// its far field about every cube of a lattice that holds points of a mapPoints call. Its
+  /// leaves are sized for the field (35 points each on the bench's 10^6-point sheet); on a
+  /// sparse mesh they hold one point or none, and each expansion costs far more than its point
+  /// gains (10,000 points with 100,000 generators mapped 4 times slower than the direct sum).
+  /// So the leaves are made 2^k times as wide, k >= 0 the least at which they hold at least
+  /// treeCellPoints() points on average: counted in the leaves that each call of
+  /// treePlanChunk() consecutive points would expand, on at most treePlanChunks() such chunks
+  /// spread over the points. Returns k. k is 0 without a tree, and after setTolerance or
+  /// shareTree until planned again. The bound holds at every cell size. Every later call uses
+  /// these cells, so B(p) depends on p and this plan: the same bits whatever the chunking or the
+  /// threads.
+  int planTreeCells(const double* points, std::size_t count);
+  int planTreeCells(const float* points, std::size_t count);
+  /// planTreeCells for `count` points computed rather than stored (a grid's):
+  /// pointsOf(first, n, xyz) writes points first ... first + n - 1 to xyz, interleaved.
+  int planTreeCells(std::size_t count,
+    const std::function<void(std::size_t first, std::size_t n, double* xyz)>& pointsOf);
+  int treeCellsCoarser() const { return this->TreeCellsCoarser; }
+  static constexpr std::size_t treeCellPoints() { return 16; }
+  static constexpr std::size_t treePlanChunk() { return 65536; }
+  static constexpr std::size_t treePlanChunks() { return 8; }
   /// Bytes the tree holds (0 without one), its expansion degree (0 without one), and V, the
   /// displacement scale per unit strength its budget is relative to (0 without one).
   std::size_t treeBytes() const;
@@ -354,6 +378,7 @@ private:
   std::size_t Skipped = 0;
   double Tolerance = 0.0;
   std::shared_ptr<const detail::GeneratorTree> Tree; // null: the direct sum
+  int TreeCellsCoarser = 0;                          // planTreeCells
 };
 
 /// The instruction sets of mapPoints()' block kernel that this build holds and this CPU runs,
